@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// Tensor-product Lagrange shape functions.
+#include "formflow/fem/lagrange.hpp"
+
+#include <array>
+
+namespace formflow::fem {
+
+namespace {
+
+/// 1D Lagrange basis through the equispaced nodes of `order`: values and derivatives.
+void basis_1d(int order, Real x, std::array<Real, 3>& value, std::array<Real, 3>& derivative) {
+  if (order == 1) {
+    value = {0.5 * (1 - x), 0.5 * (1 + x), 0};
+    derivative = {-0.5, 0.5, 0};
+  } else {
+    value = {0.5 * x * (x - 1), (1 - x) * (1 + x), 0.5 * x * (x + 1)};
+    derivative = {x - 0.5, -2 * x, x + 0.5};
+  }
+}
+
+}  // namespace
+
+template <int dim>
+void tabulate_shape(int order, const Point<dim>& xi, VectorX& values,
+                    Eigen::Matrix<Real, dim, Eigen::Dynamic>& gradients) {
+  const int n_side = order + 1;
+  int n_nodes = 1;
+  for (int d = 0; d < dim; ++d) n_nodes *= n_side;
+  std::array<std::array<Real, 3>, dim> value_1d{}, derivative_1d{};
+  for (int d = 0; d < dim; ++d) basis_1d(order, xi[d], value_1d[d], derivative_1d[d]);
+
+  values.resize(n_nodes);
+  gradients.resize(dim, n_nodes);
+  for (int local = 0; local < n_nodes; ++local) {
+    std::array<int, dim> index{};
+    int rest = local;
+    for (int d = 0; d < dim; ++d) {
+      index[d] = rest % n_side;
+      rest /= n_side;
+    }
+    Real product = 1.0;
+    for (int d = 0; d < dim; ++d) product *= value_1d[d][index[d]];
+    values[local] = product;
+    for (int g = 0; g < dim; ++g) {
+      Real partial = 1.0;
+      for (int d = 0; d < dim; ++d)
+        partial *= (d == g) ? derivative_1d[d][index[d]] : value_1d[d][index[d]];
+      gradients(g, local) = partial;
+    }
+  }
+}
+
+template <int dim>
+Point<dim> reference_node(int order, int local) {
+  Point<dim> xi;
+  int rest = local;
+  for (int d = 0; d < dim; ++d) {
+    xi[d] = lattice_coordinate(order, rest % (order + 1));
+    rest /= order + 1;
+  }
+  return xi;
+}
+
+template void tabulate_shape<2>(int, const Point<2>&, VectorX&, Eigen::Matrix<Real, 2, Eigen::Dynamic>&);
+template void tabulate_shape<3>(int, const Point<3>&, VectorX&, Eigen::Matrix<Real, 3, Eigen::Dynamic>&);
+template Point<2> reference_node<2>(int, int);
+template Point<3> reference_node<3>(int, int);
+
+}  // namespace formflow::fem

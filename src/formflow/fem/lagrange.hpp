@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// Tensor-product Lagrange shape functions Q1 and Q2 on [-1, 1]^dim.
+#pragma once
+
+#include "formflow/core/types.hpp"
+
+#include <string_view>
+
+namespace formflow::fem {
+
+/// Q1: bilinear/trilinear, 2^dim nodes; Q2: biquadratic/triquadratic, 3^dim nodes.
+enum class ElementKind { Q1, Q2 };
+
+inline int element_order(ElementKind kind) { return kind == ElementKind::Q1 ? 1 : 2; }
+inline std::string_view element_name(ElementKind kind) {
+  return kind == ElementKind::Q1 ? "Q1" : "Q2";
+}
+
+/// Local node numbering is lexicographic on the reference lattice, x fastest.
+/// The 1D nodes are ξ = −1, +1 (Q1) and ξ = −1, 0, +1 (Q2):
+///
+///   Q1 (2D)      Q2 (2D)            η
+///   2 --- 3      6 --- 7 --- 8      ^
+///   |     |      |     |     |      |
+///   |     |      3 --- 4 --- 5      +--> ξ
+///   0 --- 1      0 --- 1 --- 2
+///
+/// In 3D the ζ = −1 layer comes first, then ζ = 0 (Q2), then ζ = +1.
+/// VTK orders these cells differently; io/vtu.cpp maps between the two.
+
+/// 1D node coordinate `i` of an element of `order` (0 ≤ i ≤ order).
+inline Real lattice_coordinate(int order, int i) { return -1.0 + 2.0 * i / order; }
+
+/// Values (n_nodes) and reference gradients (dim × n_nodes) of the
+/// tensor-product shape functions of `order` at reference point `xi`.
+template <int dim>
+void tabulate_shape(int order, const Point<dim>& xi, VectorX& values,
+                    Eigen::Matrix<Real, dim, Eigen::Dynamic>& gradients);
+
+/// The reference coordinates of local node `local` of an element of `order`.
+template <int dim>
+Point<dim> reference_node(int order, int local);
+
+}  // namespace formflow::fem

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// A fully resolved, validated case: every parameter the solver consumes.
+#pragma once
+
+#include "formflow/fem/lagrange.hpp"
+#include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/physics/flow_law.hpp"
+#include "formflow/physics/process.hpp"
+#include "formflow/solvers/stop_reason.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace formflow::io {
+
+/// Aggregates each layer's own parameter struct. Built only by `load_case`
+/// (io/case_file.cpp), which checks every key against io/case_keys.cpp; the
+/// defaults here are the paper's benchmark (SPEC §4): Q2, 2×2 volumetric
+/// rule, mesh II, μ = 0, d = 1e-3, d_N = 1e-6, d_T = 1e-6, δ = 1e-4.
+struct Case {
+  physics::Process process;
+  mesh::ChannelGeometry geometry;
+  fem::ElementKind element = fem::ElementKind::Q2;
+  Real mesh_size = 1.0;
+  int volumetric_points = 2;  ///< Gauss points per direction of the volumetric (penalty) term
+  physics::PowerLaw material;
+  physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
+  physics::Friction friction;
+  physics::Penalty penalty;
+  solvers::IterationControl solver;
+
+  std::string source;  ///< the case file path, or "<default>" for the embedded benchmark
+};
+
+/// One `--set key=value` override, in command-line order.
+using Override = std::pair<std::string, std::string>;
+
+/// Reads and validates `path` (empty: the embedded default case), then applies
+/// `overrides`. Throws InputError naming file, line, key and what would be valid.
+Case load_case(const std::string& path, const std::vector<Override>& overrides);
+
+}  // namespace formflow::io

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Process, penalty and friction parameters of the forming problem (SPEC §1–2).
+#pragma once
+
+#include "formflow/core/types.hpp"
+
+namespace formflow::physics {
+
+enum class ProcessType { Extrusion, Drawing };
+/// Ram condition on Γ1 for extrusion (SPEC §4): sliding = the paper's σ_T = 0
+/// (u_y free); sticking = u_y = 0 as well.
+enum class RamCondition { Sliding, Sticking };
+/// Strain rate used in the a-form: the full ε̇ (paper eq. 3.3, default) or its deviator ė.
+enum class ViscousStrain { Full, Deviatoric };
+
+struct Process {
+  ProcessType type = ProcessType::Extrusion;
+  Real speed = 1.0;  ///< u⁰, the prescribed normal speed on Γ1 (extrusion) or Γ5 (drawing)
+  RamCondition ram = RamCondition::Sliding;
+};
+
+/// Penalty parameters of eq. (3.8): σ_H = ε̇_V/d, σ_N = −u_N/d_N.
+struct Penalty {
+  Real d = 1e-3;
+  Real d_n = 1e-6;
+};
+
+/// Regularised nonlocal Coulomb friction (eq. 3.14–3.15) on the chosen parts of Γ3.
+struct Friction {
+  Real mu = 0.0;        ///< Coulomb coefficient μ_f ≥ 0
+  Real radius = 0.0;    ///< mollifier radius h of σ̄_N; 0 = local pressure
+  Real d_t = 1e-6;      ///< regularisation d_T > 0
+  bool on_container = true;
+  bool on_die = true;
+};
+
+}  // namespace formflow::physics

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// Everything a solve produces: iteration outcome, load measures and fields.
+#pragma once
+
+#include "formflow/core/timer.hpp"
+#include "formflow/core/types.hpp"
+#include "formflow/solvers/stop_reason.hpp"
+
+#include <string>
+#include <vector>
+
+namespace formflow::post {
+
+/// Process load measured in several honest ways (SPEC §4), all per unit depth of
+/// the half model and divided by the height the speed is imposed on (ram height
+/// for extrusion, exit half height for drawing).
+struct Pressures {
+  Real ram_reaction = 0.0;   ///< reaction force on the driven end / its height
+  Real power_balance = 0.0;  ///< (plastic dissipation + friction power) / (u⁰·height)
+  Real total_power = 0.0;    ///< all discrete terms of b and j_dT / (u⁰·height)
+  /// Mean of −σ_H (compression positive) over the column of cells touching the ram.
+  Real mean_hydrostatic_near_ram = 0.0;
+};
+
+/// Powers (per unit depth of the half model) of each discrete term at the final velocity.
+struct PowerTerms {
+  Real plastic_dissipation = 0.0;  ///< ∫ σ_p(ε̄̇) ε̄̇ dx
+  Real viscous_form = 0.0;         ///< a(u; u, u) (≥ dissipation when the full ε̇ is used)
+  Real volumetric_penalty = 0.0;   ///< ∫ ε̇_V²/d dx
+  Real contact_penalty = 0.0;      ///< ∫_Γ3 u_N²/d_N dΓ
+  Real friction = 0.0;             ///< ∫_Γ3 τ_f |u_T|²/√(|u_T|² + d_T²) dΓ
+  Real total() const { return viscous_form + volumetric_penalty + contact_penalty + friction; }
+};
+
+/// One sample of the contact boundary Γ3 (a facet quadrature point), ordered by arc length.
+struct ContactSample {
+  Real arc_length = 0.0;        ///< s, measured along Γ3 from the ram end of the container wall
+  Real x = 0.0, y = 0.0;
+  Real contact_pressure = 0.0;  ///< −σ_N = u_N/d_N (local, not mollified)
+  Real friction_stress = 0.0;   ///< |σ_T|, the regularised friction traction magnitude
+  Real slip_velocity = 0.0;     ///< |u_T|
+  bool sticking = false;        ///< |u_T| below the stick threshold (a few d_T)
+  int part = 0;                 ///< 0 container, 1 die (mesh::BoundaryLabel order)
+};
+
+/// Fields on the mesh nodes (averaged from integration points) and cell means.
+struct Fields {
+  /// Velocity, shape (dim · n_nodes), node-major: (u_x, u_y) of node 0, node 1, ...
+  VectorX velocity;
+  VectorX equivalent_strain_rate;  ///< n_nodes, ε̄̇
+  VectorX hydrostatic_stress;      ///< n_nodes, σ_H (tension positive)
+  VectorX contact_pressure;        ///< n_nodes, 0 away from Γ3
+  VectorX friction_stress;         ///< n_nodes, 0 away from Γ3
+  VectorX cell_equivalent_strain_rate;  ///< n_cells, cell mean
+  VectorX cell_hydrostatic_stress;      ///< n_cells, cell mean
+};
+
+struct Results {
+  solvers::StopReason stop_reason = solvers::StopReason::MaxIterations;
+  bool converged() const { return stop_reason == solvers::StopReason::Converged; }
+  int iterations = 0;
+  std::vector<solvers::IterationRecord> history;
+
+  Index n_cells = 0, n_nodes = 0, n_dofs = 0;
+  Pressures pressure;
+  PowerTerms power;
+  Real max_equivalent_strain_rate = 0.0;
+  Fields fields;
+  std::vector<ContactSample> contact;
+  PhaseTimes timing;  ///< seconds per phase: total, mesh, assembly, factorization, solve, post
+};
+
+}  // namespace formflow::post

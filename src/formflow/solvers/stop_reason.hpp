@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// Why a nonlinear iteration stopped, and the record of each iteration.
+#pragma once
+
+#include "formflow/core/types.hpp"
+
+#include <string_view>
+
+namespace formflow::solvers {
+
+enum class StopReason { Converged, MaxIterations, Diverged, NonFinite, SolverFailed };
+
+inline std::string_view stop_reason_name(StopReason reason) {
+  switch (reason) {
+    case StopReason::Converged: return "converged";
+    case StopReason::MaxIterations: return "max_iterations";
+    case StopReason::Diverged: return "diverged";
+    case StopReason::NonFinite: return "non_finite";
+    case StopReason::SolverFailed: return "solver_failed";
+  }
+  return "unknown";
+}
+
+/// Stopping rule of the secant iteration (SPEC §3): ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < tolerance.
+struct IterationControl {
+  Real tolerance = 1e-4;     ///< δ
+  int max_iterations = 500;  ///< iteration limit; reaching it is a stop reason, not an error
+  Real initial_rate = 1.0;   ///< ε̄̇ whose secant viscosity starts the iteration
+};
+
+/// One line of the iteration history.
+struct IterationRecord {
+  int iteration = 0;
+  Real relative_change = 0.0;  ///< ‖uⁿ⁺¹ − uⁿ‖ / ‖uⁿ⁺¹‖
+  Real pressure = 0.0;         ///< current process pressure (ram reaction / height)
+  Real seconds = 0.0;          ///< wall time of this iteration
+};
+
+}  // namespace formflow::solvers
