@@ -68,3 +68,47 @@ template Point<2> reference_node<2>(int, int);
 template Point<3> reference_node<3>(int, int);
 
 }  // namespace formflow::fem
+
+#include "formflow/fem/quadrature.hpp"
+
+namespace formflow::fem {
+
+template <int dim>
+MatrixX gauss_to_nodes(int order, int n_points_per_direction) {
+  std::vector<Real> gauss, unused;
+  gauss_1d(n_points_per_direction, gauss, unused);
+  const int n_side = order + 1, m = n_points_per_direction;
+  // lagrange_1d(i, k): k-th Lagrange polynomial through the Gauss points at node coordinate i.
+  MatrixX lagrange_1d(n_side, m);
+  for (int i = 0; i < n_side; ++i)
+    for (int k = 0; k < m; ++k) {
+      Real value = 1.0;
+      for (int l = 0; l < m; ++l)
+        if (l != k) value *= (lattice_coordinate(order, i) - gauss[l]) / (gauss[k] - gauss[l]);
+      lagrange_1d(i, k) = value;
+    }
+  int n_nodes = 1, n_q = 1;
+  for (int d = 0; d < dim; ++d) {
+    n_nodes *= n_side;
+    n_q *= m;
+  }
+  MatrixX result(n_nodes, n_q);
+  for (int a = 0; a < n_nodes; ++a)
+    for (int q = 0; q < n_q; ++q) {
+      Real value = 1.0;
+      int node_rest = a, point_rest = q;
+      for (int d = 0; d < dim; ++d) {
+        value *= lagrange_1d(node_rest % n_side, point_rest % m);
+        node_rest /= n_side;
+        point_rest /= m;
+      }
+      result(a, q) = value;
+    }
+  return result;
+}
+
+template MatrixX gauss_to_nodes<1>(int, int);
+template MatrixX gauss_to_nodes<2>(int, int);
+template MatrixX gauss_to_nodes<3>(int, int);
+
+}  // namespace formflow::fem

@@ -42,3 +42,15 @@ template <int dim>
 Point<dim> reference_node(int order, int local);
 
 }  // namespace formflow::fem
+
+namespace formflow::fem {
+
+/// Extrapolation from the n^dim Gauss points of a tensor rule to the nodes of
+/// an element of `order`: row a holds the weights of the Gauss-point values
+/// for node a (tensor product of 1D Lagrange polynomials through the Gauss
+/// points). Shape (n_nodes, n_points^dim). One point per direction gives the
+/// constant (cell mean) extrapolation.
+template <int dim>
+MatrixX gauss_to_nodes(int order, int n_points_per_direction);
+
+}  // namespace formflow::fem

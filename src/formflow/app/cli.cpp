@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// Command-line parsing (CLI11) and the run/check subcommands.
+#include "formflow/app/cli.hpp"
+
+#include "formflow/app/monitor.hpp"
+#include "formflow/app/simulation.hpp"
+#include "formflow/core/error.hpp"
+#include "formflow/io/case.hpp"
+#include "formflow/io/results_writer.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+
+namespace formflow::io {
+std::string case_reference_markdown();  // io/case_keys.hpp (in progress)
+}
+
+namespace formflow::app {
+
+namespace {
+
+struct Options {
+  std::string case_path;
+  std::string output_directory = "results";
+  std::vector<std::string> assignments;
+  bool quiet = false;
+  bool json = false;
+};
+
+std::vector<io::Override> parse_assignments(const std::vector<std::string>& assignments) {
+  std::vector<io::Override> overrides;
+  for (const std::string& text : assignments) {
+    const auto equals = text.find('=');
+    if (equals == std::string::npos || equals == 0)
+      throw InputError("--set", 0, text, "expected key=value", "e.g. --set friction.mu=0.1");
+    overrides.emplace_back(text.substr(0, equals), text.substr(equals + 1));
+  }
+  return overrides;
+}
+
+int run_case(const Options& options) {
+  const io::Case case_ = io::load_case(options.case_path, parse_assignments(options.assignments));
+  Monitor monitor(stdout, case_.solver.tolerance);
+  const bool show = !options.quiet && !options.json;
+  if (show) {
+    fmt::print("formflow {}: {} {} mesh h = {:.6g}, volumetric rule {}x{}, mu = {:.6g}\n",
+               FORMFLOW_VERSION, case_.source, fem::element_name(case_.element), case_.mesh_size,
+               case_.volumetric_points, case_.volumetric_points, case_.friction.mu);
+    monitor.header();
+  }
+  IterationCallback callback;
+  if (show) callback = [&monitor](const solvers::IterationRecord& record) { monitor(record); };
+  const Simulation simulation = simulate(case_, callback);
+  const post::Results& results = simulation.results;
+  io::write_results(options.output_directory, case_, simulation.mesh, results);
+
+  if (options.json) fmt::print("{}\n", io::summary_json(case_, results));
+  const std::string reason(solvers::stop_reason_name(results.stop_reason));
+  if (!results.converged()) {
+    fmt::print(stderr, "formflow: NOT CONVERGED ({}) after {} iterations; results in {} are marked converged: false\n",
+               reason, results.iterations, options.output_directory);
+    return NotConverged;
+  }
+  if (show)
+    fmt::print("Nonlinear solve converged due to relative change < {:g}, iterations {}\n"
+               "pressure: ram reaction {:.6f}  power balance {:.6f}  total power {:.6f}  "
+               "mean -sigma_H near ram {:.6f}\nresults written to {}\n",
+               case_.solver.tolerance, results.iterations, results.pressure.ram_reaction,
+               results.pressure.power_balance, results.pressure.total_power,
+               results.pressure.mean_hydrostatic_near_ram, options.output_directory);
+  return Ok;
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"formflow: steady-state metal forming (extrusion, drawing) by the finite element "
+               "method of Angelov (2010)"};
+  app.set_version_flag("--version", std::string("formflow ") + FORMFLOW_VERSION);
+  app.require_subcommand(1);
+  Options options;
+
+  CLI::App* run = app.add_subcommand("run", "Solve a case and write results")
+                      ->footer("Example: formflow run cases/paper-q2-2x2-mesh2.toml -o results/q2 "
+                               "--set friction.mu=0.1");
+  run->add_option("case", options.case_path, "Case file (TOML); omitted: the paper's benchmark");
+  run->add_option("-o,--output", options.output_directory, "Output directory")->capture_default_str();
+  run->add_option("--set", options.assignments, "Override a key, e.g. --set mesh.size=0.5")
+      ->allow_extra_args(false);
+  run->add_flag("-q,--quiet", options.quiet, "No monitor lines");
+  run->add_flag("--json", options.json, "Print summary.json to stdout");
+
+  CLI::App* check = app.add_subcommand("check", "Validate a case without solving")
+                        ->footer("Example: formflow check cases/paper-q2-2x2-mesh2.toml");
+  check->add_option("case", options.case_path, "Case file (TOML)")->required();
+  check->add_option("--set", options.assignments, "Override a key")->allow_extra_args(false);
+
+  CLI::App* reference = app.add_subcommand(
+      "case-reference", "Print the Markdown reference of every case key (docs/case-reference.md)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);
+    return code == 0 ? Ok : BadInput;
+  }
+  try {
+    if (*run) return run_case(options);
+    if (*check) {
+      const io::Case case_ = io::load_case(options.case_path, parse_assignments(options.assignments));
+      fmt::print("{}: valid\n", case_.source);
+      return Ok;
+    }
+    if (*reference) {
+      fmt::print("{}", io::case_reference_markdown());
+      return Ok;
+    }
+  } catch (const InputError& error) {
+    fmt::print(stderr, "error: {}\n", error.what());
+    return BadInput;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "formflow: internal error: {}\n", error.what());
+    return InternalFailure;
+  }
+  return BadInput;
+}
+
+}  // namespace formflow::app

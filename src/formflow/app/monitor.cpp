@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// Monitor lines with an estimate of the time left.
+#include "formflow/app/monitor.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace formflow::app {
+
+void Monitor::header() const {
+  fmt::print(out_, "{:>5}  {:>12}  {:>12}  {:>9}  {:>9}\n", "iter", "rel.change", "pressure",
+             "time[s]", "left[s]");
+  std::fflush(out_);
+}
+
+void Monitor::operator()(const solvers::IterationRecord& record) {
+  elapsed_ += record.seconds;
+  // Linear convergence: change_n ≈ ρⁿ; iterations left ≈ log(δ/change)/log ρ.
+  std::string left = "-";
+  const Real rate = previous_change_ > 0 ? record.relative_change / previous_change_ : 0.0;
+  if (rate > 0 && rate < 1 && record.relative_change > tolerance_) {
+    const Real remaining = std::log(tolerance_ / record.relative_change) / std::log(rate);
+    left = fmt::format("{:.2f}", remaining * record.seconds);
+  }
+  previous_change_ = record.relative_change;
+  fmt::print(out_, "{:>5}  {:>12.4e}  {:>12.6f}  {:>9.3f}  {:>9}\n", record.iteration,
+             record.relative_change, record.pressure, elapsed_, left);
+  std::fflush(out_);
+}
+
+}  // namespace formflow::app

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// The iteration monitor: a header, then one fixed-width line per iteration.
+#pragma once
+
+#include "formflow/solvers/stop_reason.hpp"
+
+#include <cstdio>
+
+namespace formflow::app {
+
+/// Prints `iter  rel.change  pressure  time  left` lines to `out`; the time left
+/// is estimated from the observed linear contraction of the relative change.
+class Monitor {
+ public:
+  Monitor(std::FILE* out, Real tolerance) : out_(out), tolerance_(tolerance) {}
+  void header() const;
+  void operator()(const solvers::IterationRecord& record);
+
+ private:
+  std::FILE* out_;
+  Real tolerance_;
+  Real previous_change_ = 0.0;
+  Real elapsed_ = 0.0;
+};
+
+}  // namespace formflow::app

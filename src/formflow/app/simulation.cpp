@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// One case from parameters to results.
+#include "formflow/app/simulation.hpp"
+
+#include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/post/post_process.hpp"
+#include "formflow/solvers/secant_iteration.hpp"
+
+#include <chrono>
+
+namespace formflow::app {
+
+namespace {
+
+assembly::ProblemSettings settings_of(const io::Case& case_) {
+  assembly::ProblemSettings settings;
+  settings.process = case_.process;
+  settings.law = case_.material;
+  settings.viscous_strain = case_.viscous_strain;
+  settings.penalty = case_.penalty;
+  settings.friction = case_.friction;
+  settings.volumetric_points = case_.volumetric_points;
+  settings.initial_rate = case_.solver.initial_rate;
+  return settings;
+}
+
+}  // namespace
+
+Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration) {
+  Simulation simulation;
+  post::Results& results = simulation.results;
+  const auto start = std::chrono::steady_clock::now();
+  {
+    ScopedTimer timer(results.timing, "mesh");
+    simulation.mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size,
+                                              fem::element_order(case_.element));
+  }
+  std::unique_ptr<assembly::FormingProblem<2>> problem;
+  {
+    ScopedTimer timer(results.timing, "setup");
+    problem = std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, settings_of(case_));
+  }
+  auto solver = solvers::make_cholmod_solver();
+  solvers::SecantOutcome outcome =
+      solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+  results.stop_reason = outcome.stop_reason;
+  results.history = std::move(outcome.history);
+  results.iterations = static_cast<int>(results.history.size());
+  post::evaluate_results(*problem, outcome.velocity, results);
+  results.timing.add("total",
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return simulation;
+}
+
+}  // namespace formflow::app

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+// The discrete regularised penalty problem (SPEC §2, eq. 3.19) and its secant
+// linearisation K(w) u = F (eq. 5.3): assembly of the global system for a given w.
+#pragma once
+
+#include "formflow/assembly/constraints.hpp"
+#include "formflow/assembly/sparsity.hpp"
+#include "formflow/fem/cell_values.hpp"
+#include "formflow/physics/flow_law.hpp"
+#include "formflow/physics/friction.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace formflow::assembly {
+
+/// Everything the discrete problem depends on besides the mesh.
+struct ProblemSettings {
+  physics::Process process;
+  physics::PowerLaw law;
+  physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
+  physics::Penalty penalty;
+  physics::Friction friction;
+  int volumetric_points = 2;  ///< Gauss points per direction of the (1/d) term
+  Real initial_rate = 1.0;    ///< ε̄̇ of the constant viscosity that starts the iteration
+};
+
+/// State of the contact boundary Γ3 at one face quadrature point for a velocity w.
+template <int dim>
+struct ContactPoint {
+  Index facet = 0;  ///< index into Mesh::facets
+  Point<dim> position = Point<dim>::Zero();
+  Point<dim> normal = Point<dim>::Zero();
+  Real weight = 0.0;         ///< JxW
+  Real normal_velocity = 0;  ///< u_N = u·n (> 0: penetration into the die)
+  Point<dim> tangential_velocity = Point<dim>::Zero();  ///< u_T
+  Real contact_pressure = 0;       ///< −σ_N = u_N/d_N
+  Real mean_contact_pressure = 0;  ///< σ̄_N, mollified over radius h
+  Real friction_threshold = 0;     ///< τ_f = μ_f max(σ̄_N, 0); 0 where friction is off
+  Real friction_weight = 0;        ///< τ_f/√(|u_T|² + d_T²)
+};
+
+template <int dim>
+class FormingProblem {
+ public:
+  FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings);
+
+  /// Assembles K(w) and F into `system`. Without `w` the viscosity is the
+  /// constant σ_p(initial_rate)/initial_rate and there is no friction (τ_f(0) = 0).
+  void assemble(const VectorX* w, LinearSystem& system) const;
+
+  /// Γ3 quadrature-point state for the velocity `u` (full dof vector).
+  std::vector<ContactPoint<dim>> contact_state(const VectorX& u) const;
+
+  /// Process force: the summed reaction K_c· u on the driven dofs.
+  Real driven_force(const LinearSystem& system, const VectorX& u) const;
+  /// Measure of the driven end (ram height, or exit half height for drawing).
+  Real driven_height() const { return driven_height_; }
+
+  const mesh::Mesh<dim>& mesh() const { return mesh_; }
+  const ProblemSettings& settings() const { return settings_; }
+  const ScatterPlan& plan() const { return *plan_; }
+  const DirichletConstraints& constraints() const { return constraints_; }
+  Index n_dofs() const { return mesh_.n_nodes() * dim; }
+  /// Quadrature rules: full (a-term), volumetric, and faces.
+  const fem::QuadratureRule<dim>& full_rule() const { return full_rule_; }
+  const fem::QuadratureRule<dim>& volumetric_rule() const { return volumetric_rule_; }
+  const fem::QuadratureRule<dim - 1>& facet_rule() const { return facet_rule_; }
+  /// Node coordinates (dim × n) and nodal velocities (dim × n) of one cell.
+  void gather(Index cell, const VectorX* u, typename fem::CellValues<dim>::Gradients& coordinates,
+              typename fem::CellValues<dim>::Gradients& velocities) const;
+
+ private:
+  void assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
+                        const typename fem::CellValues<dim>::Gradients& coordinates,
+                        fem::FacetValues<dim>& facet_values, MatrixX& local_matrix) const;
+
+  const mesh::Mesh<dim>& mesh_;
+  ProblemSettings settings_;
+  DirichletConstraints constraints_;
+  std::unique_ptr<ScatterPlan> plan_;
+  fem::QuadratureRule<dim> full_rule_, volumetric_rule_;
+  fem::QuadratureRule<dim - 1> facet_rule_;
+  std::vector<Index> contact_facets_;       ///< Mesh::facets indices of Γ3, in mesh order
+  std::vector<Index> cell_contact_offsets_; ///< per cell, range in cell_contact_
+  std::vector<Index> cell_contact_;         ///< positions in contact_facets_
+  std::unique_ptr<physics::NonlocalAverage> average_;
+  Real driven_height_ = 0.0;
+};
+
+}  // namespace formflow::assembly

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// Shape values, physical gradients and JxW of one cell at a quadrature rule.
+#pragma once
+
+#include "formflow/fem/quadrature.hpp"
+
+#include <vector>
+
+namespace formflow::fem {
+
+/// Tabulates the reference shape functions once per rule; `reinit` maps them
+/// to one physical cell (isoparametric map x(ξ) = Σ_a X_a N_a(ξ)).
+template <int dim>
+class CellValues {
+ public:
+  using Gradients = Eigen::Matrix<Real, dim, Eigen::Dynamic>;
+
+  CellValues(int order, const QuadratureRule<dim>& rule);
+
+  /// Maps to the cell with node coordinates `cell_nodes` (dim × n_nodes, lexicographic).
+  /// Returns false when the Jacobian is not positive at some point (inverted cell).
+  bool reinit(const Gradients& cell_nodes);
+
+  int n_points() const { return static_cast<int>(weights_.size()); }
+  int n_nodes() const { return n_nodes_; }
+  /// N_a(ξ_q), length n_nodes.
+  const VectorX& shape(int q) const { return shape_[q]; }
+  /// ∂N_a/∂x_i at point q after reinit, shape (dim, n_nodes).
+  const Gradients& gradients(int q) const { return gradients_[q]; }
+  /// Quadrature weight times Jacobian determinant at point q after reinit.
+  Real JxW(int q) const { return jxw_[q]; }
+  /// Physical coordinates of point q after reinit.
+  const Point<dim>& point(int q) const { return points_[q]; }
+
+ private:
+  int n_nodes_ = 0;
+  std::vector<Real> weights_;
+  std::vector<VectorX> shape_;
+  std::vector<Gradients> reference_gradients_;
+  std::vector<Gradients> gradients_;
+  std::vector<Real> jxw_;
+  std::vector<Point<dim>> points_;
+};
+
+/// Shape values, JxW (surface measure) and outward unit normals on one face
+/// of a cell; `face_rule` is a (dim−1)-dimensional rule placed on the face.
+template <int dim>
+class FacetValues {
+ public:
+  using Gradients = Eigen::Matrix<Real, dim, Eigen::Dynamic>;
+
+  FacetValues(int order, const QuadratureRule<dim - 1>& face_rule);
+
+  /// Maps to face `local_face` (2·axis + side) of the cell with `cell_nodes`.
+  void reinit(const Gradients& cell_nodes, int local_face);
+
+  int n_points() const { return static_cast<int>(face_rule_.weights.size()); }
+  /// Cell shape functions N_a at face point q (length n_nodes of the cell).
+  const VectorX& shape(int q) const { return shape_[q]; }
+  /// Surface element: weight times |det J · J⁻ᵀ N_ref| (Nanson's formula).
+  Real JxW(int q) const { return jxw_[q]; }
+  const Point<dim>& normal(int q) const { return normals_[q]; }
+  const Point<dim>& point(int q) const { return points_[q]; }
+
+ private:
+  int order_;
+  QuadratureRule<dim - 1> face_rule_;
+  std::vector<VectorX> shape_;
+  std::vector<Real> jxw_;
+  std::vector<Point<dim>> normals_;
+  std::vector<Point<dim>> points_;
+};
+
+}  // namespace formflow::fem

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: MIT
+// The resolved case as JSON, keyed exactly like the case file (summary.json "case").
+#pragma once
+
+#include "formflow/io/case.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace formflow::io {
+
+/// Every resolved parameter, nested by section with the case-file key names
+/// (e.g. j["penalty"]["dN"], j["friction"]["on"] = ["container", "die"]).
+nlohmann::json case_to_json(const Case& case_);
+
+}  // namespace formflow::io

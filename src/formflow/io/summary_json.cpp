@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// summary.json: the headline numbers of a run, the iteration history and the resolved case.
+#include "formflow/core/error.hpp"
+#include "formflow/io/case_json.hpp"
+#include "formflow/io/results_writer.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+
+#ifndef FORMFLOW_VERSION
+#error "FORMFLOW_VERSION must be defined by the build (CMake project version)"
+#endif
+
+namespace formflow::io {
+
+namespace {
+
+using nlohmann::json;
+
+/// nlohmann-json would write NaN/Inf as null, which reads back as "no value";
+/// the solver never hands out non-finite numbers, so one here is a bug.
+void require_finite(const json& value, const std::string& key) {
+  if (value.is_number_float() && !std::isfinite(value.get<double>()))
+    throw InternalError("summary.json: " + key + " is not finite");
+  if (value.is_object())
+    for (const auto& [name, item] : value.items())
+      require_finite(item, key.empty() ? name : key + "." + name);
+  if (value.is_array())
+    for (std::size_t i = 0; i < value.size(); ++i)
+      require_finite(value[i], key + "[" + std::to_string(i) + "]");
+}
+
+json pressure_json(const Case& case_, const post::Results& results) {
+  const post::Pressures& pressure = results.pressure;
+  json out = {{"ram_reaction", pressure.ram_reaction},
+              {"power_balance", pressure.power_balance},
+              {"total_power", pressure.total_power},
+              {"mean_hydrostatic_near_ram", pressure.mean_hydrostatic_near_ram}};
+  // In drawing the reaction on the pulled front end is the drawing stress.
+  if (case_.process.type == physics::ProcessType::Drawing)
+    out["drawing_stress"] = pressure.ram_reaction;
+  return out;
+}
+
+json power_json(const post::PowerTerms& power) {
+  return {{"plastic_dissipation", power.plastic_dissipation},
+          {"viscous_form", power.viscous_form},
+          {"volumetric_penalty", power.volumetric_penalty},
+          {"contact_penalty", power.contact_penalty},
+          {"friction", power.friction},
+          {"total", power.total()}};
+}
+
+json timing_json(const PhaseTimes& timing) {
+  json out = json::object();
+  // The phases every run has are always present, so readers need no defaults.
+  for (const char* phase : {"total", "assembly", "factorization", "solve"}) out[phase] = 0.0;
+  for (const auto& [phase, seconds] : timing.all()) out[phase] = seconds;
+  return out;
+}
+
+json summary_document(const Case& case_, const post::Results& results) {
+  json history = json::array(), history_pressure = json::array();
+  for (const auto& record : results.history) {
+    history.push_back(record.relative_change);
+    history_pressure.push_back(record.pressure);
+  }
+  json out = json::object();
+  out["converged"] = results.converged();
+  out["stop_reason"] = std::string(solvers::stop_reason_name(results.stop_reason));
+  out["iterations"] = results.iterations;
+  out["mesh"] = {{"elements", results.n_cells},
+                 {"nodes", results.n_nodes},
+                 {"dofs", results.n_dofs},
+                 {"element", std::string(fem::element_name(case_.element))},
+                 {"size", case_.mesh_size}};
+  out["pressure"] = pressure_json(case_, results);
+  out["power"] = power_json(results.power);
+  out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;
+  out["history"] = std::move(history);
+  out["history_pressure"] = std::move(history_pressure);
+  out["timing_s"] = timing_json(results.timing);
+  out["case"] = case_to_json(case_);
+  out["formflow_version"] = FORMFLOW_VERSION;
+  return out;
+}
+
+}  // namespace
+
+std::string summary_json(const Case& case_, const post::Results& results) {
+  const json document = summary_document(case_, results);
+  require_finite(document, "");
+  // A case path with invalid UTF-8 must not abort the whole write; U+FFFD marks it.
+  return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace formflow::io

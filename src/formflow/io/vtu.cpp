@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+// VTK XML UnstructuredGrid writer (ASCII) for 2D Q1/Q2 meshes and their fields.
+#include "formflow/io/vtu.hpp"
+
+#include "formflow/core/error.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iterator>
+#include <string_view>
+
+namespace formflow::io {
+
+namespace {
+
+// Our cells are lexicographic (fem/lagrange.hpp); VTK wants the corners
+// counter-clockwise, then the mid-edge nodes (bottom, right, top, left), then
+// the centre:
+//
+//   lexicographic (ours)        VTK_QUAD (9)     VTK_BIQUADRATIC_QUAD (28)
+//   Q1        Q2
+//   2 --- 3   6 --- 7 --- 8      3 --- 2          3 --- 6 --- 2
+//   |     |   |     |     |      |     |          |     |     |
+//   |     |   3 --- 4 --- 5      |     |          7 --- 8 --- 5
+//   0 --- 1   0 --- 1 --- 2      0 --- 1          0 --- 4 --- 1
+//
+// so VTK position k takes our local node order[k].
+constexpr std::array<int, 4> vtk_from_q1 = {0, 1, 3, 2};
+constexpr std::array<int, 9> vtk_from_q2 = {0, 2, 8, 6, 1, 5, 7, 3, 4};
+
+using Out = std::back_insert_iterator<std::string>;
+
+void check_size(std::string_view name, Index actual, Index expected) {
+  if (actual != expected)
+    throw InternalError(
+        fmt::format("fields.vtu: {} has {} values, expected {}", name, actual, expected));
+}
+
+void check_finite(std::string_view name, const VectorX& values) {
+  for (Index i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      throw InternalError(fmt::format("fields.vtu: {}[{}] is not finite", name, i));
+}
+
+/// One Float64 data array; `sign` flips it (σ_H → −σ_H) without a copy.
+void scalar_array(Out out, std::string_view name, const VectorX& values, Real sign = 1.0) {
+  fmt::format_to(out, "        <DataArray type=\"Float64\" Name=\"{}\" format=\"ascii\">\n", name);
+  for (Index i = 0; i < values.size(); ++i)
+    fmt::format_to(out, "{}{}", i % 6 == 0 ? "          " : " ", sign * values[i] + 0.0);
+  // `+ 0.0` turns −0 into 0, so a zero field never reads as "-0".
+  fmt::format_to(out, "\n        </DataArray>\n");
+}
+
+void points_section(Out out, const mesh::Mesh<2>& mesh) {
+  fmt::format_to(out, "      <Points>\n        <DataArray type=\"Float64\" "
+                      "NumberOfComponents=\"3\" format=\"ascii\">\n");
+  for (Index n = 0; n < mesh.n_nodes(); ++n)
+    fmt::format_to(out, "          {} {} 0\n", mesh.nodes(0, n), mesh.nodes(1, n));
+  fmt::format_to(out, "        </DataArray>\n      </Points>\n");
+}
+
+void cells_section(Out out, const mesh::Mesh<2>& mesh) {
+  const std::span<const int> order = vtk_node_order(mesh.order);
+  const int per_cell = mesh.nodes_per_cell();
+  fmt::format_to(out, "      <Cells>\n        <DataArray type=\"Int64\" Name=\"connectivity\" "
+                      "format=\"ascii\">\n");
+  for (Index c = 0; c < mesh.n_cells(); ++c) {
+    fmt::format_to(out, "         ");
+    for (const int local : order) fmt::format_to(out, " {}", mesh.cells(local, c));
+    fmt::format_to(out, "\n");
+  }
+  fmt::format_to(out, "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+                      "format=\"ascii\">\n");
+  for (Index c = 0; c < mesh.n_cells(); ++c)
+    fmt::format_to(out, "{}{}", c % 10 == 0 ? (c ? "\n          " : "          ") : " ",
+                   static_cast<long long>(c + 1) * per_cell);
+  fmt::format_to(out, "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
+                      "format=\"ascii\">\n");
+  const int type = vtk_cell_type(mesh.order);
+  for (Index c = 0; c < mesh.n_cells(); ++c)
+    fmt::format_to(out, "{}{}", c % 20 == 0 ? (c ? "\n          " : "          ") : " ", type);
+  fmt::format_to(out, "\n        </DataArray>\n      </Cells>\n");
+}
+
+void point_data_section(Out out, const mesh::Mesh<2>& mesh, const post::Fields& fields) {
+  fmt::format_to(out, "      <PointData Scalars=\"equivalent_strain_rate\" Vectors=\"velocity\">\n"
+                      "        <DataArray type=\"Float64\" Name=\"velocity\" "
+                      "NumberOfComponents=\"3\" format=\"ascii\">\n");
+  for (Index n = 0; n < mesh.n_nodes(); ++n)
+    fmt::format_to(out, "          {} {} 0\n", fields.velocity[2 * n] + 0.0,
+                   fields.velocity[2 * n + 1] + 0.0);
+  fmt::format_to(out, "        </DataArray>\n");
+  scalar_array(out, "equivalent_strain_rate", fields.equivalent_strain_rate);
+  scalar_array(out, "hydrostatic_stress", fields.hydrostatic_stress);
+  scalar_array(out, "hydrostatic_pressure", fields.hydrostatic_stress, -1.0);
+  scalar_array(out, "contact_pressure", fields.contact_pressure);
+  scalar_array(out, "friction_stress", fields.friction_stress);
+  fmt::format_to(out, "      </PointData>\n");
+}
+
+void cell_data_section(Out out, const mesh::Mesh<2>& mesh, const post::Fields& fields) {
+  fmt::format_to(out, "      <CellData Scalars=\"equivalent_strain_rate\">\n");
+  scalar_array(out, "equivalent_strain_rate", fields.cell_equivalent_strain_rate);
+  scalar_array(out, "hydrostatic_stress", fields.cell_hydrostatic_stress);
+  scalar_array(out, "hydrostatic_pressure", fields.cell_hydrostatic_stress, -1.0);
+  fmt::format_to(out, "        <DataArray type=\"Int64\" Name=\"cell_id\" format=\"ascii\">\n");
+  for (Index c = 0; c < mesh.n_cells(); ++c)
+    fmt::format_to(out, "{}{}", c % 10 == 0 ? (c ? "\n          " : "          ") : " ", c);
+  fmt::format_to(out, "\n        </DataArray>\n      </CellData>\n");
+}
+
+void check_fields(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
+  const Index n_nodes = mesh.n_nodes(), n_cells = mesh.n_cells();
+  check_size("velocity", static_cast<Index>(fields.velocity.size()), 2 * n_nodes);
+  const std::array<std::pair<std::string_view, const VectorX*>, 4> nodal = {
+      {{"equivalent_strain_rate", &fields.equivalent_strain_rate},
+       {"hydrostatic_stress", &fields.hydrostatic_stress},
+       {"contact_pressure", &fields.contact_pressure},
+       {"friction_stress", &fields.friction_stress}}};
+  for (const auto& [name, values] : nodal)
+    check_size(name, static_cast<Index>(values->size()), n_nodes);
+  check_size("cell equivalent_strain_rate",
+             static_cast<Index>(fields.cell_equivalent_strain_rate.size()), n_cells);
+  check_size("cell hydrostatic_stress", static_cast<Index>(fields.cell_hydrostatic_stress.size()),
+             n_cells);
+  check_finite("velocity", fields.velocity);
+  for (const auto& [name, values] : nodal) check_finite(name, *values);
+  check_finite("cell equivalent_strain_rate", fields.cell_equivalent_strain_rate);
+  check_finite("cell hydrostatic_stress", fields.cell_hydrostatic_stress);
+  for (Index n = 0; n < mesh.n_nodes(); ++n)
+    if (!std::isfinite(mesh.nodes(0, n)) || !std::isfinite(mesh.nodes(1, n)))
+      throw InternalError(fmt::format("fields.vtu: node {} has a non-finite coordinate", n));
+}
+
+}  // namespace
+
+int vtk_cell_type(int order) {
+  if (order == 1) return 9;
+  if (order == 2) return 28;
+  throw InternalError(fmt::format("fields.vtu: no VTK cell type for order {}", order));
+}
+
+std::span<const int> vtk_node_order(int order) {
+  if (order == 1) return vtk_from_q1;
+  if (order == 2) return vtk_from_q2;
+  throw InternalError(fmt::format("fields.vtu: no VTK node order for order {}", order));
+}
+
+std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
+  if (mesh.nodes_per_cell() != static_cast<int>(vtk_node_order(mesh.order).size()))
+    throw InternalError("fields.vtu: cells do not have (order + 1)^2 nodes");
+  check_fields(mesh, fields);
+  std::string text;
+  Out out(text);
+  fmt::format_to(out, "<?xml version=\"1.0\"?>\n"
+                      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+                      "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+                      "  <UnstructuredGrid>\n"
+                      "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+                 mesh.n_nodes(), mesh.n_cells());
+  points_section(out, mesh);
+  cells_section(out, mesh);
+  point_data_section(out, mesh, fields);
+  cell_data_section(out, mesh, fields);
+  fmt::format_to(out, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
+  return text;
+}
+
+}  // namespace formflow::io

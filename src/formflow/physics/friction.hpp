@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// Nonlocal (mollified) contact pressure and the regularised Coulomb law (SPEC §1–2).
+#pragma once
+
+#include "formflow/core/types.hpp"
+
+#include <vector>
+
+namespace formflow::physics {
+
+/// σ̄_N(x) = (1/|Γ_h(x)|) ∫_{Γ_h(x)} (−σ_N) dΓ with Γ_h(x) = {y ∈ Γ3 : |x − y| < h}:
+/// a fixed averaging operator over the quadrature points of Γ3, built once
+/// because the contact boundary does not move. Radius 0 gives the local pressure.
+class NonlocalAverage {
+ public:
+  /// `points`: coordinates of the Γ3 quadrature points (dim × n, any dim);
+  /// `weights`: their surface measures JxW.
+  NonlocalAverage(const MatrixX& points, const std::vector<Real>& weights, Real radius);
+
+  /// averaged[i] = Σ_j w_j p_j / Σ_j w_j over the points j within `radius` of i.
+  void apply(const std::vector<Real>& pressure, std::vector<Real>& averaged) const;
+  int size() const { return static_cast<int>(offsets_.size()) - 1; }
+
+ private:
+  // Compressed rows of neighbour indices and normalised weights.
+  std::vector<int> offsets_;
+  std::vector<int> neighbours_;
+  std::vector<Real> coefficients_;
+};
+
+/// Friction threshold τ_f = μ_f · max(σ̄_N, 0): a tensile mean pressure carries no friction.
+inline Real friction_threshold(Real mu, Real mean_contact_pressure) {
+  return mean_contact_pressure > 0 ? mu * mean_contact_pressure : 0.0;
+}
+
+/// Secant weight of the regularised friction term (eq. 3.15):
+/// τ_f / √(|u_T|² + d_T²), so that σ_T = −weight · u_T.
+inline Real friction_weight(Real threshold, Real slip_speed, Real d_t) {
+  return threshold / std::sqrt(slip_speed * slip_speed + d_t * d_t);
+}
+
+}  // namespace formflow::physics

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// Integration-point quantities averaged to nodes, and cell means.
+#include "formflow/fem/lagrange.hpp"
+#include "formflow/physics/kinematics.hpp"
+#include "formflow/post/post_process.hpp"
+
+namespace formflow::post {
+
+namespace {
+
+/// Divides each accumulated nodal sum by the number of contributions (0 stays 0).
+void average(VectorX& sum, const VectorX& count) {
+  for (Index k = 0; k < sum.size(); ++k)
+    if (count[k] > 0) sum[k] /= count[k];
+}
+
+template <int dim>
+fem::QuadratureRule<dim> node_rule(int order, int n_nodes) {
+  fem::QuadratureRule<dim> rule;
+  for (int a = 0; a < n_nodes; ++a) {
+    rule.points.push_back(fem::reference_node<dim>(order, a));
+    rule.weights.push_back(1.0);  // unused: only the gradients at the nodes are wanted
+  }
+  return rule;
+}
+
+}  // namespace
+
+template <int dim>
+Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX& u,
+                    const std::vector<assembly::ContactPoint<dim>>& contact) {
+  const auto& mesh = problem.mesh();
+  const Real d = problem.settings().penalty.d;
+  const int n = mesh.nodes_per_cell();
+  fem::CellValues<dim> at_nodes(mesh.order, node_rule<dim>(mesh.order, n));
+  fem::CellValues<dim> full_values(mesh.order, problem.full_rule());
+  fem::CellValues<dim> volumetric_values(mesh.order, problem.volumetric_rule());
+  const MatrixX pressure_to_nodes =
+      fem::gauss_to_nodes<dim>(mesh.order, problem.settings().volumetric_points);
+  typename fem::CellValues<dim>::Gradients coordinates, velocities;
+
+  Fields fields;
+  fields.velocity = u;
+  fields.equivalent_strain_rate = VectorX::Zero(mesh.n_nodes());
+  fields.hydrostatic_stress = VectorX::Zero(mesh.n_nodes());
+  fields.cell_equivalent_strain_rate = VectorX::Zero(mesh.n_cells());
+  fields.cell_hydrostatic_stress = VectorX::Zero(mesh.n_cells());
+  VectorX count = VectorX::Zero(mesh.n_nodes());
+  VectorX stress_at_points(volumetric_values.n_points());
+  auto rate_at = [&](const fem::CellValues<dim>& values, int q) {
+    return physics::equivalent_strain_rate(
+        physics::strain_rate<dim>(physics::velocity_gradient<dim>(velocities, values.gradients(q))));
+  };
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    problem.gather(cell, &u, coordinates, velocities);
+    at_nodes.reinit(coordinates);
+    full_values.reinit(coordinates);
+    volumetric_values.reinit(coordinates);
+    Real area = 0.0;
+    for (int q = 0; q < full_values.n_points(); ++q) {
+      fields.cell_equivalent_strain_rate[cell] += rate_at(full_values, q) * full_values.JxW(q);
+      area += full_values.JxW(q);
+    }
+    fields.cell_equivalent_strain_rate[cell] /= area;
+    for (int q = 0; q < volumetric_values.n_points(); ++q) {
+      // σ_H = ε̇_V/d (eq. 3.6), the Lagrange multiplier of incompressibility.
+      stress_at_points[q] = velocities.cwiseProduct(volumetric_values.gradients(q)).sum() / d;
+      fields.cell_hydrostatic_stress[cell] += stress_at_points[q] * volumetric_values.JxW(q) / area;
+    }
+    const VectorX nodal_stress = pressure_to_nodes * stress_at_points;
+    for (int a = 0; a < n; ++a) {
+      const Index node = mesh.cells(a, cell);
+      fields.equivalent_strain_rate[node] += rate_at(at_nodes, a);
+      fields.hydrostatic_stress[node] += nodal_stress[a];
+      count[node] += 1;
+    }
+  }
+  average(fields.equivalent_strain_rate, count);
+  average(fields.hydrostatic_stress, count);
+
+  // Contact tractions: facet points → facet nodes, averaged where faces meet.
+  fields.contact_pressure = VectorX::Zero(mesh.n_nodes());
+  fields.friction_stress = VectorX::Zero(mesh.n_nodes());
+  count.setZero();
+  const int n_q = problem.facet_rule().size();
+  const MatrixX facet_to_nodes = fem::gauss_to_nodes<dim - 1>(mesh.order, mesh.order + 1);
+  VectorX pressure_at(n_q), friction_at(n_q);
+  for (std::size_t first = 0; first < contact.size(); first += n_q) {
+    const mesh::BoundaryFacet& facet = mesh.facets[contact[first].facet];
+    for (int q = 0; q < n_q; ++q) {
+      const auto& point = contact[first + q];
+      pressure_at[q] = point.contact_pressure;
+      friction_at[q] = point.friction_weight * point.tangential_velocity.norm();
+    }
+    const VectorX nodal_pressure = facet_to_nodes * pressure_at;
+    const VectorX nodal_friction = facet_to_nodes * friction_at;
+    const auto face_nodes = mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
+    for (std::size_t k = 0; k < face_nodes.size(); ++k) {
+      const Index node = mesh.cells(face_nodes[k], facet.cell);
+      fields.contact_pressure[node] += nodal_pressure[static_cast<Index>(k)];
+      fields.friction_stress[node] += nodal_friction[static_cast<Index>(k)];
+      count[node] += 1;
+    }
+  }
+  average(fields.contact_pressure, count);
+  average(fields.friction_stress, count);
+  return fields;
+}
+
+template Fields nodal_fields<2>(const assembly::FormingProblem<2>&, const VectorX&,
+                                const std::vector<assembly::ContactPoint<2>>&);
+template Fields nodal_fields<3>(const assembly::FormingProblem<3>&, const VectorX&,
+                                const std::vector<assembly::ContactPoint<3>>&);
+
+}  // namespace formflow::post

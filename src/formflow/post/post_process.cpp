@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// Final evaluation of a converged (or last) iterate.
+#include "formflow/post/post_process.hpp"
+
+namespace formflow::post {
+
+template <int dim>
+void evaluate_results(const assembly::FormingProblem<dim>& problem, const VectorX& u,
+                      Results& results) {
+  ScopedTimer timer(results.timing, "post");
+  const Real speed = problem.settings().process.speed;
+  const Real height = problem.driven_height();
+
+  assembly::LinearSystem system = problem.plan().make_system();
+  problem.assemble(&u, system);
+  const auto contact = problem.contact_state(u);
+
+  results.n_cells = problem.mesh().n_cells();
+  results.n_nodes = problem.mesh().n_nodes();
+  results.n_dofs = problem.n_dofs();
+  results.power = compute_powers(problem, u, contact);
+  results.pressure.ram_reaction = problem.driven_force(system, u) / height;
+  results.pressure.power_balance =
+      (results.power.plastic_dissipation + results.power.friction) / (speed * height);
+  results.pressure.total_power = results.power.total() / (speed * height);
+  results.pressure.mean_hydrostatic_near_ram =
+      mean_pressure_of_cells_at(problem, u, mesh::BoundaryLabel::Rear);
+  results.fields = nodal_fields(problem, u, contact);
+  results.max_equivalent_strain_rate = results.fields.cell_equivalent_strain_rate.maxCoeff();
+  results.max_equivalent_strain_rate =
+      std::max(results.max_equivalent_strain_rate, results.fields.equivalent_strain_rate.maxCoeff());
+  if constexpr (dim == 2) results.contact = contact_profile(problem, contact);
+}
+
+template void evaluate_results<2>(const assembly::FormingProblem<2>&, const VectorX&, Results&);
+template void evaluate_results<3>(const assembly::FormingProblem<3>&, const VectorX&, Results&);
+
+}  // namespace formflow::post

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Load measures, power balance, nodal fields and contact profile at a velocity field.
+#pragma once
+
+#include "formflow/assembly/forming_problem.hpp"
+#include "formflow/post/results.hpp"
+
+#include <vector>
+
+namespace formflow::post {
+
+/// Power of every discrete term at `u` (per unit depth), with the viscosity
+/// and friction weights evaluated at `u` itself.
+template <int dim>
+PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const VectorX& u,
+                          const std::vector<assembly::ContactPoint<dim>>& contact);
+
+/// Area-weighted mean of −σ_H (σ_H = ε̇_V/d at the volumetric points, eq. 3.6)
+/// over the cells that have a face labelled `label`.
+template <int dim>
+Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, const VectorX& u,
+                               mesh::BoundaryLabel label);
+
+/// Nodal averages of ε̄̇, σ_H and the contact tractions, plus cell means.
+template <int dim>
+Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX& u,
+                    const std::vector<assembly::ContactPoint<dim>>& contact);
+
+/// Γ3 samples ordered by arc length from the end nearest the rear (plane problems).
+std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& problem,
+                                           const std::vector<assembly::ContactPoint<2>>& contact);
+
+/// Everything above plus the reaction force from one more assembly K(u): the
+/// consistent reaction K_c·(u) u, which equals the total discrete power at a
+/// fixed point of the iteration.
+template <int dim>
+void evaluate_results(const assembly::FormingProblem<dim>& problem, const VectorX& u,
+                      Results& results);
+
+}  // namespace formflow::post

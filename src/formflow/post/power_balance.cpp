@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+// Powers of the discrete terms and the mean hydrostatic pressure near the ram.
+#include "formflow/physics/kinematics.hpp"
+#include "formflow/post/post_process.hpp"
+
+namespace formflow::post {
+
+template <int dim>
+PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const VectorX& u,
+                          const std::vector<assembly::ContactPoint<dim>>& contact) {
+  const auto& settings = problem.settings();
+  const auto& mesh = problem.mesh();
+  fem::CellValues<dim> full_values(mesh.order, problem.full_rule());
+  fem::CellValues<dim> volumetric_values(mesh.order, problem.volumetric_rule());
+  typename fem::CellValues<dim>::Gradients coordinates, velocities;
+  const bool deviatoric = settings.viscous_strain == physics::ViscousStrain::Deviatoric;
+  PowerTerms power;
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    problem.gather(cell, &u, coordinates, velocities);
+    full_values.reinit(coordinates);
+    volumetric_values.reinit(coordinates);
+    for (int q = 0; q < full_values.n_points(); ++q) {
+      const Tensor3 rate = physics::strain_rate<dim>(
+          physics::velocity_gradient<dim>(velocities, full_values.gradients(q)));
+      const Real equivalent = physics::equivalent_strain_rate(rate);
+      const Tensor3 measured = deviatoric ? physics::deviator(rate) : rate;
+      power.plastic_dissipation += settings.law.dissipation(equivalent) * full_values.JxW(q);
+      power.viscous_form += 2.0 / 3.0 * settings.law.secant_viscosity(equivalent) *
+                            measured.cwiseProduct(measured).sum() * full_values.JxW(q);
+    }
+    for (int q = 0; q < volumetric_values.n_points(); ++q) {
+      const Real volumetric = physics::velocity_gradient<dim>(velocities, volumetric_values.gradients(q)).trace();
+      power.volumetric_penalty += volumetric * volumetric / settings.penalty.d * volumetric_values.JxW(q);
+    }
+  }
+  for (const auto& point : contact) {
+    power.contact_penalty += point.normal_velocity * point.normal_velocity / settings.penalty.d_n * point.weight;
+    power.friction += point.friction_weight * point.tangential_velocity.squaredNorm() * point.weight;
+  }
+  return power;
+}
+
+template <int dim>
+Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, const VectorX& u,
+                               mesh::BoundaryLabel label) {
+  const auto& mesh = problem.mesh();
+  fem::CellValues<dim> values(mesh.order, problem.volumetric_rule());
+  typename fem::CellValues<dim>::Gradients coordinates, velocities;
+  std::vector<bool> counted(mesh.n_cells(), false);
+  Real integral = 0.0, area = 0.0;
+  for (const mesh::BoundaryFacet& facet : mesh.facets) {
+    if (facet.label != label || counted[facet.cell]) continue;
+    counted[facet.cell] = true;
+    problem.gather(facet.cell, &u, coordinates, velocities);
+    values.reinit(coordinates);
+    for (int q = 0; q < values.n_points(); ++q) {
+      const Real volumetric = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace();
+      integral += -volumetric / problem.settings().penalty.d * values.JxW(q);  // −σ_H dx
+      area += values.JxW(q);
+    }
+  }
+  return area > 0 ? integral / area : 0.0;
+}
+
+template PowerTerms compute_powers<2>(const assembly::FormingProblem<2>&, const VectorX&,
+                                      const std::vector<assembly::ContactPoint<2>>&);
+template PowerTerms compute_powers<3>(const assembly::FormingProblem<3>&, const VectorX&,
+                                      const std::vector<assembly::ContactPoint<3>>&);
+template Real mean_pressure_of_cells_at<2>(const assembly::FormingProblem<2>&, const VectorX&, mesh::BoundaryLabel);
+template Real mean_pressure_of_cells_at<3>(const assembly::FormingProblem<3>&, const VectorX&, mesh::BoundaryLabel);
+
+}  // namespace formflow::post

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// CHOLMOD supernodal Cholesky behind the LinearSolver interface.
+#include "formflow/solvers/linear_solver.hpp"
+
+#include <Eigen/CholmodSupport>
+
+namespace formflow::solvers {
+
+namespace {
+
+class CholmodSolver final : public LinearSolver {
+ public:
+  CholmodSolver() {
+    // CHOLMOD prints its own warnings (e.g. "not positive definite") unless
+    // silenced; we report failures through return values instead.
+    factorization_.cholmod().print = 0;
+  }
+  bool analyze(const assembly::SparseMatrix& lower) override {
+    factorization_.analyzePattern(lower);
+    return factorization_.info() == Eigen::Success;
+  }
+  bool factorize(const assembly::SparseMatrix& lower) override {
+    factorization_.factorize(lower);
+    return factorization_.info() == Eigen::Success;
+  }
+  bool solve(const VectorX& rhs, VectorX& solution) override {
+    solution = factorization_.solve(rhs);
+    return factorization_.info() == Eigen::Success;
+  }
+  std::string name() const override { return "cholmod-supernodal"; }
+
+ private:
+  Eigen::CholmodSupernodalLLT<assembly::SparseMatrix, Eigen::Lower> factorization_;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_cholmod_solver() { return std::make_unique<CholmodSolver>(); }
+
+}  // namespace formflow::solvers

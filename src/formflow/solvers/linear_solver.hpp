@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// Sparse SPD direct solver interface: analyse the pattern once, factorise per iteration.
+#pragma once
+
+#include "formflow/assembly/sparsity.hpp"
+
+#include <memory>
+#include <string>
+
+namespace formflow::solvers {
+
+/// Direct solver of K x = b for a symmetric positive definite K given by its
+/// lower triangle. Failures are reported by return value, never by exception.
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  /// Fill-reducing ordering and symbolic factorisation of the pattern of `lower`.
+  virtual bool analyze(const assembly::SparseMatrix& lower) = 0;
+  /// Numeric factorisation; same pattern as analysed. False if not positive definite.
+  virtual bool factorize(const assembly::SparseMatrix& lower) = 0;
+  /// Solves with the last factorisation. False on failure.
+  virtual bool solve(const VectorX& rhs, VectorX& solution) = 0;
+  virtual std::string name() const = 0;
+};
+
+/// CHOLMOD supernodal LLᵀ through Eigen's CholmodSupport (BLAS-3 on supernodes).
+std::unique_ptr<LinearSolver> make_cholmod_solver();
+
+}  // namespace formflow::solvers
