@@ -1,0 +1,311 @@
+// SPDX-License-Identifier: MIT
+// Reading a TOML case file and `--set` overrides into a validated Case (toml11 v3).
+#include "formflow/core/error.hpp"
+#include "formflow/io/case.hpp"
+#include "formflow/io/case_keys.hpp"
+
+#include <fmt/format.h>
+#include <toml.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace formflow::io {
+
+namespace {
+
+/// Where a key got its current value; `order` tells which of two keys was set last.
+struct Origin {
+  std::string file = "<default>";
+  int line = 0;
+  int order = 0;
+};
+
+int line_of(const toml::value& value) { return static_cast<int>(value.location().line()); }
+
+std::string trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return {};
+  return std::string(text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1));
+}
+
+std::string describe(const toml::value& value) {
+  switch (value.type()) {
+    case toml::value_t::boolean: return value.as_boolean() ? "boolean true" : "boolean false";
+    case toml::value_t::integer: return fmt::format("integer {}", value.as_integer());
+    case toml::value_t::floating: return "real " + format_key_value(value.as_floating());
+    case toml::value_t::string: return "string " + format_key_value(value.as_string().str);
+    case toml::value_t::array: return "an array";
+    case toml::value_t::table: return "a table";
+    default: return "a date/time";
+  }
+}
+
+std::string expected_type(const CaseKey& key) {
+  switch (key.type) {
+    case KeyType::Real: return "a real number";
+    case KeyType::Integer: return "an integer";
+    case KeyType::Enum: return "a string";
+    case KeyType::StringList: return "a list of strings";
+  }
+  return "?";
+}
+
+/// The TOML value as this key's type; integers are accepted for real keys.
+std::optional<KeyValue> convert(const CaseKey& key, const toml::value& value) {
+  switch (key.type) {
+    case KeyType::Real:
+      if (value.is_floating()) return KeyValue{value.as_floating()};
+      if (value.is_integer()) return KeyValue{static_cast<Real>(value.as_integer())};
+      return std::nullopt;
+    case KeyType::Integer:
+      if (value.is_integer()) return KeyValue{std::int64_t{value.as_integer()}};
+      return std::nullopt;
+    case KeyType::Enum:
+      if (value.is_string()) return KeyValue{value.as_string().str};
+      return std::nullopt;
+    case KeyType::StringList: {
+      if (!value.is_array()) return std::nullopt;
+      std::vector<std::string> list;
+      for (const toml::value& entry : value.as_array()) {
+        if (!entry.is_string()) return std::nullopt;
+        list.push_back(entry.as_string().str);
+      }
+      return KeyValue{std::move(list)};
+    }
+  }
+  return std::nullopt;
+}
+
+/// Suggests the nearest sizes that fit every length: "1.25 (= 10/8) or 2.5 (= 10/4)".
+std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size) {
+  const Real lengths[] = {geometry.container_length, geometry.entry_half_height,
+                          geometry.exit_half_height, geometry.exit_length};
+  auto fits_all = [&lengths](Real candidate) {
+    return std::all_of(std::begin(lengths), std::end(lengths),
+                       [candidate](Real length) { return mesh::cells_along(length, candidate) > 0; });
+  };
+  std::optional<std::pair<Real, int>> smaller, larger;  // (length, number of cells)
+  constexpr int search = 10000;
+  for (const Real length : lengths) {
+    const int coarsest = std::max(1, static_cast<int>(std::ceil(length / size)));
+    for (int n = coarsest; n < coarsest + search; ++n)
+      if (fits_all(length / n)) {
+        if (!smaller || length / n > smaller->first / smaller->second) smaller = {length, n};
+        break;
+      }
+    for (int n = static_cast<int>(std::floor(length / size)); n >= 1; --n)
+      if (fits_all(length / n)) {
+        if (!larger || length / n < larger->first / larger->second) larger = {length, n};
+        break;
+      }
+  }
+  auto text = [](const std::pair<Real, int>& choice) {
+    return fmt::format("{} (= {}/{})", choice.first / choice.second, choice.first, choice.second);
+  };
+  if (smaller && larger) return "sizes that fit every length: " + text(*smaller) + " or " + text(*larger);
+  if (smaller || larger) return "a size that fits every length: " + text(smaller ? *smaller : *larger);
+  return "no size near this one fits every length; make the lengths multiples of one size";
+}
+
+/// Accumulates keys into a Case (starting from the table's defaults), remembering
+/// where each was set, so that cross-key errors can point at the key set last.
+class CaseBuilder {
+ public:
+  CaseBuilder() {
+    for (const CaseKey& key : case_keys()) key.set(case_, key.default_value);
+  }
+
+  void set(const CaseKey& key, const toml::value& value, const std::string& file, int line) {
+    const std::optional<KeyValue> converted = convert(key, value);
+    const std::string name(key.name);
+    if (!converted)
+      throw InputError(file, line, name, fmt::format("expected {}, got {}", expected_type(key), describe(value)),
+                       fmt::format("e.g. {} = {}", name, format_key_value(key.default_value)));
+    if (const auto problem = check_key_value(key, *converted))
+      throw InputError(file, line, name, problem->message, problem->hint);
+    key.set(case_, *converted);
+    origins_[name] = Origin{file, line, ++n_set_};
+  }
+
+  void check_cross_keys() const {
+    check_order("geometry.exit_half_height", "geometry.entry_half_height");
+    check_order("material.rate1", "material.rate2");
+    check_mesh_fits();
+  }
+
+  Case finish(std::string source) {
+    case_.source = std::move(source);
+    return case_;
+  }
+
+ private:
+  Origin origin(const std::string& name) const {
+    const auto found = origins_.find(name);
+    return found == origins_.end() ? Origin{} : found->second;
+  }
+
+  Real real_value(const std::string& name) const {
+    return std::get<Real>(find_case_key(name)->get(case_));
+  }
+
+  /// Requires value(small) < value(large); blames whichever of the two was set last.
+  void check_order(const std::string& small, const std::string& large) const {
+    const Real small_value = real_value(small), large_value = real_value(large);
+    if (small_value < large_value) return;
+    const bool blame_small = origin(small).order > origin(large).order;
+    const std::string& blamed = blame_small ? small : large;
+    const std::string& other = blame_small ? large : small;
+    const Origin where = origin(blamed);
+    throw InputError(where.file, where.line, blamed,
+                     fmt::format("value {} is not {} {} = {}", format_key_value(real_value(blamed)),
+                                 blame_small ? "less than" : "greater than", other,
+                                 format_key_value(real_value(other))),
+                     fmt::format("{} must be {} {}", blamed, blame_small ? "<" : ">", other));
+  }
+
+  void check_mesh_fits() const {
+    const std::string size_name = "mesh.size";
+    const Real size = case_.mesh_size;
+    for (const std::string length_name : {"geometry.container_length", "geometry.entry_half_height",
+                                          "geometry.exit_half_height", "geometry.exit_length"}) {
+      const Real length = real_value(length_name);
+      if (mesh::cells_along(length, size) > 0) continue;
+      const std::string hint = fitting_sizes_hint(case_.geometry, size);
+      if (origin(length_name).order > origin(size_name).order) {
+        const Origin where = origin(length_name);
+        throw InputError(where.file, where.line, length_name,
+                         fmt::format("value {} is not a multiple of mesh.size = {} ({:.6g} cells)",
+                                     format_key_value(length), format_key_value(size), length / size),
+                         "use a multiple of mesh.size, or mesh." + hint);
+      }
+      const Origin where = origin(size_name);
+      throw InputError(where.file, where.line, size_name,
+                       fmt::format("value {} does not fit {} = {} ({:.6g} cells)", format_key_value(size),
+                                   length_name, format_key_value(length), length / size),
+                       hint);
+    }
+  }
+
+  Case case_;
+  std::map<std::string, Origin, std::less<>> origins_;
+  int n_set_ = 0;
+};
+
+/// One-line message and hint from toml11's multi-line, underlined syntax error.
+InputError syntax_error(const std::string& path, const toml::syntax_error& error) {
+  std::istringstream lines(error.what());
+  std::string line, summary, annotation;
+  std::getline(lines, summary);
+  for (const std::string prefix : {"[error] ", "toml::"})
+    if (summary.rfind(prefix, 0) == 0) summary.erase(0, prefix.size());
+  if (const auto colon = summary.find(": "); colon != std::string::npos &&
+                                              summary.find(' ') > colon)
+    summary.erase(0, colon + 2);  // toml::parse_table: → drop the parser function name
+  while (std::getline(lines, line)) {
+    const auto bar = line.find(" | ");
+    if (bar == std::string::npos) continue;
+    const auto mark = line.find_first_not_of(' ', bar + 3);
+    if (mark == std::string::npos || (line[mark] != '^' && line[mark] != '~')) continue;
+    const auto text = line.find_first_not_of("^~- ", mark);
+    if (text != std::string::npos) annotation = line.substr(text);
+  }
+  std::string message = "invalid TOML: " + summary;
+  if (!annotation.empty() && annotation != "here") message += ": " + annotation;
+  std::string hint = "in `" + trimmed(error.location().line_str()) + "`";
+  if (summary.find("unknown value") != std::string::npos) hint += "; strings need quotes";
+  return InputError(path, static_cast<int>(error.location().line()), "syntax", message, hint);
+}
+
+toml::value read_document(const std::string& path) {
+  std::error_code code;
+  const std::string key = "case file";
+  if (!std::filesystem::exists(path, code))
+    throw InputError(path, 0, key, "no such file",
+                     "check the path; without a case file the paper's benchmark is run");
+  if (!std::filesystem::is_regular_file(path, code))
+    throw InputError(path, 0, key, "not a regular file", "give the path of a .toml file");
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream) throw InputError(path, 0, key, "cannot be opened for reading", "check its permissions");
+  try {
+    return toml::parse(stream, path);
+  } catch (const toml::syntax_error& error) {
+    throw syntax_error(path, error);
+  }
+}
+
+std::string did_you_mean(std::string_view name) {
+  return fmt::format("did you mean `{}`?", closest_case_key(name));
+}
+
+std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table) {
+  std::vector<std::pair<std::string, const toml::value*>> entries;
+  for (const auto& [name, value] : table.as_table()) entries.emplace_back(name, &value);
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    const auto la = a.second->location(), lb = b.second->location();
+    return std::pair(la.line(), la.column()) < std::pair(lb.line(), lb.column());
+  });
+  return entries;
+}
+
+void apply_document(CaseBuilder& builder, const toml::value& document, const std::string& path) {
+  for (const auto& [section, table] : in_file_order(document)) {
+    const int line = line_of(*table);
+    if (!is_case_section(section)) {
+      if (table->is_table())
+        throw InputError(path, line, section, "unknown section",
+                         fmt::format("did you mean `[{}]`?", closest_case_section(section)));
+      throw InputError(path, line, section, "unknown key (every key belongs in a section)",
+                       did_you_mean(section));
+    }
+    if (!table->is_table())
+      throw InputError(path, line, section, "expected a section, got " + describe(*table),
+                       fmt::format("write `[{}]` on its own line, then its keys", section));
+    for (const auto& [leaf, value] : in_file_order(*table)) {
+      const std::string name = section + "." + leaf;
+      const CaseKey* key = find_case_key(name);
+      if (!key) throw InputError(path, line_of(*value), name, "unknown key", did_you_mean(name));
+      builder.set(*key, *value, path, line_of(*value));
+    }
+  }
+}
+
+/// The override text as a TOML value; text that is not a TOML value is a string.
+toml::value parse_override_value(const std::string& text) {
+  try {
+    std::istringstream stream("value = " + text + "\n");
+    const toml::value document = toml::parse(stream, "--set");
+    if (document.as_table().size() == 1 && document.contains("value")) return document.at("value");
+  } catch (const toml::exception&) {
+    // not TOML: a bare word
+  }
+  return toml::value(trimmed(text));
+}
+
+void apply_override(CaseBuilder& builder, const Override& assignment) {
+  const std::string file = "--set";
+  const std::string name = trimmed(assignment.first);
+  const CaseKey* key = find_case_key(name);
+  if (!key && is_case_section(name))
+    throw InputError(file, 0, name, "is a section, not a key",
+                     fmt::format("set one of its keys, e.g. `{}`", did_you_mean(name + ".")));
+  if (!key) throw InputError(file, 0, name, "unknown key", did_you_mean(name));
+  builder.set(*key, parse_override_value(assignment.second), file, 0);
+}
+
+}  // namespace
+
+Case load_case(const std::string& path, const std::vector<Override>& overrides) {
+  CaseBuilder builder;
+  if (!path.empty()) apply_document(builder, read_document(path), path);
+  for (const Override& assignment : overrides) apply_override(builder, assignment);
+  builder.check_cross_keys();
+  return builder.finish(path.empty() ? "<default>" : path);
+}
+
+}  // namespace formflow::io

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: MIT
+// Filled contour bands on Q1/Q2 cells by exact clipping of linear triangles.
+#include "formflow/io/plot/mesh_drawing.hpp"
+
+#include "formflow/fem/lagrange.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace formflow::io::plot {
+
+namespace {
+
+/// A polygon vertex carrying the (display-scale) field value.
+struct Vertex {
+  Pixel at;
+  double value;
+};
+
+/// Sutherland–Hodgman against one half-space of the value: keeps value ≥ level
+/// (`keep_above`) or ≤ level. The field is linear on a triangle, so the cut is exact.
+std::vector<Vertex> clip(const std::vector<Vertex>& polygon, double level, bool keep_above) {
+  std::vector<Vertex> out;
+  auto inside = [&](const Vertex& v) { return keep_above ? v.value >= level : v.value <= level; };
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vertex& a = polygon[i];
+    const Vertex& b = polygon[(i + 1) % polygon.size()];
+    if (inside(a)) out.push_back(a);
+    if (inside(a) != inside(b)) {
+      const double w = (level - a.value) / (b.value - a.value);
+      out.push_back({{a.at[0] + w * (b.at[0] - a.at[0]), a.at[1] + w * (b.at[1] - a.at[1])},
+                     level});
+    }
+  }
+  return out;
+}
+
+/// Band boundaries in display coordinates, and band lookup in them.
+struct Bands {
+  std::vector<double> levels;
+  std::size_t band_of(double display) const {
+    const auto above = std::upper_bound(levels.begin() + 1, levels.end() - 1, display);
+    return static_cast<std::size_t>(above - levels.begin()) - 1;
+  }
+};
+
+void fill_triangle(const Canvas& canvas, const std::vector<Vertex>& triangle, const Bands& bands,
+                   const ColourScale& scale) {
+  const auto [low, high] = std::minmax({triangle[0].value, triangle[1].value, triangle[2].value});
+  const std::size_t first = bands.band_of(low), last = bands.band_of(high);
+  const std::size_t n = scale.n_bands();
+  for (std::size_t band = first; band <= last; ++band) {
+    std::vector<Vertex> piece = triangle;
+    // The end bands are open so values beyond the scale take the end colours.
+    if (band > 0) piece = clip(piece, bands.levels[band], true);
+    if (band + 1 < n && piece.size() >= 3) piece = clip(piece, bands.levels[band + 1], false);
+    if (piece.size() < 3) continue;
+    std::vector<Pixel> polygon;
+    for (const Vertex& v : piece) polygon.push_back(v.at);
+    canvas.fill(polygon, scale.band_colour(band), 1.0, true);
+  }
+}
+
+/// The grid's outer ring, counter-clockwise in the reference cell.
+std::vector<Pixel> cell_ring(const std::vector<Pixel>& points, int s) {
+  std::vector<Pixel> ring;
+  const int side = s + 1;
+  for (int i = 0; i < s; ++i) ring.push_back(points[i]);
+  for (int j = 0; j < s; ++j) ring.push_back(points[j * side + s]);
+  for (int i = s; i > 0; --i) ring.push_back(points[s * side + i]);
+  for (int j = s; j > 0; --j) ring.push_back(points[j * side]);
+  return ring;
+}
+
+/// Typical cell side on screen: the root of the mean cell area in pixels
+/// (an over-estimate for non-convex domains, which only errs towards detail).
+double cell_pixels(const Axes& axes, const mesh::Mesh<2>& mesh) {
+  const Box box = bounding_box(mesh);
+  const double area_px = std::abs((axes.px(box.x1) - axes.px(box.x0)) *
+                                  (axes.py(box.y1) - axes.py(box.y0)));
+  return std::sqrt(area_px / std::max<Index>(mesh.n_cells(), 1));
+}
+
+/// Sub-divisions per cell side: about 5 px per piece, at least 2 for Q2
+/// (its fields are quadratic), at most 8 so fine meshes do not bloat the SVG.
+int subdivisions_for(const Axes& axes, const mesh::Mesh<2>& mesh) {
+  return std::clamp(static_cast<int>(std::lround(cell_pixels(axes, mesh) / 5.0)), mesh.order, 8);
+}
+
+}  // namespace
+
+Box bounding_box(const mesh::Mesh<2>& mesh) {
+  if (mesh.n_nodes() == 0) return {};
+  return {mesh.nodes.row(0).minCoeff(), mesh.nodes.row(0).maxCoeff(), mesh.nodes.row(1).minCoeff(),
+          mesh.nodes.row(1).maxCoeff()};
+}
+
+CellSampler::CellSampler(int order, int subdivisions) : subdivisions_(subdivisions) {
+  const int side = subdivisions + 1;
+  const int n_local = (order + 1) * (order + 1);
+  shape_.resize(side * side, n_local);
+  VectorX values;
+  Eigen::Matrix<Real, 2, Eigen::Dynamic> gradients;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const Point<2> xi(-1.0 + 2.0 * i / subdivisions, -1.0 + 2.0 * j / subdivisions);
+      fem::tabulate_shape<2>(order, xi, values, gradients);
+      shape_.row(j * side + i) = values.transpose();
+    }
+}
+
+void CellSampler::sample(const mesh::Mesh<2>& mesh, Index cell, const VectorX& nodal,
+                         const Axes& axes, std::vector<Pixel>& points,
+                         std::vector<double>& values) const {
+  const auto n_points = static_cast<std::size_t>(shape_.rows());
+  points.resize(n_points);
+  values.resize(n_points);
+  for (std::size_t p = 0; p < n_points; ++p) {
+    double x = 0.0, y = 0.0, value = 0.0;
+    for (Index local = 0; local < shape_.cols(); ++local) {
+      const Index node = mesh.cells(local, cell);
+      const double weight = shape_(static_cast<Index>(p), local);
+      x += weight * mesh.nodes(0, node);
+      y += weight * mesh.nodes(1, node);
+      value += weight * nodal[node];
+    }
+    points[p] = axes.at(x, y);
+    values[p] = value;
+  }
+}
+
+void fill_field_bands(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh,
+                      const VectorX& nodal, const ColourScale& scale) {
+  Bands bands;
+  for (const double boundary : scale.boundaries()) bands.levels.push_back(scale.display(boundary));
+  const CellSampler sampler(mesh.order, subdivisions_for(axes, mesh));
+  const int s = sampler.subdivisions(), side = s + 1;
+  std::vector<Pixel> points;
+  std::vector<double> values;
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    sampler.sample(mesh, cell, nodal, axes, points, values);
+    for (double& value : values) value = scale.display(value);
+    const auto [low, high] = std::minmax_element(values.begin(), values.end());
+    // Most cells lie inside one band: one polygon instead of 2s² keeps the SVG small.
+    if (bands.band_of(*low) == bands.band_of(*high)) {
+      canvas.fill(cell_ring(points, s), scale.band_colour(bands.band_of(*low)), 1.0, true);
+      continue;
+    }
+    for (int j = 0; j < s; ++j)
+      for (int i = 0; i < s; ++i) {
+        const int a = j * side + i, b = a + 1, c = a + side + 1, d = a + side;
+        fill_triangle(canvas, {{points[a], values[a]}, {points[b], values[b]}, {points[c], values[c]}},
+                      bands, scale);
+        fill_triangle(canvas, {{points[a], values[a]}, {points[c], values[c]}, {points[d], values[d]}},
+                      bands, scale);
+      }
+  }
+}
+
+void draw_cell_edges(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh,
+                     const Stroke& stroke) {
+  if (cell_pixels(axes, mesh) < 6.0) return;
+  const CellSampler sampler(mesh.order, mesh.order == 2 ? 4 : 1);
+  const VectorX zeros = VectorX::Zero(mesh.n_nodes());
+  std::vector<Pixel> points;
+  std::vector<double> values;
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    sampler.sample(mesh, cell, zeros, axes, points, values);
+    canvas.polyline(cell_ring(points, sampler.subdivisions()), stroke, true);
+  }
+}
+
+void draw_boundary(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh) {
+  const int n_side = mesh.nodes_per_side();
+  const Stroke outline{1.2, {0.25, 0.25, 0.25}};
+  const Stroke symmetry{1.0, {0.25, 0.25, 0.25}, 1.0, 8.0};
+  const Stroke die{4.5, {0.08, 0.08, 0.08}};
+  // Die last, so its thick line covers the thin outline where they meet.
+  for (const bool die_pass : {false, true})
+    for (const mesh::BoundaryFacet& facet : mesh.facets) {
+      if (mesh::is_contact(facet.label) != die_pass) continue;
+      std::vector<Pixel> points;
+      for (const int local : mesh::face_local_nodes<2>(n_side, facet.local_face)) {
+        const Index node = mesh.cells(local, facet.cell);
+        points.push_back(axes.at(mesh.nodes(0, node), mesh.nodes(1, node)));
+      }
+      const bool is_symmetry = facet.label == mesh::BoundaryLabel::Symmetry;
+      canvas.polyline(points, die_pass ? die : is_symmetry ? symmetry : outline);
+    }
+}
+
+}  // namespace formflow::io::plot

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// Rendering all pictures of a run, and the layout and subtitle they share.
+#include "formflow/io/plot/pictures.hpp"
+
+#include "formflow/io/plot/mesh_drawing.hpp"
+
+#include <fmt/format.h>
+
+#include <utility>
+
+namespace formflow::io::plot {
+
+std::string run_description(const Case& case_, const post::Results& results) {
+  const bool drawing = case_.process.type == physics::ProcessType::Drawing;
+  const std::string outcome =
+      results.converged()
+          ? fmt::format("converged in {} iterations", results.iterations)
+          : fmt::format("NOT converged ({}, {} iterations)",
+                        solvers::stop_reason_name(results.stop_reason), results.iterations);
+  return fmt::format("{} · {}, h = {:g} · μ_{{f}} = {:g} · {} · {} {:.4g}",
+                     drawing ? "drawing" : "extrusion", fem::element_name(case_.element),
+                     case_.mesh_size, case_.friction.mu, outcome,
+                     drawing ? "drawing stress" : "ram pressure", results.pressure.ram_reaction);
+}
+
+FieldLayout field_layout(const mesh::Mesh<2>& mesh) {
+  // Left margin for y tick labels, right margin for the colour bar and its labels.
+  const Rect area{62, 70, 690, picture_height - 70 - 72};
+  const Box box = bounding_box(mesh);
+  Axes axes = equal_aspect_axes(area, box.x0, box.x1, box.y0, box.y1);
+  const Rect& plot = axes.area();
+  return {std::move(axes), Rect{plot.right() + 26, plot.y, 20, plot.height}};
+}
+
+Rect graph_area() { return {92, 72, picture_width - 92 - 100, picture_height - 72 - 84}; }
+
+std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mesh,
+                                     const post::Results& results) {
+  const PictureData data{case_, mesh, results};
+  using DrawPicture = void (*)(const Canvas&, const PictureData&);
+  const std::pair<const char*, DrawPicture> pictures[] = {{"strain_rate", draw_strain_rate},
+                                                          {"velocity", draw_velocity},
+                                                          {"pressure", draw_pressure},
+                                                          {"contact", draw_contact},
+                                                          {"convergence", draw_convergence}};
+  std::vector<Picture> out;
+  for (const auto& [name, draw] : pictures) {
+    const DrawFunction function = [&, draw](Canvas& canvas) { draw(canvas, data); };
+    out.push_back({name, render_png(picture_width, picture_height, function),
+                   render_svg(picture_width, picture_height, function)});
+  }
+  return out;
+}
+
+}  // namespace formflow::io::plot

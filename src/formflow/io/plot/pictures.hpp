@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// The pictures of a run: one drawing function per picture, and rendering them all.
+#pragma once
+
+#include "formflow/io/case.hpp"
+#include "formflow/io/plot/axes.hpp"
+#include "formflow/io/plot/canvas.hpp"
+#include "formflow/mesh/mesh.hpp"
+#include "formflow/post/results.hpp"
+
+#include <string>
+#include <vector>
+
+namespace formflow::io::plot {
+
+/// Size of every picture in pixels: legible at 100 % on a laptop screen.
+inline constexpr int picture_width = 900;
+inline constexpr int picture_height = 600;
+
+/// What a picture is drawn from.
+struct PictureData {
+  const Case& case_;
+  const mesh::Mesh<2>& mesh;
+  const post::Results& results;
+};
+
+/// A rendered picture: file stem ("strain_rate") and the PNG and SVG file contents.
+struct Picture {
+  std::string name;
+  std::string png;
+  std::string svg;
+};
+
+/// Filled log-scale contours of the nodal equivalent strain rate, die drawn thick.
+void draw_strain_rate(const Canvas& canvas, const PictureData& data);
+/// Velocity arrows at (subsampled) nodes, coloured by speed, over the mesh.
+void draw_velocity(const Canvas& canvas, const PictureData& data);
+/// Filled contours of the hydrostatic pressure −σ_H, diverging colours centred on 0.
+void draw_pressure(const Canvas& canvas, const PictureData& data);
+/// Contact pressure and friction stress against arc length along Γ3.
+void draw_contact(const Canvas& canvas, const PictureData& data);
+/// Relative change per iteration (log) with the tolerance, and the pressure history.
+void draw_convergence(const Canvas& canvas, const PictureData& data);
+
+/// Every picture above, in that order, named strain_rate, velocity, pressure,
+/// contact, convergence. Throws std::runtime_error if cairo fails.
+std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mesh,
+                                     const post::Results& results);
+
+// Shared by the picture files.
+
+/// One line saying which run this is: process, element, mesh size, friction,
+/// outcome and the ram pressure (the subtitle of every picture).
+std::string run_description(const Case& case_, const post::Results& results);
+
+/// Where a field picture puts its mesh (equal aspect) and its colour bar.
+struct FieldLayout {
+  Axes axes;
+  Rect colour_bar;
+};
+/// The field-picture layout for `mesh` on a picture_width × picture_height canvas.
+FieldLayout field_layout(const mesh::Mesh<2>& mesh);
+
+/// The plot area of a graph picture (contact, convergence), leaving room for
+/// axis labels on both sides.
+Rect graph_area();
+
+}  // namespace formflow::io::plot
