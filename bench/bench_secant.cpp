@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// Cost of the secant iteration on the paper's benchmark, mesh II refined k times
+// (Q2, 2×2 volumetric rule), against one bare CHOLMOD factorisation of the same
+// matrix. Results and machine notes: docs/benchmarks.md.
+#include "formflow/app/simulation.hpp"
+#include "formflow/assembly/forming_problem.hpp"
+#include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/solvers/linear_solver.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <string>
+
+namespace {
+
+using namespace formflow;
+
+/// Peak resident memory of this process so far, in MiB (VmHWM).
+double peak_memory_mib() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  return 0.0;
+}
+
+io::Case refined_case(int refinement) {
+  io::Case case_;
+  case_.mesh_size = 1.0 / refinement;
+  // Up to 4 refinements the whole solve is timed; beyond, 10 iterations give
+  // the per-iteration cost without a many-minute run (the count is reported).
+  if (refinement > 4) case_.solver.max_iterations = 10;
+  return case_;
+}
+
+void secant_solve(benchmark::State& state) {
+  const io::Case case_ = refined_case(static_cast<int>(state.range(0)));
+  post::Results results;
+  for (auto _ : state) results = app::simulate(case_).results;
+  const double iterations = results.iterations + 1;  // + the constant-viscosity start
+  state.counters["dofs"] = results.n_dofs;
+  state.counters["iterations"] = results.iterations;
+  state.counters["total_s"] = results.timing.get("total");
+  state.counters["per_iteration_s"] =
+      (results.timing.get("assembly") + results.timing.get("factorization") +
+       results.timing.get("solve")) / iterations;
+  state.counters["assembly_per_it_s"] = results.timing.get("assembly") / iterations;
+  state.counters["factorization_per_it_s"] = results.timing.get("factorization") / iterations;
+  state.counters["solve_per_it_s"] = results.timing.get("solve") / iterations;
+  state.counters["analysis_s"] = results.timing.get("analysis");
+  state.counters["post_s"] = results.timing.get("post");
+  state.counters["peak_mib"] = peak_memory_mib();
+}
+
+void bare_factorization(benchmark::State& state) {
+  const io::Case case_ = refined_case(static_cast<int>(state.range(0)));
+  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size, 2);
+  assembly::ProblemSettings settings;
+  const assembly::FormingProblem<2> problem(mesh, settings);
+  assembly::LinearSystem system = problem.plan().make_system();
+  problem.assemble(nullptr, system);
+  auto solver = solvers::make_cholmod_solver();
+  solver->analyze(system.matrix);
+  for (auto _ : state) benchmark::DoNotOptimize(solver->factorize(system.matrix));
+  state.counters["dofs"] = problem.n_dofs();
+  state.counters["nonzeros_lower"] = static_cast<double>(system.matrix.nonZeros());
+}
+
+}  // namespace
+
+BENCHMARK(secant_solve)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(bare_factorization)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+
+BENCHMARK_MAIN();
