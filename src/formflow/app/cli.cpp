@@ -5,17 +5,13 @@
 #include "formflow/app/monitor.hpp"
 #include "formflow/app/simulation.hpp"
 #include "formflow/core/error.hpp"
-#include "formflow/io/case.hpp"
+#include "formflow/io/case_keys.hpp"
 #include "formflow/io/results_writer.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cstdio>
-
-namespace formflow::io {
-std::string case_reference_markdown();  // io/case_keys.hpp (in progress)
-}
 
 namespace formflow::app {
 

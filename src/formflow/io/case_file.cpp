@@ -26,7 +26,9 @@ struct Origin {
   int order = 0;
 };
 
-int line_of(const toml::value& value) { return static_cast<int>(value.location().line()); }
+int line_of(const toml::value& value) {
+  return static_cast<int>(value.location().line());
+}
 
 std::string trimmed(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r\n");
@@ -36,22 +38,22 @@ std::string trimmed(std::string_view text) {
 
 std::string describe(const toml::value& value) {
   switch (value.type()) {
-    case toml::value_t::boolean: return value.as_boolean() ? "boolean true" : "boolean false";
-    case toml::value_t::integer: return fmt::format("integer {}", value.as_integer());
-    case toml::value_t::floating: return "real " + format_key_value(value.as_floating());
-    case toml::value_t::string: return "string " + format_key_value(value.as_string().str);
-    case toml::value_t::array: return "an array";
-    case toml::value_t::table: return "a table";
-    default: return "a date/time";
+  case toml::value_t::boolean: return value.as_boolean() ? "boolean true" : "boolean false";
+  case toml::value_t::integer: return fmt::format("integer {}", value.as_integer());
+  case toml::value_t::floating: return "real " + format_key_value(value.as_floating());
+  case toml::value_t::string: return "string " + format_key_value(value.as_string().str);
+  case toml::value_t::array: return "an array";
+  case toml::value_t::table: return "a table";
+  default: return "a date/time";
   }
 }
 
 std::string expected_type(const CaseKey& key) {
   switch (key.type) {
-    case KeyType::Real: return "a real number";
-    case KeyType::Integer: return "an integer";
-    case KeyType::Enum: return "a string";
-    case KeyType::StringList: return "a list of strings";
+  case KeyType::Real: return "a real number";
+  case KeyType::Integer: return "an integer";
+  case KeyType::Enum: return "a string";
+  case KeyType::StringList: return "a list of strings";
   }
   return "?";
 }
@@ -59,25 +61,25 @@ std::string expected_type(const CaseKey& key) {
 /// The TOML value as this key's type; integers are accepted for real keys.
 std::optional<KeyValue> convert(const CaseKey& key, const toml::value& value) {
   switch (key.type) {
-    case KeyType::Real:
-      if (value.is_floating()) return KeyValue{value.as_floating()};
-      if (value.is_integer()) return KeyValue{static_cast<Real>(value.as_integer())};
-      return std::nullopt;
-    case KeyType::Integer:
-      if (value.is_integer()) return KeyValue{std::int64_t{value.as_integer()}};
-      return std::nullopt;
-    case KeyType::Enum:
-      if (value.is_string()) return KeyValue{value.as_string().str};
-      return std::nullopt;
-    case KeyType::StringList: {
-      if (!value.is_array()) return std::nullopt;
-      std::vector<std::string> list;
-      for (const toml::value& entry : value.as_array()) {
-        if (!entry.is_string()) return std::nullopt;
-        list.push_back(entry.as_string().str);
-      }
-      return KeyValue{std::move(list)};
+  case KeyType::Real:
+    if (value.is_floating()) return KeyValue{value.as_floating()};
+    if (value.is_integer()) return KeyValue{static_cast<Real>(value.as_integer())};
+    return std::nullopt;
+  case KeyType::Integer:
+    if (value.is_integer()) return KeyValue{std::int64_t{value.as_integer()}};
+    return std::nullopt;
+  case KeyType::Enum:
+    if (value.is_string()) return KeyValue{value.as_string().str};
+    return std::nullopt;
+  case KeyType::StringList: {
+    if (!value.is_array()) return std::nullopt;
+    std::vector<std::string> list;
+    for (const toml::value& entry : value.as_array()) {
+      if (!entry.is_string()) return std::nullopt;
+      list.push_back(entry.as_string().str);
     }
+    return KeyValue{std::move(list)};
+  }
   }
   return std::nullopt;
 }
@@ -87,12 +89,14 @@ std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size)
   const Real lengths[] = {geometry.container_length, geometry.entry_half_height,
                           geometry.exit_half_height, geometry.exit_length};
   auto fits_all = [&lengths](Real candidate) {
-    return std::all_of(std::begin(lengths), std::end(lengths),
-                       [candidate](Real length) { return mesh::cells_along(length, candidate) > 0; });
+    return std::all_of(std::begin(lengths), std::end(lengths), [candidate](Real length) {
+      return mesh::cells_along(length, candidate) > 0;
+    });
   };
   std::optional<std::pair<Real, int>> smaller, larger;  // (length, number of cells)
   constexpr int search = 10000;
   for (const Real length : lengths) {
+    if (length / size > 1e7) continue;  // no sensible mesh; also keeps the cell counts in int
     const int coarsest = std::max(1, static_cast<int>(std::ceil(length / size)));
     for (int n = coarsest; n < coarsest + search; ++n)
       if (fits_all(length / n)) {
@@ -106,11 +110,14 @@ std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size)
       }
   }
   auto text = [](const std::pair<Real, int>& choice) {
-    return fmt::format("{} (= {}/{})", choice.first / choice.second, choice.first, choice.second);
+    return fmt::format("{} (= {}/{})", format_key_value(choice.first / choice.second),
+                       choice.first, choice.second);
   };
-  if (smaller && larger) return "sizes that fit every length: " + text(*smaller) + " or " + text(*larger);
-  if (smaller || larger) return "a size that fits every length: " + text(smaller ? *smaller : *larger);
-  return "no size near this one fits every length; make the lengths multiples of one size";
+  if (smaller && larger)
+    return "sizes that fit every length: " + text(*smaller) + " or " + text(*larger);
+  if (smaller || larger)
+    return "a size that fits every length: " + text(smaller ? *smaller : *larger);
+  return "no size near this one fits every length: make the lengths multiples of one size";
 }
 
 /// Accumulates keys into a Case (starting from the table's defaults), remembering
@@ -118,15 +125,20 @@ std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size)
 class CaseBuilder {
  public:
   CaseBuilder() {
-    for (const CaseKey& key : case_keys()) key.set(case_, key.default_value);
+    for (const CaseKey& key : case_keys())
+      key.set(case_, key.default_value);
   }
 
   void set(const CaseKey& key, const toml::value& value, const std::string& file, int line) {
     const std::optional<KeyValue> converted = convert(key, value);
     const std::string name(key.name);
-    if (!converted)
-      throw InputError(file, line, name, fmt::format("expected {}, got {}", expected_type(key), describe(value)),
-                       fmt::format("e.g. {} = {}", name, format_key_value(key.default_value)));
+    if (!converted) {
+      const std::string example = format_key_value(key.default_value);
+      throw InputError(file, line, name,
+                       fmt::format("expected {}, got {}", expected_type(key), describe(value)),
+                       file == "--set" ? fmt::format("e.g. --set {}={}", name, example)
+                                       : fmt::format("e.g. {} = {}", name, example));
+    }
     if (const auto problem = check_key_value(key, *converted))
       throw InputError(file, line, name, problem->message, problem->hint);
     key.set(case_, *converted);
@@ -180,14 +192,16 @@ class CaseBuilder {
       if (origin(length_name).order > origin(size_name).order) {
         const Origin where = origin(length_name);
         throw InputError(where.file, where.line, length_name,
-                         fmt::format("value {} is not a multiple of mesh.size = {} ({:.6g} cells)",
-                                     format_key_value(length), format_key_value(size), length / size),
-                         "use a multiple of mesh.size, or mesh." + hint);
+                         fmt::format("value {} is not a multiple of mesh.size = {}: {:.6g} cells",
+                                     format_key_value(length), format_key_value(size),
+                                     length / size),
+                         "use a multiple of mesh.size; or change mesh.size: " + hint);
       }
       const Origin where = origin(size_name);
       throw InputError(where.file, where.line, size_name,
-                       fmt::format("value {} does not fit {} = {} ({:.6g} cells)", format_key_value(size),
-                                   length_name, format_key_value(length), length / size),
+                       fmt::format("value {} does not fit {} = {}: {:.6g} cells",
+                                   format_key_value(size), length_name, format_key_value(length),
+                                   length / size),
                        hint);
     }
   }
@@ -204,8 +218,8 @@ InputError syntax_error(const std::string& path, const toml::syntax_error& error
   std::getline(lines, summary);
   for (const std::string prefix : {"[error] ", "toml::"})
     if (summary.rfind(prefix, 0) == 0) summary.erase(0, prefix.size());
-  if (const auto colon = summary.find(": "); colon != std::string::npos &&
-                                              summary.find(' ') > colon)
+  if (const auto colon = summary.find(": ");
+      colon != std::string::npos && summary.find(' ') > colon)
     summary.erase(0, colon + 2);  // toml::parse_table: → drop the parser function name
   while (std::getline(lines, line)) {
     const auto bar = line.find(" | ");
@@ -231,11 +245,15 @@ toml::value read_document(const std::string& path) {
   if (!std::filesystem::is_regular_file(path, code))
     throw InputError(path, 0, key, "not a regular file", "give the path of a .toml file");
   std::ifstream stream(path, std::ios::binary);
-  if (!stream) throw InputError(path, 0, key, "cannot be opened for reading", "check its permissions");
+  if (!stream)
+    throw InputError(path, 0, key, "cannot be opened for reading", "check its permissions");
   try {
     return toml::parse(stream, path);
   } catch (const toml::syntax_error& error) {
     throw syntax_error(path, error);
+  } catch (const toml::exception& error) {
+    throw InputError(path, static_cast<int>(error.location().line()), "syntax",
+                     "invalid TOML: " + trimmed(error.what()), "");
   }
 }
 
@@ -245,7 +263,8 @@ std::string did_you_mean(std::string_view name) {
 
 std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table) {
   std::vector<std::pair<std::string, const toml::value*>> entries;
-  for (const auto& [name, value] : table.as_table()) entries.emplace_back(name, &value);
+  for (const auto& [name, value] : table.as_table())
+    entries.emplace_back(name, &value);
   std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
     const auto la = a.second->location(), lb = b.second->location();
     return std::pair(la.line(), la.column()) < std::pair(lb.line(), lb.column());
@@ -293,7 +312,7 @@ void apply_override(CaseBuilder& builder, const Override& assignment) {
   const CaseKey* key = find_case_key(name);
   if (!key && is_case_section(name))
     throw InputError(file, 0, name, "is a section, not a key",
-                     fmt::format("set one of its keys, e.g. `{}`", did_you_mean(name + ".")));
+                     fmt::format("set one of its keys, e.g. `{}`", closest_case_key(name + ".")));
   if (!key) throw InputError(file, 0, name, "unknown key", did_you_mean(name));
   builder.set(*key, parse_override_value(assignment.second), file, 0);
 }
@@ -303,7 +322,8 @@ void apply_override(CaseBuilder& builder, const Override& assignment) {
 Case load_case(const std::string& path, const std::vector<Override>& overrides) {
   CaseBuilder builder;
   if (!path.empty()) apply_document(builder, read_document(path), path);
-  for (const Override& assignment : overrides) apply_override(builder, assignment);
+  for (const Override& assignment : overrides)
+    apply_override(builder, assignment);
   builder.check_cross_keys();
   return builder.finish(path.empty() ? "<default>" : path);
 }

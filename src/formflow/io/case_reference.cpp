@@ -31,7 +31,8 @@ std::string bound_text(const Bound& bound, bool lower) {
 
 std::string choices_text(const CaseKey& key) {
   std::string text;
-  for (std::string_view choice : key.choices) text += (text.empty() ? "" : ", ") + quoted(choice);
+  for (std::string_view choice : key.choices)
+    text += (text.empty() ? "" : ", ") + quoted(choice);
   return text;
 }
 
@@ -84,10 +85,10 @@ std::string format_key_value(const KeyValue& value) {
 
 std::string_view key_type_name(KeyType type) {
   switch (type) {
-    case KeyType::Real: return "real";
-    case KeyType::Integer: return "integer";
-    case KeyType::Enum: return "string";
-    case KeyType::StringList: return "list of strings";
+  case KeyType::Real: return "real";
+  case KeyType::Integer: return "integer";
+  case KeyType::Enum: return "string";
+  case KeyType::StringList: return "list of strings";
   }
   return "?";
 }
@@ -95,22 +96,22 @@ std::string_view key_type_name(KeyType type) {
 std::string valid_values_text(const CaseKey& key) {
   std::string text;
   switch (key.type) {
-    case KeyType::Real:
-    case KeyType::Integer:
-      if (key.lower.value && key.upper.value)
-        text = fmt::format("{} {} value {} {}", *key.lower.value, key.lower.inclusive ? "≤" : "<",
-                           key.upper.inclusive ? "≤" : "<", *key.upper.value);
-      else if (key.lower.value)
-        text = bound_text(key.lower, true);
-      else if (key.upper.value)
-        text = bound_text(key.upper, false);
-      else
-        text = "any finite value";
-      break;
-    case KeyType::Enum: text = "one of " + choices_text(key); break;
-    case KeyType::StringList:
-      text = "each of " + choices_text(key) + " at most once; may be empty";
-      break;
+  case KeyType::Real:
+  case KeyType::Integer:
+    if (key.lower.value && key.upper.value)
+      text = fmt::format("{} {} value {} {}", *key.lower.value, key.lower.inclusive ? "≤" : "<",
+                         key.upper.inclusive ? "≤" : "<", *key.upper.value);
+    else if (key.lower.value)
+      text = bound_text(key.lower, true);
+    else if (key.upper.value)
+      text = bound_text(key.upper, false);
+    else
+      text = "any finite value";
+    break;
+  case KeyType::Enum: text = "one of " + choices_text(key); break;
+  case KeyType::StringList:
+    text = "each of " + choices_text(key) + " at most once; may be empty";
+    break;
   }
   if (!key.constraint.empty()) text += fmt::format("; {}", key.constraint);
   return text;
@@ -129,7 +130,8 @@ std::string case_reference_markdown() {
       "`--set mesh.element=Q1`, `--set 'friction.on=[\"die\"]'`. Checks that involve two\n"
       "keys (mesh size against the lengths, exit against entry height, rate1 against\n"
       "rate2) run after all keys are set. `formflow check CASE` validates without solving.\n\n";
-  for (const CaseSection& section : case_sections()) text += section_table(section);
+  for (const CaseSection& section : case_sections())
+    text += section_table(section);
   text += "## The default case\n\nEquivalent to running without a case file:\n\n";
   return text + default_case_file();
 }

@@ -48,7 +48,7 @@ double fraction(const Axis& axis, double value) {
 }
 
 std::string label_of(const Axis& axis, double value) {
-  if (axis.log) return log_tick_label(value);
+  if (axis.log) return log_tick_label(value, log_labels_as_powers(axis.lo, axis.hi));
   const double step = axis.ticks.size() > 1 ? axis.ticks[1] - axis.ticks[0] : std::abs(value);
   return tick_label(value, step > 0 ? step : 1.0);
 }
@@ -90,22 +90,36 @@ void Axes::draw(const Canvas& canvas, bool grid) const {
       canvas.line({area_.x, py(tick)}, {area_.right(), py(tick)}, grid_stroke);
   }
   canvas.stroke_rect(area_, frame_stroke);
+  draw_x_ticks(canvas, area_.bottom());
+  draw_y_ticks(canvas, area_.x);
+}
+
+void Axes::draw_spines(const Canvas& canvas, double offset) const {
+  canvas.line({area_.x, area_.bottom() + offset}, {area_.right(), area_.bottom() + offset},
+              frame_stroke);
+  canvas.line({area_.x - offset, area_.y}, {area_.x - offset, area_.bottom()}, frame_stroke);
+  draw_x_ticks(canvas, area_.bottom() + offset);
+  draw_y_ticks(canvas, area_.x - offset);
+}
+
+void Axes::draw_x_ticks(const Canvas& canvas, double y) const {
   for (const double tick : x_.ticks) {
-    canvas.line({px(tick), area_.bottom()}, {px(tick), area_.bottom() + 5}, frame_stroke);
-    canvas.text({px(tick), area_.bottom() + 8}, label_of(x_, tick), tick_font, HAlign::Centre,
-                VAlign::Top);
+    canvas.line({px(tick), y}, {px(tick), y + 5}, frame_stroke);
+    canvas.text({px(tick), y + 8}, label_of(x_, tick), tick_font, HAlign::Centre, VAlign::Top);
   }
+  canvas.text({area_.x + 0.5 * area_.width, y + 28}, x_.label, label_font, HAlign::Centre,
+              VAlign::Top);
+}
+
+void Axes::draw_y_ticks(const Canvas& canvas, double x) const {
   for (const double tick : y_.ticks) {
-    canvas.line({area_.x - 5, py(tick)}, {area_.x, py(tick)}, frame_stroke);
-    canvas.text({area_.x - 8, py(tick)}, label_of(y_, tick), tick_font, HAlign::Right,
-                VAlign::Middle);
+    canvas.line({x - 5, py(tick)}, {x, py(tick)}, frame_stroke);
+    canvas.text({x - 8, py(tick)}, label_of(y_, tick), tick_font, HAlign::Right, VAlign::Middle);
   }
   if (y_.log)
     for (const double tick : minor_log_ticks(y_))
-      canvas.line({area_.x - 3, py(tick)}, {area_.x, py(tick)}, frame_stroke);
-  canvas.text({area_.x + 0.5 * area_.width, area_.bottom() + 30}, x_.label, label_font,
-              HAlign::Centre, VAlign::Top);
-  const double label_x = area_.x - 14 - widest_label(canvas, y_);
+      canvas.line({x - 3, py(tick)}, {x, py(tick)}, frame_stroke);
+  const double label_x = x - 14 - widest_label(canvas, y_);
   canvas.text({label_x, area_.y + 0.5 * area_.height}, y_.label, label_font, HAlign::Centre,
               VAlign::Bottom, 90.0);
 }

@@ -35,10 +35,16 @@ class Axes {
 
   /// Frame, ticks and tick labels (left and bottom), axis labels; optional light grid.
   void draw(const Canvas& canvas, bool grid) const;
+  /// Only a left and a bottom axis line, `offset` pixels outside the area, with
+  /// ticks and labels: for mesh pictures, where a full frame would read as
+  /// part of the domain boundary.
+  void draw_spines(const Canvas& canvas, double offset) const;
   /// The y axis drawn on the right edge instead (a second quantity over the same x).
   void draw_right(const Canvas& canvas, const Rgb& colour) const;
 
  private:
+  void draw_x_ticks(const Canvas& canvas, double y) const;
+  void draw_y_ticks(const Canvas& canvas, double x) const;
   Rect area_;
   Axis x_, y_;
 };

@@ -230,6 +230,26 @@ void Canvas::fill(std::span<const Pixel> polygon, const Rgb& colour, double alph
   cairo_stroke(cairo_);
 }
 
+void Canvas::fill_polygons(std::span<const std::vector<Pixel>> polygons, const Rgb& colour,
+                           bool seal) const {
+  cairo_new_path(cairo_);
+  for (const auto& polygon : polygons) {
+    if (polygon.size() < 3) continue;
+    cairo_move_to(cairo_, polygon[0][0], polygon[0][1]);
+    for (std::size_t i = 1; i < polygon.size(); ++i)
+      cairo_line_to(cairo_, polygon[i][0], polygon[i][1]);
+    cairo_close_path(cairo_);
+  }
+  cairo_set_source_rgb(cairo_, colour.r, colour.g, colour.b);
+  if (!seal) {
+    cairo_fill(cairo_);
+    return;
+  }
+  cairo_fill_preserve(cairo_);
+  apply({0.6, colour});
+  cairo_stroke(cairo_);
+}
+
 void Canvas::fill_rect(const Rect& rect, const Rgb& colour, double alpha) const {
   cairo_new_path(cairo_);
   cairo_rectangle(cairo_, rect.x, rect.y, rect.width, rect.height);

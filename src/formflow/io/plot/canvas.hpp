@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 using cairo_t = struct _cairo;
 
@@ -67,6 +68,10 @@ class Canvas {
   /// hairline seams anti-aliasing leaves between adjacent fills.
   void fill(std::span<const Pixel> polygon, const Rgb& colour, double alpha = 1.0,
             bool seal = false) const;
+  /// Fills many polygons as one path (one SVG element, no seams between
+  /// them); they must all have the same orientation.
+  void fill_polygons(std::span<const std::vector<Pixel>> polygons, const Rgb& colour,
+                     bool seal) const;
   void fill_rect(const Rect& rect, const Rgb& colour, double alpha = 1.0) const;
   void stroke_rect(const Rect& rect, const Stroke& stroke) const;
   void circle(Pixel centre, double radius, const Rgb& colour) const;

@@ -31,8 +31,8 @@ std::vector<double> colour_bar_ticks(const ColourScale& scale) {
 }
 
 std::string colour_bar_label(const ColourScale& scale, double value) {
-  if (scale.is_log()) return log_tick_label(value);
   const std::vector<double>& bounds = scale.boundaries();
+  if (scale.is_log()) return log_tick_label(value, log_labels_as_powers(bounds.front(), bounds.back()));
   return tick_label(value, bounds[1] - bounds[0]);
 }
 

@@ -64,7 +64,7 @@ ColourScale ColourScale::logarithmic(double lo, double hi) {
   return scale;
 }
 
-ColourScale ColourScale::linear(double lo, double hi, int target_bands, bool diverging) {
+ColourScale ColourScale::linear(double lo, double hi, int target_bands, Palette palette) {
   if (!(std::isfinite(lo) && std::isfinite(hi)))
     throw InternalError("plot: linear colour scale needs a finite range");
   if (!(hi > lo)) {
@@ -74,7 +74,7 @@ ColourScale ColourScale::linear(double lo, double hi, int target_bands, bool div
     hi += half;
   }
   ColourScale scale;
-  scale.diverging_ = diverging;
+  scale.palette_ = palette;
   const double step = nice_step(hi - lo, target_bands);
   for (double level = std::floor(lo / step) * step; level < hi + 0.5 * step; level += step)
     scale.boundaries_.push_back(std::abs(level) < 1e-9 * step ? 0.0 : level);
@@ -89,12 +89,13 @@ double ColourScale::display(double value) const {
 
 Rgb ColourScale::band_colour(std::size_t band) const {
   const double lo = boundaries_[band], hi = boundaries_[band + 1];
-  if (diverging_) {
+  if (palette_ == Palette::Diverging) {
     const double extent = std::max(std::abs(boundaries_.front()), std::abs(boundaries_.back()));
     return blue_white_red(0.5 + 0.5 * (0.5 * (lo + hi)) / extent);
   }
   // Sequential bands sample the map at their centres so the end bands are not the extremes.
-  return viridis((static_cast<double>(band) + 0.5) / static_cast<double>(n_bands()));
+  const double t = (static_cast<double>(band) + 0.5) / static_cast<double>(n_bands());
+  return viridis(palette_ == Palette::SequentialDark ? 0.8 * t : t);
 }
 
 std::size_t ColourScale::band_of(double value) const {

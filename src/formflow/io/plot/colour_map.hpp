@@ -20,6 +20,13 @@ Rgb viridis(double t);
 /// `t` is clamped to [0, 1].
 Rgb blue_white_red(double t);
 
+/// Which colour map a scale uses.
+enum class Palette {
+  Sequential,      ///< viridis, for filled areas
+  SequentialDark,  ///< viridis without its palest quarter, for lines and arrows on white
+  Diverging,       ///< blue–white–red, white at zero
+};
+
 /// Filled-contour levels: band k covers [boundaries[k], boundaries[k+1]] and
 /// has one colour. Values outside the first/last boundary are drawn in the end
 /// colours; `extends_below`/`extends_above` say whether the data go there (the
@@ -29,9 +36,9 @@ class ColourScale {
   /// Log-spaced bands at 1-2-5 steps per decade covering [lo, hi], 0 < lo < hi; viridis.
   static ColourScale logarithmic(double lo, double hi);
   /// Linearly spaced bands at a "nice" step (about `target_bands` of them)
-  /// covering [lo, hi]. Diverging: blue–white–red with white at zero and the
-  /// same colour-per-unit on both sides; otherwise viridis.
-  static ColourScale linear(double lo, double hi, int target_bands, bool diverging);
+  /// covering [lo, hi]. Palette::Diverging puts white at zero with the same
+  /// colour-per-unit on both sides.
+  static ColourScale linear(double lo, double hi, int target_bands, Palette palette);
 
   /// Band boundaries in data units, strictly increasing, at least two.
   const std::vector<double>& boundaries() const { return boundaries_; }
@@ -50,7 +57,7 @@ class ColourScale {
  private:
   std::vector<double> boundaries_;
   bool log_ = false;
-  bool diverging_ = false;
+  Palette palette_ = Palette::Sequential;
 };
 
 }  // namespace formflow::io::plot

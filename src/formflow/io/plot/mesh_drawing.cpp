@@ -5,6 +5,7 @@
 #include "formflow/fem/lagrange.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -45,20 +46,28 @@ struct Bands {
   }
 };
 
-void fill_triangle(const Canvas& canvas, const std::vector<Vertex>& triangle, const Bands& bands,
-                   const ColourScale& scale) {
-  const auto [low, high] = std::minmax({triangle[0].value, triangle[1].value, triangle[2].value});
+/// Polygons to fill, per band: each band becomes one path, so the SVG gets one
+/// element per band instead of one per piece, and same-band pieces show no seams.
+using BandPolygons = std::vector<std::vector<std::vector<Pixel>>>;
+
+/// Cuts a small polygon (a sub-quad; the field is taken as linear along its
+/// edges) at the band boundaries it straddles.
+void split_into_bands(const std::vector<Vertex>& polygon, const Bands& bands, BandPolygons& out) {
+  double low = polygon[0].value, high = low;
+  for (const Vertex& v : polygon) {
+    low = std::min(low, v.value);
+    high = std::max(high, v.value);
+  }
   const std::size_t first = bands.band_of(low), last = bands.band_of(high);
-  const std::size_t n = scale.n_bands();
   for (std::size_t band = first; band <= last; ++band) {
-    std::vector<Vertex> piece = triangle;
+    std::vector<Vertex> piece = polygon;
     // The end bands are open so values beyond the scale take the end colours.
     if (band > 0) piece = clip(piece, bands.levels[band], true);
-    if (band + 1 < n && piece.size() >= 3) piece = clip(piece, bands.levels[band + 1], false);
+    if (band + 1 < out.size() && piece.size() >= 3) piece = clip(piece, bands.levels[band + 1], false);
     if (piece.size() < 3) continue;
-    std::vector<Pixel> polygon;
-    for (const Vertex& v : piece) polygon.push_back(v.at);
-    canvas.fill(polygon, scale.band_colour(band), 1.0, true);
+    std::vector<Pixel> pixels;
+    for (const Vertex& v : piece) pixels.push_back(v.at);
+    out[band].push_back(std::move(pixels));
   }
 }
 
@@ -73,22 +82,28 @@ std::vector<Pixel> cell_ring(const std::vector<Pixel>& points, int s) {
   return ring;
 }
 
-/// Typical cell side on screen: the root of the mean cell area in pixels
-/// (an over-estimate for non-convex domains, which only errs towards detail).
-double cell_pixels(const Axes& axes, const mesh::Mesh<2>& mesh) {
-  const Box box = bounding_box(mesh);
-  const double area_px = std::abs((axes.px(box.x1) - axes.px(box.x0)) *
-                                  (axes.py(box.y1) - axes.py(box.y0)));
-  return std::sqrt(area_px / std::max<Index>(mesh.n_cells(), 1));
-}
-
-/// Sub-divisions per cell side: about 5 px per piece, at least 2 for Q2
+/// Sub-divisions per cell side: about 6 px per piece, at least 2 for Q2
 /// (its fields are quadratic), at most 8 so fine meshes do not bloat the SVG.
 int subdivisions_for(const Axes& axes, const mesh::Mesh<2>& mesh) {
-  return std::clamp(static_cast<int>(std::lround(cell_pixels(axes, mesh) / 5.0)), mesh.order, 8);
+  return std::clamp(static_cast<int>(std::lround(cell_pixels(axes, mesh) / 6.0)), mesh.order, 8);
 }
 
 }  // namespace
+
+double cell_pixels(const Axes& axes, const mesh::Mesh<2>& mesh) {
+  Real area = 0.0;
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    // Corner nodes in lexicographic order: 0, n−1, n(n−1), n²−1; shoelace over 0, 1, 3, 2.
+    const int n = mesh.nodes_per_side();
+    const std::array<int, 4> corners = {0, n - 1, n * n - 1, n * (n - 1)};
+    for (int k = 0; k < 4; ++k) {
+      const Index a = mesh.cells(corners[k], cell), b = mesh.cells(corners[(k + 1) % 4], cell);
+      area += 0.5 * (mesh.nodes(0, a) * mesh.nodes(1, b) - mesh.nodes(0, b) * mesh.nodes(1, a));
+    }
+  }
+  const double px_per_unit = std::abs(axes.px(1.0) - axes.px(0.0));
+  return std::sqrt(std::abs(area) / std::max<Index>(mesh.n_cells(), 1)) * px_per_unit;
+}
 
 Box bounding_box(const mesh::Mesh<2>& mesh) {
   if (mesh.n_nodes() == 0) return {};
@@ -136,26 +151,28 @@ void fill_field_bands(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2
   for (const double boundary : scale.boundaries()) bands.levels.push_back(scale.display(boundary));
   const CellSampler sampler(mesh.order, subdivisions_for(axes, mesh));
   const int s = sampler.subdivisions(), side = s + 1;
+  BandPolygons polygons(scale.n_bands());
   std::vector<Pixel> points;
   std::vector<double> values;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     sampler.sample(mesh, cell, nodal, axes, points, values);
     for (double& value : values) value = scale.display(value);
     const auto [low, high] = std::minmax_element(values.begin(), values.end());
-    // Most cells lie inside one band: one polygon instead of 2s² keeps the SVG small.
+    // Most cells lie inside one band: one polygon instead of s² keeps the SVG small.
     if (bands.band_of(*low) == bands.band_of(*high)) {
-      canvas.fill(cell_ring(points, s), scale.band_colour(bands.band_of(*low)), 1.0, true);
+      polygons[bands.band_of(*low)].push_back(cell_ring(points, s));
       continue;
     }
     for (int j = 0; j < s; ++j)
       for (int i = 0; i < s; ++i) {
         const int a = j * side + i, b = a + 1, c = a + side + 1, d = a + side;
-        fill_triangle(canvas, {{points[a], values[a]}, {points[b], values[b]}, {points[c], values[c]}},
-                      bands, scale);
-        fill_triangle(canvas, {{points[a], values[a]}, {points[c], values[c]}, {points[d], values[d]}},
-                      bands, scale);
+        split_into_bands({{points[a], values[a]}, {points[b], values[b]}, {points[c], values[c]},
+                          {points[d], values[d]}},
+                         bands, polygons);
       }
   }
+  for (std::size_t band = 0; band < polygons.size(); ++band)
+    canvas.fill_polygons(polygons[band], scale.band_colour(band), true);
 }
 
 void draw_cell_edges(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh,

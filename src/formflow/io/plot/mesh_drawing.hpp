@@ -20,6 +20,10 @@ struct Box {
 /// Smallest box containing every node.
 Box bounding_box(const mesh::Mesh<2>& mesh);
 
+/// Typical cell side on screen in pixels: the root of the mean cell area
+/// (corner polygon) drawn with the x scale of `axes`.
+double cell_pixels(const Axes& axes, const mesh::Mesh<2>& mesh);
+
 /// Samples a nodal field and the geometry of a cell on a (s+1)×(s+1) grid of
 /// reference points through the cell's own shape functions, so Q2 fields and
 /// curved Q2 cells are drawn as the solver sees them.

@@ -45,7 +45,8 @@ std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mes
                                                           {"convergence", draw_convergence}};
   std::vector<Picture> out;
   for (const auto& [name, draw] : pictures) {
-    const DrawFunction function = [&, draw](Canvas& canvas) { draw(canvas, data); };
+    const DrawPicture picture = draw;
+    const DrawFunction function = [&data, picture](Canvas& canvas) { picture(canvas, data); };
     out.push_back({name, render_png(picture_width, picture_height, function),
                    render_svg(picture_width, picture_height, function)});
   }

@@ -81,12 +81,13 @@ std::string tick_label(double value, double step) {
   return with_minus_sign(fmt::format("{:.{}f}", value, decimals));
 }
 
-std::string log_tick_label(double value) {
+bool log_labels_as_powers(double lo, double hi) { return lo < 0.999e-3 || hi > 1.001e4; }
+
+std::string log_tick_label(double value, bool powers) {
   const int exponent = static_cast<int>(std::lround(std::log10(value)));
   if (std::abs(value - std::pow(10.0, exponent)) > 1e-9 * value)
     return with_minus_sign(fmt::format("{:.3g}", value));
-  if (exponent >= -3 && exponent <= 4)
-    return fmt::format("{:.{}f}", value, std::max(0, -exponent));
+  if (!powers) return fmt::format("{:.{}f}", value, std::max(0, -exponent));
   return "10" + superscript_integer(exponent);
 }
 

@@ -23,7 +23,13 @@ std::vector<double> log_125_levels(double lo, double hi);
 /// Unicode minus, and "1.5×10⁴"-style mantissas for very large or small values.
 std::string tick_label(double value, double step);
 
-/// A log-axis label: plain decimals for 10⁻³ … 10⁴, else "10⁻⁶"-style powers.
-std::string log_tick_label(double value);
+/// Whether a log axis over [lo, hi] labels its ticks as powers ("10⁻⁶"): when
+/// plain decimals would get long (beyond 10⁻³ … 10⁴). One choice per axis, so
+/// "0.01" and "10⁻⁵" never share an axis.
+bool log_labels_as_powers(double lo, double hi);
+
+/// A log-axis label: plain decimals ("0.001", "100") or powers of ten ("10⁻⁶");
+/// values that are not powers of ten get three significant digits either way.
+std::string log_tick_label(double value, bool powers);
 
 }  // namespace formflow::io::plot

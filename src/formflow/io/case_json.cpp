@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// The resolved case as nested JSON, generated from the case-key table.
+#include "formflow/io/case_json.hpp"
+
+#include "formflow/io/case_keys.hpp"
+
+#include <variant>
+
+namespace formflow::io {
+
+nlohmann::json case_to_json(const Case& case_) {
+  nlohmann::json json = nlohmann::json::object();
+  for (const CaseKey& key : case_keys()) {
+    nlohmann::json& slot = json[std::string(key.section())][std::string(key.leaf())];
+    std::visit([&slot](const auto& value) { slot = value; }, key.get(case_));
+  }
+  json["source"] = case_.source;
+  return json;
+}
+
+}  // namespace formflow::io

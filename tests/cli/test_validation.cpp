@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// The formflow binary on bad input: exit code 2, file:line, key and hint on stderr, nothing
+// written.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream stream(path, std::ios::binary);
+  std::ostringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+std::string quoted(const std::string& text) {
+  return "'" + text + "'";
+}
+
+::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
+}
+
+class Validation : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    scratch_ = fs::temp_directory_path() /
+               ("formflow-cli-" + std::string(info->name()) + "-" + std::to_string(getpid()));
+    fs::remove_all(scratch_);
+    fs::create_directories(scratch_);
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  /// Runs the binary with `arguments` (already shell-quoted), capturing both streams.
+  RunResult run(const std::string& arguments) const {
+    const fs::path out = scratch_ / "stdout.txt", err = scratch_ / "stderr.txt";
+    const std::string command = quoted(FORMFLOW_BINARY) + " " + arguments + " > " +
+                                quoted(out.string()) + " 2> " + quoted(err.string());
+    const int status = std::system(command.c_str());
+    RunResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_text(out);
+    result.err = read_text(err);
+    return result;
+  }
+
+  static std::string fixture(const std::string& name) {
+    return (fs::path(FORMFLOW_SOURCE_DIR) / "tests" / "data" / "cases" / name).string();
+  }
+
+  /// An output directory inside the scratch area that does not exist yet.
+  fs::path fresh_output() const { return scratch_ / "results"; }
+
+  fs::path scratch_;
+};
+
+struct BadCase {
+  std::string file;
+  int line;
+  std::string key;
+  std::string hint;
+};
+
+const BadCase bad_cases[] = {
+    {"unknown-key.toml", 5, "friction.mue", "did you mean `friction.mu`?"},
+    {"unknown-section.toml", 5, "frction", "did you mean `[friction]`?"},
+    {"wrong-type.toml", 4, "mesh.size", "expected a real number"},
+    {"negative-mu.toml", 3, "friction.mu", "must be ≥ 0"},
+    {"mesh-size-unfit.toml", 4, "mesh.size", "0.3125 (= 10/32)"},
+    {"bad-element.toml", 3, "mesh.element", "valid values: \"Q1\", \"Q2\""},
+    {"syntax-error.toml", 4, "syntax", "radius = 0.5 0.5"},
+    {"exit-above-entry.toml", 4, "geometry.exit_half_height", "< geometry.entry_half_height"},
+    {"rate-order.toml", 4, "material.rate2", "> material.rate1"},
+};
+
+TEST_F(Validation, RunOnBadInputExitsTwoAndWritesNothing) {
+  for (const BadCase& bad : bad_cases) {
+    SCOPED_TRACE(bad.file);
+    const fs::path output = fresh_output();
+    const std::string path = fixture(bad.file);
+    const RunResult result = run("run " + quoted(path) + " -o " + quoted(output.string()));
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_TRUE(has_text(result.err, "error: " + path + ":" + std::to_string(bad.line) + ": "));
+    EXPECT_TRUE(has_text(result.err, ": " + bad.key + ": "));
+    EXPECT_TRUE(has_text(result.err, bad.hint));
+    EXPECT_FALSE(fs::exists(output)) << "the output directory was created";
+    fs::remove_all(output);
+  }
+}
+
+TEST_F(Validation, ExistingOutputDirectoryStaysEmpty) {
+  const fs::path output = fresh_output();
+  fs::create_directories(output);
+  const RunResult result =
+      run("run " + quoted(fixture("negative-mu.toml")) + " -o " + quoted(output.string()));
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_TRUE(fs::is_empty(output)) << "files were written for a bad case";
+}
+
+TEST_F(Validation, BadOverrideExitsTwoNamingSet) {
+  const fs::path output = fresh_output();
+  const std::string good =
+      (fs::path(FORMFLOW_SOURCE_DIR) / "cases" / "paper-q2-2x2-mesh2.toml").string();
+  const RunResult result =
+      run("run " + quoted(good) + " -o " + quoted(output.string()) + " --set friction.muu=0.1");
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_TRUE(has_text(result.err, "error: --set: friction.muu: unknown key"));
+  EXPECT_TRUE(has_text(result.err, "did you mean `friction.mu`?"));
+  EXPECT_FALSE(fs::exists(output));
+}
+
+TEST_F(Validation, MissingCaseFileExitsTwo) {
+  const std::string missing = (scratch_ / "no-such-case.toml").string();
+  const fs::path output = fresh_output();
+  const RunResult result = run("run " + quoted(missing) + " -o " + quoted(output.string()));
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_TRUE(has_text(result.err, "error: " + missing + ": case file: no such file"));
+  EXPECT_FALSE(fs::exists(output));
+}
+
+TEST_F(Validation, CheckAcceptsAGoodCaseAndRejectsABadOne) {
+  const std::string good =
+      (fs::path(FORMFLOW_SOURCE_DIR) / "cases" / "paper-q2-1x1-mesh1.toml").string();
+  const RunResult valid = run("check " + quoted(good));
+  EXPECT_EQ(valid.exit_code, 0) << valid.err;
+  EXPECT_TRUE(valid.err.empty()) << valid.err;
+  const RunResult invalid = run("check " + quoted(fixture("bad-element.toml")));
+  EXPECT_EQ(invalid.exit_code, 2);
+  EXPECT_TRUE(has_text(invalid.err, fixture("bad-element.toml") + ":3: mesh.element: "));
+  const RunResult overridden = run("check " + quoted(good) + " --set mesh.element=Q3");
+  EXPECT_EQ(overridden.exit_code, 2);
+  EXPECT_TRUE(has_text(overridden.err, "--set: mesh.element: invalid value \"Q3\""));
+}
+
+TEST_F(Validation, CaseReferenceMatchesTheDocs) {
+  const RunResult result = run("case-reference");
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.out, read_text(fs::path(FORMFLOW_SOURCE_DIR) / "docs" / "case-reference.md"))
+      << "regenerate with `build/formflow case-reference > docs/case-reference.md`";
+}
+
+}  // namespace
