@@ -8,7 +8,7 @@
 namespace formflow {
 
 /// A problem with the user's input: which file, line and key, what is wrong,
-/// and what would be valid. Printed as `file:line: key = value: message (hint)`.
+/// and what would be valid. Printed as `file:line: key: message (hint)`.
 struct InputError : std::runtime_error {
   std::string file;     ///< case file path, or "--set" / "<default>"
   int line = 0;         ///< 1-based line in `file`, 0 when unknown

@@ -310,7 +310,7 @@ const std::vector<CaseSection>& case_sections() {
       {"process", "What drives the flow (SPEC §1)."},
       {"geometry", "The half model of the die channel (SPEC §4); lengths are dimensionless."},
       {"mesh", "Uniform square cells of one element kind."},
-      {"integration", "Quadrature of the penalty terms (selective reduced integration, SPEC §3)."},
+      {"integration", "Quadrature of the volumetric penalty term (selective integration, SPEC §3)."},
       {"formulation", "Which form of the a-term is assembled (SPEC §2)."},
       {"material", "Flow law σ_p = A ε̄̇^α on [rate1, rate2], linear through the origin outside "
                    "(paper eq. 5.4)."},

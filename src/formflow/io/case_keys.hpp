@@ -30,9 +30,9 @@ struct Bound {
 
 /// One case-file key: `name` is the dotted name "section.key" (the TOML table
 /// and key, and the `--set` spelling). `choices` lists the valid strings of
-/// an Enum key (in the order of the C++ enumerators) or of the entries of a
-/// StringList key. `constraint` states checks that involve other keys
-/// (applied by load_case after all keys are set).
+/// an Enum key or of the entries of a StringList key. `constraint` states the
+/// checks that involve other keys (applied by load_case after all keys are set).
+/// `unit` is "—" for dimensionless keys; `doc` is one line.
 struct CaseKey {
   std::string_view name;
   KeyType type = KeyType::Real;

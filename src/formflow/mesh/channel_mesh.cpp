@@ -12,6 +12,9 @@ namespace formflow::mesh {
 int cells_along(Real length, Real size) {
   if (!(size > 0) || !(length > 0)) return -1;
   const Real ratio = length / size;
+  // Beyond a million cells along one length the mesh could not be stored
+  // anyway; refusing here also keeps the int conversion defined.
+  if (!(ratio <= 1e6)) return -1;
   const Real rounded = std::round(ratio);
   if (rounded < 1 || std::abs(ratio - rounded) > 1e-9 * std::max<Real>(1.0, ratio)) return -1;
   return static_cast<int>(rounded);

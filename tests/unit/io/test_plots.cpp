@@ -180,13 +180,16 @@ TEST(PlotTicks, NiceNumbersAndLabels) {
   EXPECT_EQ(plot::tick_label(-1.5, 0.5), "−1.5");
   EXPECT_EQ(plot::tick_label(2.0, 0.5), "2.0");
   EXPECT_EQ(plot::tick_label(0.0, 0.5), "0");
-  EXPECT_EQ(plot::log_tick_label(1e-3), "0.001");
-  EXPECT_EQ(plot::log_tick_label(100.0), "100");
-  EXPECT_EQ(plot::log_tick_label(1e-6), "10⁻⁶");
+  EXPECT_EQ(plot::log_tick_label(1e-3, false), "0.001");
+  EXPECT_EQ(plot::log_tick_label(100.0, false), "100");
+  EXPECT_EQ(plot::log_tick_label(1e-6, true), "10⁻⁶");
+  EXPECT_EQ(plot::log_tick_label(0.01, true), "10⁻²");
+  EXPECT_TRUE(plot::log_labels_as_powers(1e-5, 1.0));
+  EXPECT_FALSE(plot::log_labels_as_powers(1e-3, 1e4));
 }
 
 TEST(PlotColours, ScalesAndMaps) {
-  const auto scale = plot::ColourScale::linear(-0.3, 2.9, 12, true);
+  const auto scale = plot::ColourScale::linear(-0.3, 2.9, 12, plot::Palette::Diverging);
   EXPECT_LE(scale.boundaries().front(), -0.3);
   EXPECT_GE(scale.boundaries().back(), 2.9);
   EXPECT_EQ(scale.band_of(-100.0), 0u);

@@ -74,7 +74,7 @@ Axes contact_axes(const std::vector<post::ContactSample>& contact) {
   return Axes(graph_area(),
               Axis{std::min(0.0, contact.front().arc_length), contact.back().arc_length, false, {},
                    "arc length s along Γ_{3}, from the ram end of the container wall"},
-              Axis{low < 0 ? low - pad : 0.0, high + 5 * pad, false, {}, "stress [stress]"});
+              Axis{low < 0 ? low - pad : 0.0, high + 5 * pad, false, {}, "stress [units of σ_{p}]"});
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ const Rgb tolerance_colour{0.75, 0.1, 0.1};
 
 /// Whole iterations only: a fractional tick on an iteration axis is noise.
 Axis iteration_axis(int last) {
-  Axis axis{0.0, std::max(1.0, static_cast<double>(last)), false, {}, "iteration"};
+  // A little room after the last iteration so its marker does not sit on the frame.
+  Axis axis{0.0, std::max(1.0, last + std::max(1.0, 0.03 * last)), false, {}, "iteration"};
   axis.ticks = linear_ticks(axis.lo, axis.hi, 8);
   std::erase_if(axis.ticks, [](double tick) { return tick != std::round(tick); });
   return axis;

@@ -7,7 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
+#include <utility>
+#include <vector>
 
 namespace formflow::io::plot {
 
@@ -205,6 +206,39 @@ void draw_boundary(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& 
       const bool is_symmetry = facet.label == mesh::BoundaryLabel::Symmetry;
       canvas.polyline(points, die_pass ? die : is_symmetry ? symmetry : outline);
     }
+}
+
+void label_contact_parts(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh) {
+  const int n_side = mesh.nodes_per_side();
+  for (const auto& [label, name] : {std::pair{mesh::BoundaryLabel::Container, "container wall"},
+                                    std::pair{mesh::BoundaryLabel::Die, "die"}}) {
+    Point<2> middle = Point<2>::Zero(), normal = Point<2>::Zero();
+    Real length = 0.0;
+    for (const mesh::BoundaryFacet& facet : mesh.facets) {
+      if (facet.label != label) continue;
+      const std::vector<int> nodes = mesh::face_local_nodes<2>(n_side, facet.local_face);
+      const Point<2> first = mesh.nodes.col(mesh.cells(nodes.front(), facet.cell));
+      const Point<2> last = mesh.nodes.col(mesh.cells(nodes.back(), facet.cell));
+      Point<2> centre = Point<2>::Zero();
+      for (int local = 0; local < mesh.nodes_per_cell(); ++local)
+        centre += mesh.nodes.col(mesh.cells(local, facet.cell)) / mesh.nodes_per_cell();
+      const Point<2> tangent = last - first;
+      Point<2> outward(tangent.y(), -tangent.x());
+      if (outward.dot(0.5 * (first + last) - centre) < 0) outward = -outward;
+      middle += 0.5 * (first + last) * tangent.norm();
+      normal += outward;  // |outward| = facet length: a length-weighted mean direction
+      length += tangent.norm();
+    }
+    if (!(length > 0)) continue;
+    middle /= length;
+    normal.normalize();
+    // Screen y points down.
+    const Pixel at{axes.px(middle.x()) + 10.0 * normal.x(), axes.py(middle.y()) - 10.0 * normal.y()};
+    const bool sideways = std::abs(normal.x()) > std::abs(normal.y());
+    const HAlign h = !sideways ? HAlign::Centre : normal.x() > 0 ? HAlign::Left : HAlign::Right;
+    const VAlign v = sideways ? VAlign::Middle : normal.y() > 0 ? VAlign::Bottom : VAlign::Top;
+    canvas.text(at, name, Font{12.0, true, {0.08, 0.08, 0.08}}, h, v);
+  }
 }
 
 }  // namespace formflow::io::plot

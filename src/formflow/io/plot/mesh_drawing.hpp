@@ -55,4 +55,8 @@ void draw_cell_edges(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>
 /// `container` and `die` facets — as a thick dark line.
 void draw_boundary(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh);
 
+/// Names the contact parts ("container wall", "die") just outside the middle
+/// of each, so the thick line reads as tooling, not as part of the field.
+void label_contact_parts(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh);
+
 }  // namespace formflow::io::plot

@@ -46,8 +46,9 @@ void draw_pressure(const Canvas& canvas, const PictureData& data) {
   fill_field_bands(canvas, layout.axes, data.mesh, pressure, scale);
   draw_cell_edges(canvas, layout.axes, data.mesh, {0.5, {0.2, 0.2, 0.2}, 0.15});
   draw_boundary(canvas, layout.axes, data.mesh);
-  layout.axes.draw(canvas, false);
-  draw_colour_bar(canvas, layout.colour_bar, scale, "hydrostatic pressure p = −σ_{H} [stress]");
+  layout.axes.draw_spines(canvas, 8.0);
+  label_contact_parts(canvas, layout.axes, data.mesh);
+  draw_colour_bar(canvas, layout.colour_bar, scale, "hydrostatic pressure p = −σ_{H} [units of σ_{p}]");
 }
 
 }  // namespace formflow::io::plot

@@ -62,7 +62,8 @@ void draw_strain_rate(const Canvas& canvas, const PictureData& data) {
   fill_field_bands(canvas, layout.axes, data.mesh, rate, scale);
   draw_cell_edges(canvas, layout.axes, data.mesh, {0.5, {1, 1, 1}, 0.3});
   draw_boundary(canvas, layout.axes, data.mesh);
-  layout.axes.draw(canvas, false);
+  layout.axes.draw_spines(canvas, 8.0);
+  label_contact_parts(canvas, layout.axes, data.mesh);
   mark_maximum(canvas, layout.axes, data.mesh, rate);
   draw_colour_bar(canvas, layout.colour_bar, scale,
                   "equivalent strain rate ε\u0304\u0307 [1/time]");
