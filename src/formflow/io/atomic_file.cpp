@@ -25,7 +25,7 @@ namespace {
 /// Removes the temporary file unless released; errors are swallowed because
 /// this runs while another exception is already on its way out.
 class TemporaryGuard {
- public:
+public:
   explicit TemporaryGuard(std::filesystem::path path) : path_(std::move(path)) {}
   ~TemporaryGuard() {
     if (armed_) {
@@ -37,7 +37,7 @@ class TemporaryGuard {
   TemporaryGuard& operator=(const TemporaryGuard&) = delete;
   void release() { armed_ = false; }
 
- private:
+private:
   std::filesystem::path path_;
   bool armed_ = true;
 };
@@ -47,7 +47,7 @@ class TemporaryGuard {
   throw std::runtime_error("cannot write " + path.string() + ": " + reason);
 }
 
-}  // namespace
+} // namespace
 
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& writer) {
@@ -56,19 +56,22 @@ void write_file_atomically(const std::filesystem::path& path,
   {
     errno = 0;
     std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
-    if (!stream) fail_writing(temporary, errno);
+    if (!stream)
+      fail_writing(temporary, errno);
     writer(stream);
     stream.flush();
     // Checked before close() too: a full disk shows up here, and a failed close is caught below.
-    if (!stream) fail_writing(temporary, errno);
+    if (!stream)
+      fail_writing(temporary, errno);
     stream.close();
-    if (!stream) fail_writing(temporary, errno);
+    if (!stream)
+      fail_writing(temporary, errno);
   }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error)
-    throw std::runtime_error("cannot rename " + temporary.string() + " to " + path.string() +
-                             ": " + error.message());
+    throw std::runtime_error("cannot rename " + temporary.string() + " to " + path.string() + ": " +
+                             error.message());
   guard.release();
 }
 
@@ -78,4 +81,4 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   });
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -25,4 +25,4 @@ void write_file_atomically(const std::filesystem::path& path,
 /// Same, for contents that are already in memory (text or bytes).
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -23,8 +23,8 @@ void append_reals(std::string& out, std::string_view file, std::size_t row,
                   std::initializer_list<std::pair<std::string_view, Real>> columns) {
   for (const auto& [name, value] : columns) {
     if (!std::isfinite(value))
-      throw InternalError(fmt::format("{}: row {} column {} is not finite ({})", file, row, name,
-                                      value));
+      throw InternalError(
+          fmt::format("{}: row {} column {} is not finite ({})", file, row, name, value));
     fmt::format_to(std::back_inserter(out), ",{:.10g}", value);
   }
 }
@@ -32,13 +32,16 @@ void append_reals(std::string& out, std::string_view file, std::size_t row,
 std::string_view part_name(int part) {
   // ContactSample::part counts from Container in mesh::BoundaryLabel order.
   switch (part) {
-    case 0: return mesh::label_name(mesh::BoundaryLabel::Container);
-    case 1: return mesh::label_name(mesh::BoundaryLabel::Die);
-    default: throw InternalError(fmt::format("contact.csv: unknown contact part {}", part));
+  case 0:
+    return mesh::label_name(mesh::BoundaryLabel::Container);
+  case 1:
+    return mesh::label_name(mesh::BoundaryLabel::Die);
+  default:
+    throw InternalError(fmt::format("contact.csv: unknown contact part {}", part));
   }
 }
 
-}  // namespace
+} // namespace
 
 std::string history_csv(std::span<const solvers::IterationRecord> history) {
   std::string out = "iteration,relative_change,pressure,seconds\n";
@@ -76,4 +79,4 @@ std::string contact_csv(std::span<const post::ContactSample> contact) {
   return out;
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

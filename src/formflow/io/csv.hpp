@@ -21,4 +21,4 @@ std::string history_csv(std::span<const solvers::IterationRecord> history);
 /// Throws InternalError naming row and column if a value is not finite.
 std::string contact_csv(std::span<const post::ContactSample> contact);
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -17,12 +17,14 @@ namespace formflow::io {
 
 namespace {
 
-using nlohmann::json;
+/// Keys in insertion order, so the file opens with the outcome and the
+/// pressures and ends with the long history and the case.
+using json = nlohmann::ordered_json;
 
 /// nlohmann-json would write NaN/Inf as null, which reads back as "no value";
 /// the solver never hands out non-finite numbers, so one here is a bug.
-void require_finite(const json& value, const std::string& key) {
-  if (value.is_number_float() && !std::isfinite(value.get<double>()))
+template <typename Json> void require_finite(const Json& value, const std::string& key) {
+  if (value.is_number_float() && !std::isfinite(value.template get<double>()))
     throw InternalError("summary.json: " + key + " is not finite");
   if (value.is_object())
     for (const auto& [name, item] : value.items())
@@ -56,9 +58,19 @@ json power_json(const post::PowerTerms& power) {
 json timing_json(const PhaseTimes& timing) {
   json out = json::object();
   // The phases every run has are always present, so readers need no defaults.
-  for (const char* phase : {"total", "assembly", "factorization", "solve"}) out[phase] = 0.0;
-  for (const auto& [phase, seconds] : timing.all()) out[phase] = seconds;
+  for (const char* phase : {"total", "assembly", "factorization", "solve"})
+    out[phase] = 0.0;
+  for (const auto& [phase, seconds] : timing.all())
+    out[phase] = seconds;
   return out;
+}
+
+/// The case as ordered JSON. Checked before the conversion: the text round
+/// trip would turn a NaN into null and hide it from the final check.
+json case_json(const Case& case_) {
+  const nlohmann::json resolved = case_to_json(case_);
+  require_finite(resolved, "case");
+  return json::parse(resolved.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
 json summary_document(const Case& case_, const post::Results& results) {
@@ -68,26 +80,26 @@ json summary_document(const Case& case_, const post::Results& results) {
     history_pressure.push_back(record.pressure);
   }
   json out = json::object();
+  out["formflow_version"] = FORMFLOW_VERSION;
   out["converged"] = results.converged();
   out["stop_reason"] = std::string(solvers::stop_reason_name(results.stop_reason));
   out["iterations"] = results.iterations;
+  out["pressure"] = pressure_json(case_, results);
+  out["power"] = power_json(results.power);
+  out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;
   out["mesh"] = {{"elements", results.n_cells},
                  {"nodes", results.n_nodes},
                  {"dofs", results.n_dofs},
                  {"element", std::string(fem::element_name(case_.element))},
                  {"size", case_.mesh_size}};
-  out["pressure"] = pressure_json(case_, results);
-  out["power"] = power_json(results.power);
-  out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;
+  out["timing_s"] = timing_json(results.timing);
   out["history"] = std::move(history);
   out["history_pressure"] = std::move(history_pressure);
-  out["timing_s"] = timing_json(results.timing);
-  out["case"] = case_to_json(case_);
-  out["formflow_version"] = FORMFLOW_VERSION;
+  out["case"] = case_json(case_);
   return out;
 }
 
-}  // namespace
+} // namespace
 
 std::string summary_json(const Case& case_, const post::Results& results) {
   const json document = summary_document(case_, results);
@@ -96,4 +108,4 @@ std::string summary_json(const Case& case_, const post::Results& results) {
   return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

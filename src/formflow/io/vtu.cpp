@@ -6,9 +6,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <string_view>
+#include <utility>
 
 namespace formflow::io {
 
@@ -43,11 +45,18 @@ void check_finite(std::string_view name, const VectorX& values) {
       throw InternalError(fmt::format("fields.vtu: {}[{}] is not finite", name, i));
 }
 
+/// What goes before item `i` of a list written `per_line` items to a line.
+const char* separator(Index i, Index per_line) {
+  if (i % per_line != 0)
+    return " ";
+  return i == 0 ? "          " : "\n          ";
+}
+
 /// One Float64 data array; `sign` flips it (σ_H → −σ_H) without a copy.
 void scalar_array(Out out, std::string_view name, const VectorX& values, Real sign = 1.0) {
   fmt::format_to(out, "        <DataArray type=\"Float64\" Name=\"{}\" format=\"ascii\">\n", name);
   for (Index i = 0; i < values.size(); ++i)
-    fmt::format_to(out, "{}{}", i % 6 == 0 ? "          " : " ", sign * values[i] + 0.0);
+    fmt::format_to(out, "{}{}", separator(i, 6), sign * values[i] + 0.0);
   // `+ 0.0` turns −0 into 0, so a zero field never reads as "-0".
   fmt::format_to(out, "\n        </DataArray>\n");
 }
@@ -67,19 +76,19 @@ void cells_section(Out out, const mesh::Mesh<2>& mesh) {
                       "format=\"ascii\">\n");
   for (Index c = 0; c < mesh.n_cells(); ++c) {
     fmt::format_to(out, "         ");
-    for (const int local : order) fmt::format_to(out, " {}", mesh.cells(local, c));
+    for (const int local : order)
+      fmt::format_to(out, " {}", mesh.cells(local, c));
     fmt::format_to(out, "\n");
   }
   fmt::format_to(out, "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
                       "format=\"ascii\">\n");
   for (Index c = 0; c < mesh.n_cells(); ++c)
-    fmt::format_to(out, "{}{}", c % 10 == 0 ? (c ? "\n          " : "          ") : " ",
-                   static_cast<long long>(c + 1) * per_cell);
+    fmt::format_to(out, "{}{}", separator(c, 10), static_cast<long long>(c + 1) * per_cell);
   fmt::format_to(out, "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
                       "format=\"ascii\">\n");
   const int type = vtk_cell_type(mesh.order);
   for (Index c = 0; c < mesh.n_cells(); ++c)
-    fmt::format_to(out, "{}{}", c % 20 == 0 ? (c ? "\n          " : "          ") : " ", type);
+    fmt::format_to(out, "{}{}", separator(c, 20), type);
   fmt::format_to(out, "\n        </DataArray>\n      </Cells>\n");
 }
 
@@ -106,7 +115,7 @@ void cell_data_section(Out out, const mesh::Mesh<2>& mesh, const post::Fields& f
   scalar_array(out, "hydrostatic_pressure", fields.cell_hydrostatic_stress, -1.0);
   fmt::format_to(out, "        <DataArray type=\"Int64\" Name=\"cell_id\" format=\"ascii\">\n");
   for (Index c = 0; c < mesh.n_cells(); ++c)
-    fmt::format_to(out, "{}{}", c % 10 == 0 ? (c ? "\n          " : "          ") : " ", c);
+    fmt::format_to(out, "{}{}", separator(c, 10), c);
   fmt::format_to(out, "\n        </DataArray>\n      </CellData>\n");
 }
 
@@ -125,7 +134,8 @@ void check_fields(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
   check_size("cell hydrostatic_stress", static_cast<Index>(fields.cell_hydrostatic_stress.size()),
              n_cells);
   check_finite("velocity", fields.velocity);
-  for (const auto& [name, values] : nodal) check_finite(name, *values);
+  for (const auto& [name, values] : nodal)
+    check_finite(name, *values);
   check_finite("cell equivalent_strain_rate", fields.cell_equivalent_strain_rate);
   check_finite("cell hydrostatic_stress", fields.cell_hydrostatic_stress);
   for (Index n = 0; n < mesh.n_nodes(); ++n)
@@ -133,17 +143,21 @@ void check_fields(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
       throw InternalError(fmt::format("fields.vtu: node {} has a non-finite coordinate", n));
 }
 
-}  // namespace
+} // namespace
 
 int vtk_cell_type(int order) {
-  if (order == 1) return 9;
-  if (order == 2) return 28;
+  if (order == 1)
+    return 9;
+  if (order == 2)
+    return 28;
   throw InternalError(fmt::format("fields.vtu: no VTK cell type for order {}", order));
 }
 
 std::span<const int> vtk_node_order(int order) {
-  if (order == 1) return vtk_from_q1;
-  if (order == 2) return vtk_from_q2;
+  if (order == 1)
+    return vtk_from_q1;
+  if (order == 2)
+    return vtk_from_q2;
   throw InternalError(fmt::format("fields.vtu: no VTK node order for order {}", order));
 }
 
@@ -153,11 +167,12 @@ std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
   check_fields(mesh, fields);
   std::string text;
   Out out(text);
-  fmt::format_to(out, "<?xml version=\"1.0\"?>\n"
-                      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-                      "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-                      "  <UnstructuredGrid>\n"
-                      "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+  fmt::format_to(out,
+                 "<?xml version=\"1.0\"?>\n"
+                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+                 "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+                 "  <UnstructuredGrid>\n"
+                 "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
                  mesh.n_nodes(), mesh.n_cells());
   points_section(out, mesh);
   cells_section(out, mesh);
@@ -167,4 +182,4 @@ std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
   return text;
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -27,4 +27,4 @@ std::span<const int> vtk_node_order(int order);
 /// Throws InternalError if a field has the wrong size or a non-finite value.
 std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields);
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -55,7 +55,9 @@ TEST_P(GaussRule, OneDimensionalPointsAreAscendingSymmetricAndInside) {
     EXPECT_GT(points[q], -1.0);
     EXPECT_LT(points[q], 1.0);
     EXPECT_GT(weights[q], 0.0);
-    if (q > 0) EXPECT_LT(points[q - 1], points[q]);
+    if (q > 0) {
+      EXPECT_LT(points[q - 1], points[q]);
+    }
     // Legendre roots are symmetric about 0; closed forms give it to round-off.
     EXPECT_TRUE(approx(points[q], -points[n - 1 - q], 0.0, 1e-15));
     EXPECT_TRUE(approx(weights[q], weights[n - 1 - q], 0.0, 1e-15));

@@ -15,11 +15,12 @@ namespace formflow::testing {
 namespace {
 
 class AtomicFile : public ::testing::Test {
- protected:
+protected:
   void SetUp() override {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = std::filesystem::temp_directory_path() /
-                 ("formflow_atomic_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
+    directory_ =
+        std::filesystem::temp_directory_path() /
+        ("formflow_atomic_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(directory_);
     std::filesystem::create_directories(directory_);
   }
@@ -60,8 +61,9 @@ TEST_F(AtomicFile, WriterThrowingMidwayLeavesNoFileAndNoTemporary) {
                                            stream << "iteration,relative_change\n1,0.5\n";
                                            stream.flush();
                                            // The temporary really exists with data at this point.
-                                           wrote_something = std::filesystem::file_size(
-                                               io::temporary_path(directory_ / "broken.csv")) > 0;
+                                           wrote_something =
+                                               std::filesystem::file_size(io::temporary_path(
+                                                   directory_ / "broken.csv")) > 0;
                                            throw std::runtime_error("solver exploded");
                                          }),
                std::runtime_error);
@@ -83,7 +85,8 @@ TEST_F(AtomicFile, WriterThrowingKeepsThePreviousFile) {
 }
 
 TEST_F(AtomicFile, MissingDirectoryThrowsAndCreatesNothing) {
-  EXPECT_THROW(io::write_file_atomically(directory_ / "missing" / "x.txt", "x"), std::runtime_error);
+  EXPECT_THROW(io::write_file_atomically(directory_ / "missing" / "x.txt", "x"),
+               std::runtime_error);
   EXPECT_TRUE(entries().empty());
 }
 
@@ -93,5 +96,5 @@ TEST_F(AtomicFile, TemporaryNameIsBesideTheTargetWithThePid) {
   EXPECT_EQ(temporary.filename().string(), "fields.vtu.tmp." + std::to_string(::getpid()));
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

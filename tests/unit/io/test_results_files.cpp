@@ -29,7 +29,8 @@ namespace {
 /// the exit, shrinking smoothly along the dead-metal boundary x ∈ [5, 10].
 double channel_height(double x, double* slope) {
   const double t = std::clamp((x - 5.0) / 5.0, 0.0, 1.0);
-  if (slope) *slope = (x > 5.0 && x < 10.0) ? -5.0 * (6.0 * t - 6.0 * t * t) / 5.0 : 0.0;
+  if (slope)
+    *slope = (x > 5.0 && x < 10.0) ? -5.0 * (6.0 * t - 6.0 * t * t) / 5.0 : 0.0;
   return 10.0 - 5.0 * (3.0 * t * t - 2.0 * t * t * t);
 }
 
@@ -52,7 +53,7 @@ void fill_fields(const mesh::Mesh<2>& mesh, post::Fields& fields) {
     const bool flowing = y <= h + 1e-12;
     fields.velocity[2 * node] = flowing ? 10.0 / h : 0.0;
     fields.velocity[2 * node + 1] = flowing ? -10.0 * y * slope / (h * h) : 0.0;
-    const double band = std::abs(x + y - 15.0) / std::sqrt(2.0);  // distance to the shear line
+    const double band = std::abs(x + y - 15.0) / std::sqrt(2.0); // distance to the shear line
     const double corner = std::hypot(x - 10.0, y - 5.0);
     const double plastic = std::exp(-band * band / 2.0) * (1.0 + 3.0 / (1.0 + 4.0 * corner));
     fields.equivalent_strain_rate[node] = 1e-3 + (flowing ? plastic : 0.02 * plastic * 1e-2);
@@ -97,7 +98,7 @@ std::vector<post::ContactSample> contact_samples() {
   return samples;
 }
 
-}  // namespace
+} // namespace
 
 /// A complete, realistic-looking run on the benchmark channel (also used by
 /// test_vtu.cpp and test_plots.cpp, which declare it).
@@ -113,8 +114,8 @@ void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& 
   results.stop_reason = solvers::StopReason::Converged;
   results.iterations = 27;
   for (int i = 1; i <= 27; ++i)
-    results.history.push_back({i, 0.8 * std::pow(0.7, i - 1), 2.6 + 0.5 * std::pow(0.7, i),
-                               0.01 * i + 1.0 / 3.0});
+    results.history.push_back(
+        {i, 0.8 * std::pow(0.7, i - 1), 2.6 + 0.5 * std::pow(0.7, i), 0.01 * i + 1.0 / 3.0});
   results.n_cells = mesh.n_cells();
   results.n_nodes = mesh.n_nodes();
   results.n_dofs = 2 * mesh.n_nodes();
@@ -157,14 +158,15 @@ std::vector<std::vector<std::string>> read_csv(const std::string& text) {
   for (std::string line; std::getline(lines, line);) {
     std::vector<std::string> cells;
     std::istringstream fields(line);
-    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    for (std::string cell; std::getline(fields, cell, ',');)
+      cells.push_back(cell);
     rows.push_back(cells);
   }
   return rows;
 }
 
 class ResultsFiles : public ::testing::Test {
- protected:
+protected:
   void SetUp() override { make_synthetic_run(2, 1.0, case_, mesh_, results_); }
   io::Case case_;
   mesh::Mesh<2> mesh_;
@@ -188,7 +190,7 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   EXPECT_EQ(pressure.at("power_balance"), 2.598);
   EXPECT_EQ(pressure.at("total_power"), 2.6121);
   EXPECT_EQ(pressure.at("mean_hydrostatic_near_ram"), 2.71);
-  EXPECT_FALSE(pressure.contains("drawing_stress"));  // extrusion
+  EXPECT_FALSE(pressure.contains("drawing_stress")); // extrusion
   const auto& power = summary.at("power");
   EXPECT_EQ(power.at("plastic_dissipation"), 25.98);
   EXPECT_EQ(power.at("viscous_form"), 26.01);
@@ -207,7 +209,7 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   EXPECT_EQ(timing.at("total"), 1.5);
   EXPECT_EQ(timing.at("assembly"), 0.7);
   EXPECT_EQ(timing.at("mesh"), 0.01);
-  EXPECT_EQ(timing.at("factorization"), 0.0);  // absent phases are present as 0
+  EXPECT_EQ(timing.at("factorization"), 0.0); // absent phases are present as 0
   EXPECT_EQ(timing.at("solve"), 0.0);
   EXPECT_EQ(summary.at("case"), io::case_to_json(case_));
   EXPECT_EQ(summary.at("formflow_version"), FORMFLOW_VERSION);
@@ -242,6 +244,15 @@ TEST_F(ResultsFiles, NonFiniteSummaryValueThrowsNamingTheKey) {
   results_.pressure.total_power = 1.0;
   results_.history[3].pressure = std::numeric_limits<double>::infinity();
   EXPECT_THROW(io::summary_json(case_, results_), InternalError);
+  results_.history[3].pressure = 1.0;
+  case_.material.alpha = std::numeric_limits<double>::quiet_NaN(); // inside the "case" object
+  try {
+    io::summary_json(case_, results_);
+    FAIL() << "no exception";
+  } catch (const InternalError& error) {
+    EXPECT_NE(std::string(error.what()).find("case.material.alpha"), std::string::npos)
+        << error.what();
+  }
 }
 
 TEST_F(ResultsFiles, NonFiniteValueLeavesNoFilesBehind) {
@@ -249,7 +260,7 @@ TEST_F(ResultsFiles, NonFiniteValueLeavesNoFilesBehind) {
   results_.power.friction = std::numeric_limits<double>::infinity();
   EXPECT_THROW(io::write_results(scratch.path.string(), case_, mesh_, results_), InternalError);
   EXPECT_FALSE(std::filesystem::exists(scratch.path / "summary.json"));
-  EXPECT_TRUE(scratch.entries().empty());  // no other file and no temporary either
+  EXPECT_TRUE(scratch.entries().empty()); // no other file and no temporary either
 }
 
 TEST_F(ResultsFiles, WriteResultsWritesExactlyTheListedFiles) {
@@ -272,7 +283,8 @@ TEST_F(ResultsFiles, WriteResultsWritesExactlyTheListedFiles) {
 TEST_F(ResultsFiles, HistoryCsvRoundTrips) {
   const auto rows = read_csv(io::history_csv(results_.history));
   ASSERT_EQ(rows.size(), results_.history.size() + 1);
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"iteration", "relative_change", "pressure", "seconds"}));
+  EXPECT_EQ(rows[0],
+            (std::vector<std::string>{"iteration", "relative_change", "pressure", "seconds"}));
   for (std::size_t i = 0; i < results_.history.size(); ++i) {
     const auto& record = results_.history[i];
     ASSERT_EQ(rows[i + 1].size(), 4u);
@@ -305,7 +317,7 @@ TEST_F(ResultsFiles, ContactCsvRoundTrips) {
   }
   EXPECT_EQ(rows[1][7], "container");
   EXPECT_EQ(rows.back()[7], "die");
-  EXPECT_EQ(rows[23][6], "stick");  // s = 11.25, inside the sticking dead zone
+  EXPECT_EQ(rows[23][6], "stick"); // s = 11.25, inside the sticking dead zone
 }
 
 TEST_F(ResultsFiles, NonFiniteCsvValueThrowsNamingRowAndColumn) {
@@ -327,5 +339,5 @@ TEST_F(ResultsFiles, EmptyTablesHaveOnlyTheHeader) {
             "s,x,y,contact_pressure,friction_stress,slip_velocity,state,part\n");
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -34,7 +34,8 @@ nlohmann::json read_with_vtk(const std::string& vtu, const std::string& name) {
   const auto file = directory / ("formflow_" + name + "_" + std::to_string(::getpid()) + ".vtu");
   const auto errors = std::filesystem::path(file).replace_extension(".stderr");
   std::ofstream(file, std::ios::binary) << vtu;
-  const std::string command = "/usr/bin/python3 " FORMFLOW_SOURCE_DIR "/tests/support/read_vtu.py " +
+  const std::string command = "/usr/bin/python3 " FORMFLOW_SOURCE_DIR
+                              "/tests/support/read_vtu.py " +
                               file.string() + " 2>" + errors.string();
   std::string output;
   int status = -1;
@@ -50,7 +51,8 @@ nlohmann::json read_with_vtk(const std::string& vtu, const std::string& name) {
   std::filesystem::remove(file);
   std::filesystem::remove(errors);
   EXPECT_EQ(status, 0) << command << "\n" << stderr_text;
-  if (status != 0) return nlohmann::json::object();
+  if (status != 0)
+    return nlohmann::json::object();
   return nlohmann::json::parse(output);
 }
 
@@ -70,10 +72,11 @@ double coordinate(const nlohmann::json& points, int id, int axis) {
 }
 
 class VtuReadBack : public ::testing::TestWithParam<int> {
- protected:
+protected:
   void SetUp() override {
     make_synthetic_run(GetParam(), 1.0, case_, mesh_, results_);
-    seen_ = read_with_vtk(io::fields_vtu(mesh_, results_.fields), "vtu_q" + std::to_string(GetParam()));
+    seen_ =
+        read_with_vtk(io::fields_vtu(mesh_, results_.fields), "vtu_q" + std::to_string(GetParam()));
     ASSERT_TRUE(seen_.contains("n_points"));
   }
   io::Case case_;
@@ -86,7 +89,8 @@ TEST_P(VtuReadBack, PointsCellsAndTypes) {
   ASSERT_EQ(seen_["n_points"], mesh_.n_nodes());
   ASSERT_EQ(seen_["n_cells"], mesh_.n_cells());
   const int expected_type = GetParam() == 2 ? 28 : 9;
-  for (const auto& type : seen_["cell_types"]) EXPECT_EQ(type, expected_type);
+  for (const auto& type : seen_["cell_types"])
+    EXPECT_EQ(type, expected_type);
   for (Index n = 0; n < mesh_.n_nodes(); ++n) {
     EXPECT_EQ(coordinate(seen_["points"], n, 0), mesh_.nodes(0, n));
     EXPECT_EQ(coordinate(seen_["points"], n, 1), mesh_.nodes(1, n));
@@ -102,7 +106,8 @@ TEST_P(VtuReadBack, CellNodeOrderIsVtks) {
     EXPECT_GT(twice_signed_area(points, ids, 4), 0.0) << "cell " << c << " corners not ccw";
     // Corner 0 is the lower-left one: VTK's first corner is our lexicographic node 0.
     EXPECT_EQ(ids[0], mesh_.cells(0, c));
-    if (GetParam() != 2) continue;
+    if (GetParam() != 2)
+      continue;
     for (int axis = 0; axis < 2; ++axis) {
       // Points 4..7 are the mid-points of edges 0-1, 1-2, 2-3, 3-0; point 8 the centre.
       for (int edge = 0; edge < 4; ++edge) {
@@ -112,7 +117,8 @@ TEST_P(VtuReadBack, CellNodeOrderIsVtks) {
             << "cell " << c << " edge " << edge;
       }
       double centre = 0.0;
-      for (int corner = 0; corner < 4; ++corner) centre += 0.25 * coordinate(points, ids[corner], axis);
+      for (int corner = 0; corner < 4; ++corner)
+        centre += 0.25 * coordinate(points, ids[corner], axis);
       EXPECT_TRUE(approx(coordinate(points, ids[8], axis), centre, 0.0, 1e-12)) << "cell " << c;
     }
   }
@@ -147,7 +153,8 @@ TEST_P(VtuReadBack, CellDataMatchesTheFields) {
     EXPECT_EQ(data["cell_id"]["values"][c].get<double>(), c);
     EXPECT_EQ(data["equivalent_strain_rate"]["values"][c].get<double>(),
               fields.cell_equivalent_strain_rate[c]);
-    EXPECT_EQ(data["hydrostatic_stress"]["values"][c].get<double>(), fields.cell_hydrostatic_stress[c]);
+    EXPECT_EQ(data["hydrostatic_stress"]["values"][c].get<double>(),
+              fields.cell_hydrostatic_stress[c]);
     EXPECT_EQ(data["hydrostatic_pressure"]["values"][c].get<double>(),
               -fields.cell_hydrostatic_stress[c]);
   }
@@ -195,5 +202,5 @@ TEST(VtuGuards, NonFiniteOrMissizedFieldsThrow) {
   EXPECT_NO_THROW(io::fields_vtu(mesh, results.fields));
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -18,14 +18,17 @@ const Stroke grid_stroke{1.0, {0.85, 0.85, 0.85}};
 
 void complete(Axis& axis) {
   if (axis.log) {
-    if (!(axis.lo > 0)) axis.lo = axis.hi > 0 ? axis.hi * 1e-3 : 1e-3;
-    if (!(axis.hi > axis.lo)) axis.hi = axis.lo * 10.0;
+    if (!(axis.lo > 0))
+      axis.lo = axis.hi > 0 ? axis.hi * 1e-3 : 1e-3;
+    if (!(axis.hi > axis.lo))
+      axis.hi = axis.lo * 10.0;
   } else if (!(axis.hi > axis.lo)) {
     const double half = std::max(std::abs(axis.lo) * 0.1, 1.0);
     axis.lo -= half;
     axis.hi += half;
   }
-  if (!axis.ticks.empty()) return;
+  if (!axis.ticks.empty())
+    return;
   if (!axis.log) {
     axis.ticks = linear_ticks(axis.lo, axis.hi, 6);
     return;
@@ -48,7 +51,8 @@ double fraction(const Axis& axis, double value) {
 }
 
 std::string label_of(const Axis& axis, double value) {
-  if (axis.log) return log_tick_label(value, log_labels_as_powers(axis.lo, axis.hi));
+  if (axis.log)
+    return log_tick_label(value, log_labels_as_powers(axis.lo, axis.hi));
   const double step = axis.ticks.size() > 1 ? axis.ticks[1] - axis.ticks[0] : std::abs(value);
   return tick_label(value, step > 0 ? step : 1.0);
 }
@@ -60,7 +64,8 @@ std::vector<double> minor_log_ticks(const Axis& axis) {
        k <= static_cast<int>(std::ceil(std::log10(axis.hi))); ++k)
     for (int m = 2; m <= 9; ++m) {
       const double value = m * std::pow(10.0, k);
-      if (value > axis.lo && value < axis.hi) ticks.push_back(value);
+      if (value > axis.lo && value < axis.hi)
+        ticks.push_back(value);
     }
   return ticks;
 }
@@ -72,15 +77,19 @@ double widest_label(const Canvas& canvas, const Axis& axis) {
   return widest;
 }
 
-}  // namespace
+} // namespace
 
 Axes::Axes(const Rect& area, Axis x, Axis y) : area_(area), x_(std::move(x)), y_(std::move(y)) {
   complete(x_);
   complete(y_);
 }
 
-double Axes::px(double x) const { return area_.x + fraction(x_, x) * area_.width; }
-double Axes::py(double y) const { return area_.bottom() - fraction(y_, y) * area_.height; }
+double Axes::px(double x) const {
+  return area_.x + fraction(x_, x) * area_.width;
+}
+double Axes::py(double y) const {
+  return area_.bottom() - fraction(y_, y) * area_.height;
+}
 
 void Axes::draw(const Canvas& canvas, bool grid) const {
   if (grid) {
@@ -136,8 +145,8 @@ void Axes::draw_right(const Canvas& canvas, const Rgb& colour) const {
   Font label = label_font;
   label.colour = colour;
   const double label_x = area_.right() + 14 + widest_label(canvas, y_);
-  canvas.text({label_x, area_.y + 0.5 * area_.height}, y_.label, label, HAlign::Centre,
-              VAlign::Top, 90.0);
+  canvas.text({label_x, area_.y + 0.5 * area_.height}, y_.label, label, HAlign::Centre, VAlign::Top,
+              90.0);
 }
 
 Axes equal_aspect_axes(const Rect& area, double x0, double x1, double y0, double y1) {
@@ -148,13 +157,17 @@ Axes equal_aspect_axes(const Rect& area, double x0, double x1, double y0, double
   return Axes(fitted, Axis{x0, x1, false, {}, "x"}, Axis{y0, y1, false, {}, "y"});
 }
 
-void draw_legend(const Canvas& canvas, Pixel top_right, std::span<const LegendEntry> entries) {
-  if (entries.empty()) return;
+void draw_legend(const Canvas& canvas, Pixel corner, std::span<const LegendEntry> entries,
+                 HAlign side) {
+  if (entries.empty())
+    return;
   const double row = 20.0, sample = 30.0, pad = 8.0;
   double widest = 0.0;
-  for (const auto& entry : entries) widest = std::max(widest, canvas.text_width(entry.label, tick_font));
-  const Rect box{top_right[0] - (2 * pad + sample + 8 + widest), top_right[1],
-                 2 * pad + sample + 8 + widest, 2 * pad + row * static_cast<double>(entries.size()) - 4};
+  for (const auto& entry : entries)
+    widest = std::max(widest, canvas.text_width(entry.label, tick_font));
+  const double width = 2 * pad + sample + 8 + widest;
+  const Rect box{side == HAlign::Left ? corner[0] : corner[0] - width, corner[1], width,
+                 2 * pad + row * static_cast<double>(entries.size()) - 4};
   canvas.fill_rect(box, {1, 1, 1}, 0.9);
   canvas.stroke_rect(box, {1.0, {0.7, 0.7, 0.7}});
   for (std::size_t i = 0; i < entries.size(); ++i) {
@@ -176,4 +189,4 @@ void draw_no_data(const Canvas& canvas, const Rect& area, std::string_view what)
               Font{15.0, false, {0.5, 0.5, 0.5}}, HAlign::Centre, VAlign::Middle);
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -15,14 +15,14 @@ namespace formflow::io::plot {
 /// One axis: data range, scale, tick positions (empty: chosen automatically) and label markup.
 struct Axis {
   double lo = 0.0, hi = 1.0;
-  bool log = false;  ///< logarithmic (lo > 0)
+  bool log = false; ///< logarithmic (lo > 0)
   std::vector<double> ticks;
   std::string label;
 };
 
 /// A rectangular plot area with an x and a y axis.
 class Axes {
- public:
+public:
   /// Fills empty tick lists; widens an empty range so the mapping stays finite.
   Axes(const Rect& area, Axis x, Axis y);
 
@@ -42,7 +42,7 @@ class Axes {
   /// The y axis drawn on the right edge instead (a second quantity over the same x).
   void draw_right(const Canvas& canvas, const Rgb& colour) const;
 
- private:
+private:
   void draw_x_ticks(const Canvas& canvas, double y) const;
   void draw_y_ticks(const Canvas& canvas, double x) const;
   Rect area_;
@@ -63,8 +63,9 @@ struct LegendEntry {
   Stroke stroke;
 };
 
-/// A boxed legend whose top-right corner is at `top_right`.
-void draw_legend(const Canvas& canvas, Pixel top_right, std::span<const LegendEntry> entries);
+/// A boxed legend with its top-right (`side` Right) or top-left (Left) corner at `corner`.
+void draw_legend(const Canvas& canvas, Pixel corner, std::span<const LegendEntry> entries,
+                 HAlign side = HAlign::Right);
 
 /// Picture title (bold, centred) and a smaller grey subtitle line under it.
 void draw_title(const Canvas& canvas, std::string_view title, std::string_view subtitle);
@@ -72,4 +73,4 @@ void draw_title(const Canvas& canvas, std::string_view title, std::string_view s
 /// A light-grey "no data" note in the middle of `area`.
 void draw_no_data(const Canvas& canvas, const Rect& area, std::string_view what);
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -29,14 +29,18 @@ constexpr char32_t combining_dot_above = 0x0307;
 
 /// Length of the UTF-8 sequence starting with `lead` (1 for stray bytes).
 std::size_t utf8_length(unsigned char lead) {
-  if (lead >= 0xF0) return 4;
-  if (lead >= 0xE0) return 3;
-  if (lead >= 0xC0) return 2;
+  if (lead >= 0xF0)
+    return 4;
+  if (lead >= 0xE0)
+    return 3;
+  if (lead >= 0xC0)
+    return 2;
   return 1;
 }
 
 char32_t decode_two_or_three(std::string_view bytes) {
-  if (bytes.size() == 2) return ((bytes[0] & 0x1F) << 6) | (bytes[1] & 0x3F);
+  if (bytes.size() == 2)
+    return ((bytes[0] & 0x1F) << 6) | (bytes[1] & 0x3F);
   if (bytes.size() == 3)
     return ((bytes[0] & 0x0F) << 12) | ((bytes[1] & 0x3F) << 6) | (bytes[2] & 0x3F);
   return 0;
@@ -57,7 +61,8 @@ std::vector<Run> parse_markup(std::string_view markup) {
       ++i;
       continue;
     }
-    const std::size_t length = std::min(utf8_length(static_cast<unsigned char>(c)), markup.size() - i);
+    const std::size_t length =
+        std::min(utf8_length(static_cast<unsigned char>(c)), markup.size() - i);
     const std::string_view character = markup.substr(i, length);
     i += length;
     const char32_t code = decode_two_or_three(character);
@@ -66,7 +71,8 @@ std::vector<Run> parse_markup(std::string_view markup) {
       // Split the mark's base character off the end of its run.
       if (!base.macron && !base.dot && base.text.size() > 1) {
         std::size_t start = base.text.size() - 1;
-        while (start > 0 && (static_cast<unsigned char>(base.text[start]) & 0xC0) == 0x80) --start;
+        while (start > 0 && (static_cast<unsigned char>(base.text[start]) & 0xC0) == 0x80)
+          --start;
         runs.push_back({base.text.substr(start), base.level});
         runs[runs.size() - 2].text.resize(start);
       }
@@ -80,7 +86,9 @@ std::vector<Run> parse_markup(std::string_view markup) {
   return runs;
 }
 
-double run_size(const Run& run, double size) { return run.level == 0 ? size : 0.7 * size; }
+double run_size(const Run& run, double size) {
+  return run.level == 0 ? size : 0.7 * size;
+}
 
 void select_font(cairo_t* cairo, const Font& font, double size) {
   cairo_select_font_face(cairo, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
@@ -134,8 +142,7 @@ cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned i
 
 void check(cairo_status_t status, const char* what) {
   if (status != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error(std::string("cairo: ") + what + ": " +
-                             cairo_status_to_string(status));
+    throw std::runtime_error(std::string("cairo: ") + what + ": " + cairo_status_to_string(status));
 }
 
 /// White background, then the picture.
@@ -149,7 +156,7 @@ void draw_on(cairo_surface_t* surface, int width, int height, const DrawFunction
   check(cairo_status(cairo.get()), "drawing failed");
 }
 
-}  // namespace
+} // namespace
 
 double Canvas::text_width(std::string_view markup, const Font& font) const {
   cairo_save(cairo_);
@@ -180,7 +187,8 @@ void Canvas::text(Pixel at, std::string_view markup, const Font& font, HAlign h,
     select_font(cairo_, font, size);
     cairo_move_to(cairo_, x, baseline + shift);
     cairo_show_text(cairo_, run.text.c_str());
-    if (run.macron || run.dot) draw_marks(cairo_, run, x, baseline + shift, size);
+    if (run.macron || run.dot)
+      draw_marks(cairo_, run, x, baseline + shift, size);
     cairo_text_extents_t extents;
     cairo_text_extents(cairo_, run.text.c_str(), &extents);
     x += extents.x_advance;
@@ -203,18 +211,22 @@ void Canvas::line(Pixel from, Pixel to, const Stroke& stroke) const {
 }
 
 void Canvas::polyline(std::span<const Pixel> points, const Stroke& stroke, bool closed) const {
-  if (points.size() < 2) return;
+  if (points.size() < 2)
+    return;
   cairo_new_path(cairo_);
   cairo_move_to(cairo_, points[0][0], points[0][1]);
-  for (std::size_t i = 1; i < points.size(); ++i) cairo_line_to(cairo_, points[i][0], points[i][1]);
-  if (closed) cairo_close_path(cairo_);
+  for (std::size_t i = 1; i < points.size(); ++i)
+    cairo_line_to(cairo_, points[i][0], points[i][1]);
+  if (closed)
+    cairo_close_path(cairo_);
   apply(stroke);
   cairo_stroke(cairo_);
 }
 
 void Canvas::fill(std::span<const Pixel> polygon, const Rgb& colour, double alpha,
                   bool seal) const {
-  if (polygon.size() < 3) return;
+  if (polygon.size() < 3)
+    return;
   cairo_new_path(cairo_);
   cairo_move_to(cairo_, polygon[0][0], polygon[0][1]);
   for (std::size_t i = 1; i < polygon.size(); ++i)
@@ -234,7 +246,8 @@ void Canvas::fill_polygons(std::span<const std::vector<Pixel>> polygons, const R
                            bool seal) const {
   cairo_new_path(cairo_);
   for (const auto& polygon : polygons) {
-    if (polygon.size() < 3) continue;
+    if (polygon.size() < 3)
+      continue;
     cairo_move_to(cairo_, polygon[0][0], polygon[0][1]);
     for (std::size_t i = 1; i < polygon.size(); ++i)
       cairo_line_to(cairo_, polygon[i][0], polygon[i][1]);
@@ -278,7 +291,9 @@ void Canvas::clip(const Rect& rect) const {
   cairo_clip(cairo_);
 }
 
-void Canvas::unclip() const { cairo_restore(cairo_); }
+void Canvas::unclip() const {
+  cairo_restore(cairo_);
+}
 
 std::string render_png(int width, int height, const DrawFunction& draw) {
   // RGB24: an opaque picture needs no alpha channel, and the file is smaller.
@@ -304,4 +319,4 @@ std::string render_svg(int width, int height, const DrawFunction& draw) {
   return text;
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -40,7 +40,7 @@ struct Stroke {
   double width = 1.0;
   Rgb colour{0.1, 0.1, 0.1};
   double alpha = 1.0;
-  double dash = 0.0;  ///< 0: solid; otherwise on/off length in pixels
+  double dash = 0.0; ///< 0: solid; otherwise on/off length in pixels
 };
 
 /// Wraps a cairo context. Text takes a small markup: `_{…}` subscript,
@@ -48,8 +48,9 @@ struct Stroke {
 /// (U+0307) drawn by hand, because cairo's toy text API stacks them on top of
 /// each other (ε̄̇ would lose its dot).
 class Canvas {
- public:
-  Canvas(cairo_t* cairo, double width, double height) : cairo_(cairo), width_(width), height_(height) {}
+public:
+  Canvas(cairo_t* cairo, double width, double height)
+      : cairo_(cairo), width_(width), height_(height) {}
 
   double width() const { return width_; }
   double height() const { return height_; }
@@ -79,7 +80,7 @@ class Canvas {
   void clip(const Rect& rect) const;
   void unclip() const;
 
- private:
+private:
   void apply(const Stroke& stroke) const;
   cairo_t* cairo_;
   double width_, height_;
@@ -94,4 +95,4 @@ std::string render_png(int width, int height, const DrawFunction& draw);
 /// Renders `draw` as an SVG document of `width`×`height` px and returns its text.
 std::string render_svg(int width, int height, const DrawFunction& draw);
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

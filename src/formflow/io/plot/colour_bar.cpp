@@ -17,22 +17,27 @@ std::vector<double> colour_bar_ticks(const ColourScale& scale) {
   const std::vector<double>& bounds = scale.boundaries();
   if (scale.is_log()) {
     std::vector<double> decades = decade_ticks(bounds.front(), bounds.back());
-    if (decades.size() >= 2) return decades;
+    if (decades.size() >= 2)
+      return decades;
     return bounds;
   }
-  if (bounds.size() <= 12) return bounds;
+  if (bounds.size() <= 12)
+    return bounds;
   // Keep the parity that contains zero, so the white centre of a diverging bar is labelled.
   std::size_t parity = 0;
   for (std::size_t i = 0; i < bounds.size(); ++i)
-    if (bounds[i] == 0.0) parity = i % 2;
+    if (bounds[i] == 0.0)
+      parity = i % 2;
   std::vector<double> ticks;
-  for (std::size_t i = parity; i < bounds.size(); i += 2) ticks.push_back(bounds[i]);
+  for (std::size_t i = parity; i < bounds.size(); i += 2)
+    ticks.push_back(bounds[i]);
   return ticks;
 }
 
 std::string colour_bar_label(const ColourScale& scale, double value) {
   const std::vector<double>& bounds = scale.boundaries();
-  if (scale.is_log()) return log_tick_label(value, log_labels_as_powers(bounds.front(), bounds.back()));
+  if (scale.is_log())
+    return log_tick_label(value, log_labels_as_powers(bounds.front(), bounds.back()));
   return tick_label(value, bounds[1] - bounds[0]);
 }
 
@@ -46,7 +51,7 @@ void draw_extension(const Canvas& canvas, const Rect& bar, bool at_top, const Rg
   canvas.polyline(triangle, {1.0, {0.15, 0.15, 0.15}}, true);
 }
 
-}  // namespace
+} // namespace
 
 void draw_colour_bar(const Canvas& canvas, const Rect& bar, const ColourScale& scale,
                      std::string_view title) {
@@ -60,7 +65,8 @@ void draw_colour_bar(const Canvas& canvas, const Rect& bar, const ColourScale& s
     canvas.fill_rect({bar.x, top, bar.width, bottom - top + 0.5}, scale.band_colour(band));
   }
   canvas.stroke_rect(bar, {1.0, {0.15, 0.15, 0.15}});
-  if (scale.extends_below) draw_extension(canvas, bar, false, scale.band_colour(0));
+  if (scale.extends_below)
+    draw_extension(canvas, bar, false, scale.band_colour(0));
   if (scale.extends_above)
     draw_extension(canvas, bar, true, scale.band_colour(scale.n_bands() - 1));
 
@@ -77,4 +83,4 @@ void draw_colour_bar(const Canvas& canvas, const Rect& bar, const ColourScale& s
               HAlign::Centre, VAlign::Top, 90.0);
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -50,10 +50,14 @@ constexpr std::array<Rgb, 11> blue_white_red_points = {
 /// Values this small are "zero" on a log scale (ε̄̇ of a rigid zone).
 constexpr double log_floor = 1e-300;
 
-}  // namespace
+} // namespace
 
-Rgb viridis(double t) { return interpolate(viridis_points, t); }
-Rgb blue_white_red(double t) { return interpolate(blue_white_red_points, t); }
+Rgb viridis(double t) {
+  return interpolate(viridis_points, t);
+}
+Rgb blue_white_red(double t) {
+  return interpolate(blue_white_red_points, t);
+}
 
 ColourScale ColourScale::logarithmic(double lo, double hi) {
   if (!(lo > 0 && hi > lo && std::isfinite(hi)))
@@ -78,8 +82,10 @@ ColourScale ColourScale::linear(double lo, double hi, int target_bands, Palette 
   const double step = nice_step(hi - lo, target_bands);
   for (double level = std::floor(lo / step) * step; level < hi + 0.5 * step; level += step)
     scale.boundaries_.push_back(std::abs(level) < 1e-9 * step ? 0.0 : level);
-  if (scale.boundaries_.back() < hi) scale.boundaries_.push_back(scale.boundaries_.back() + step);
-  if (scale.boundaries_.size() < 2) scale.boundaries_.push_back(scale.boundaries_.back() + step);
+  if (scale.boundaries_.back() < hi)
+    scale.boundaries_.push_back(scale.boundaries_.back() + step);
+  if (scale.boundaries_.size() < 2)
+    scale.boundaries_.push_back(scale.boundaries_.back() + step);
   return scale;
 }
 
@@ -103,4 +109,4 @@ std::size_t ColourScale::band_of(double value) const {
   return static_cast<std::size_t>(above - boundaries_.begin()) - 1;
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -22,9 +22,9 @@ Rgb blue_white_red(double t);
 
 /// Which colour map a scale uses.
 enum class Palette {
-  Sequential,      ///< viridis, for filled areas
-  SequentialDark,  ///< viridis without its palest quarter, for lines and arrows on white
-  Diverging,       ///< blue–white–red, white at zero
+  Sequential,     ///< viridis, for filled areas
+  SequentialDark, ///< viridis without its palest quarter, for lines and arrows on white
+  Diverging,      ///< blue–white–red, white at zero
 };
 
 /// Filled-contour levels: band k covers [boundaries[k], boundaries[k+1]] and
@@ -32,7 +32,7 @@ enum class Palette {
 /// colours; `extends_below`/`extends_above` say whether the data go there (the
 /// colour bar then shows a triangle, as in engineering plots).
 class ColourScale {
- public:
+public:
   /// Log-spaced bands at 1-2-5 steps per decade covering [lo, hi], 0 < lo < hi; viridis.
   static ColourScale logarithmic(double lo, double hi);
   /// Linearly spaced bands at a "nice" step (about `target_bands` of them)
@@ -51,13 +51,13 @@ class ColourScale {
   /// Band containing `value`, clamped to the end bands.
   std::size_t band_of(double value) const;
 
-  bool extends_below = false;  ///< some data lie below boundaries().front()
-  bool extends_above = false;  ///< some data lie above boundaries().back()
+  bool extends_below = false; ///< some data lie below boundaries().front()
+  bool extends_above = false; ///< some data lie above boundaries().back()
 
- private:
+private:
   std::vector<double> boundaries_;
   bool log_ = false;
   Palette palette_ = Palette::Sequential;
 };
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -34,28 +34,37 @@ Axis change_axis(const std::vector<solvers::IterationRecord>& history, double to
     }
   // Whole decades with a margin, so the tolerance line never sits on the frame.
   return Axis{std::pow(10.0, std::floor(std::log10(low) - 0.3)),
-              std::pow(10.0, std::ceil(std::log10(high) + 0.3)), true, {},
+              std::pow(10.0, std::ceil(std::log10(high) + 0.3)),
+              true,
+              {},
               "relative change ‖u^{n+1} − u^{n}‖ / ‖u^{n+1}‖"};
 }
 
 Axis pressure_axis(const std::vector<solvers::IterationRecord>& history) {
-  auto [low, high] = std::minmax_element(history.begin(), history.end(),
-                                         [](const auto& a, const auto& b) { return a.pressure < b.pressure; });
+  auto [low, high] =
+      std::minmax_element(history.begin(), history.end(),
+                          [](const auto& a, const auto& b) { return a.pressure < b.pressure; });
   const double span = std::max(high->pressure - low->pressure, 1e-3 * std::abs(high->pressure));
-  return Axis{low->pressure - 0.08 * span, high->pressure + 0.08 * span, false, {},
+  return Axis{low->pressure - 0.08 * span,
+              high->pressure + 0.08 * span,
+              false,
+              {},
               "pressure (ram reaction / height)"};
 }
 
 void draw_markers(const Canvas& canvas, const std::vector<Pixel>& points, const Rgb& colour) {
   // Markers only while they stay apart; on long histories they would merge into a band.
-  if (points.size() > 80) return;
-  for (const Pixel& point : points) canvas.circle(point, 2.6, colour);
+  if (points.size() > 80)
+    return;
+  for (const Pixel& point : points)
+    canvas.circle(point, 2.6, colour);
 }
 
-}  // namespace
+} // namespace
 
 void draw_convergence(const Canvas& canvas, const PictureData& data) {
-  draw_title(canvas, "Convergence of the secant iteration", run_description(data.case_, data.results));
+  draw_title(canvas, "Convergence of the secant iteration",
+             run_description(data.case_, data.results));
   const auto& history = data.results.history;
   const double tolerance = data.case_.solver.tolerance;
   if (history.empty()) {
@@ -72,7 +81,8 @@ void draw_convergence(const Canvas& canvas, const PictureData& data) {
 
   canvas.clip(area);
   const double y_tolerance = change.py(tolerance);
-  canvas.line({area.x, y_tolerance}, {area.right(), y_tolerance}, {1.6, tolerance_colour, 1.0, 9.0});
+  canvas.line({area.x, y_tolerance}, {area.right(), y_tolerance},
+              {1.6, tolerance_colour, 1.0, 9.0});
   std::vector<Pixel> change_points, pressure_points;
   for (const auto& record : history) {
     // A zero change (an exact fixed point) cannot sit on a log axis: drawn at the bottom.
@@ -93,4 +103,4 @@ void draw_convergence(const Canvas& canvas, const PictureData& data) {
   draw_legend(canvas, {area.right() - 10, area.y + 10}, legend);
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -28,16 +28,16 @@ double cell_pixels(const Axes& axes, const mesh::Mesh<2>& mesh);
 /// reference points through the cell's own shape functions, so Q2 fields and
 /// curved Q2 cells are drawn as the solver sees them.
 class CellSampler {
- public:
+public:
   CellSampler(int order, int subdivisions);
   int subdivisions() const { return subdivisions_; }
   /// Grid points of `cell` (lexicographic, x fastest) in pixels, and the field there.
   void sample(const mesh::Mesh<2>& mesh, Index cell, const VectorX& nodal, const Axes& axes,
               std::vector<Pixel>& points, std::vector<double>& values) const;
 
- private:
+private:
   int subdivisions_;
-  MatrixX shape_;  ///< ((s+1)², nodes per cell) shape values at the grid points
+  MatrixX shape_; ///< ((s+1)², nodes per cell) shape values at the grid points
 };
 
 /// Filled contours of `nodal` (one value per mesh node): each cell is split
@@ -59,4 +59,4 @@ void draw_boundary(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& 
 /// of each, so the thick line reads as tooling, not as part of the field.
 void label_contact_parts(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh);
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -32,7 +32,9 @@ FieldLayout field_layout(const mesh::Mesh<2>& mesh) {
   return {std::move(axes), Rect{plot.right() + 26, plot.y, 20, plot.height}};
 }
 
-Rect graph_area() { return {92, 72, picture_width - 92 - 100, picture_height - 72 - 84}; }
+Rect graph_area() {
+  return {92, 72, picture_width - 92 - 100, picture_height - 72 - 84};
+}
 
 std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mesh,
                                      const post::Results& results) {
@@ -53,4 +55,4 @@ std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mes
   return out;
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -65,4 +65,4 @@ FieldLayout field_layout(const mesh::Mesh<2>& mesh);
 /// axis labels on both sides.
 Rect graph_area();
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -24,13 +24,14 @@ ColourScale pressure_scale(const VectorX& pressure) {
   const auto at = [&](double share) {
     return sorted[static_cast<std::size_t>(std::lround(share * static_cast<double>(last)))];
   };
-  ColourScale scale = ColourScale::linear(at(clipped_share), at(1.0 - clipped_share), 12, Palette::Diverging);
+  ColourScale scale =
+      ColourScale::linear(at(clipped_share), at(1.0 - clipped_share), 12, Palette::Diverging);
   scale.extends_below = sorted.front() < scale.boundaries().front();
   scale.extends_above = sorted.back() > scale.boundaries().back();
   return scale;
 }
 
-}  // namespace
+} // namespace
 
 void draw_pressure(const Canvas& canvas, const PictureData& data) {
   draw_title(canvas, "Hydrostatic pressure p = −σ_{H} (compression positive)",
@@ -48,7 +49,8 @@ void draw_pressure(const Canvas& canvas, const PictureData& data) {
   draw_boundary(canvas, layout.axes, data.mesh);
   layout.axes.draw_spines(canvas, 8.0);
   label_contact_parts(canvas, layout.axes, data.mesh);
-  draw_colour_bar(canvas, layout.colour_bar, scale, "hydrostatic pressure p = −σ_{H} [units of σ_{p}]");
+  draw_colour_bar(canvas, layout.colour_bar, scale,
+                  "hydrostatic pressure p = −σ_{H} [units of σ_{p}]");
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

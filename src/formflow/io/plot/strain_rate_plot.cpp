@@ -22,8 +22,10 @@ ColourScale strain_rate_scale(const VectorX& rate) {
   const double high = rate.maxCoeff();
   double low_positive = high;
   for (Index i = 0; i < rate.size(); ++i)
-    if (rate[i] > 0) low_positive = std::min(low_positive, rate[i]);
-  if (!(high > 0)) return ColourScale::logarithmic(1e-4, 1.0);  // a rigid body: all "low"
+    if (rate[i] > 0)
+      low_positive = std::min(low_positive, rate[i]);
+  if (!(high > 0))
+    return ColourScale::logarithmic(1e-4, 1.0); // a rigid body: all "low"
   const double low = std::max(low_positive, high * std::pow(10.0, -decades_shown));
   ColourScale scale = ColourScale::logarithmic(low < high ? low : high / 10.0, high);
   scale.extends_below = rate.minCoeff() < scale.boundaries().front();
@@ -47,7 +49,7 @@ void mark_maximum(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& m
   canvas.text(label, text, font, right_half ? HAlign::Right : HAlign::Left, VAlign::Baseline);
 }
 
-}  // namespace
+} // namespace
 
 void draw_strain_rate(const Canvas& canvas, const PictureData& data) {
   draw_title(canvas, "Equivalent strain rate ε\u0304\u0307 (log scale)",
@@ -69,4 +71,4 @@ void draw_strain_rate(const Canvas& canvas, const PictureData& data) {
                   "equivalent strain rate ε\u0304\u0307 [1/time]");
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

@@ -32,4 +32,4 @@ bool log_labels_as_powers(double lo, double hi);
 /// values that are not powers of ten get three significant digits either way.
 std::string log_tick_label(double value, bool powers);
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

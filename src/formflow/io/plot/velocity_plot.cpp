@@ -38,17 +38,19 @@ std::vector<Index> arrow_nodes(const Axes& axes, const mesh::Mesh<2>& mesh, doub
     const std::pair<long, long> bucket{std::lround(u), std::lround(v)};
     const double distance = std::hypot(u - bucket.first, v - bucket.second);
     auto [it, inserted] = nearest.try_emplace(bucket, distance, node);
-    if (!inserted && distance < it->second.first) it->second = {distance, node};
+    if (!inserted && distance < it->second.first)
+      it->second = {distance, node};
   }
   std::vector<Index> nodes;
-  for (const auto& entry : nearest) nodes.push_back(entry.second.second);
+  for (const auto& entry : nearest)
+    nodes.push_back(entry.second.second);
   return nodes;
 }
 
 void draw_arrow(const Canvas& canvas, Pixel from, Pixel to, const Rgb& colour) {
   const double dx = to[0] - from[0], dy = to[1] - from[1];
   const double length = std::hypot(dx, dy);
-  if (length < 2.0) {  // a still node: a dot keeps the sampling grid visible
+  if (length < 2.0) { // a still node: a dot keeps the sampling grid visible
     canvas.circle({0.5 * (from[0] + to[0]), 0.5 * (from[1] + to[1])}, 1.3, colour);
     return;
   }
@@ -62,7 +64,7 @@ void draw_arrow(const Canvas& canvas, Pixel from, Pixel to, const Rgb& colour) {
   canvas.fill(tip, colour);
 }
 
-}  // namespace
+} // namespace
 
 void draw_velocity(const Canvas& canvas, const PictureData& data) {
   draw_title(canvas, "Velocity (arrow length ∝ speed)", run_description(data.case_, data.results));
@@ -74,9 +76,11 @@ void draw_velocity(const Canvas& canvas, const PictureData& data) {
     return;
   }
   VectorX speed(data.mesh.n_nodes());
-  for (Index n = 0; n < speed.size(); ++n) speed[n] = std::hypot(velocity[2 * n], velocity[2 * n + 1]);
+  for (Index n = 0; n < speed.size(); ++n)
+    speed[n] = std::hypot(velocity[2 * n], velocity[2 * n + 1]);
   const double max_speed = speed.maxCoeff();
-  const ColourScale scale = ColourScale::linear(0.0, max_speed > 0 ? max_speed : 1.0, 8, Palette::SequentialDark);
+  const ColourScale scale =
+      ColourScale::linear(0.0, max_speed > 0 ? max_speed : 1.0, 8, Palette::SequentialDark);
 
   draw_cell_edges(canvas, axes, data.mesh, {0.6, {0.6, 0.6, 0.6}, 0.5});
   draw_boundary(canvas, axes, data.mesh);
@@ -95,9 +99,9 @@ void draw_velocity(const Canvas& canvas, const PictureData& data) {
                scale.band_colour(scale.band_of(speed[node])));
   }
   canvas.text({axes.area().right(), axes.area().bottom() + 30},
-              fmt::format("longest arrow: |u| = {:.3g}", max_speed), Font{11.5},
-              HAlign::Right, VAlign::Top);
+              fmt::format("longest arrow: |u| = {:.3g}", max_speed), Font{11.5}, HAlign::Right,
+              VAlign::Top);
   draw_colour_bar(canvas, layout.colour_bar, scale, "speed |u| [length/time]");
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot
