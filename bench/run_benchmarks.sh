@@ -10,7 +10,7 @@ cmake --build "$build" --target formflow_bench -j"$(nproc)"
 mkdir -p bench/results
 for k in 1 2 4 8 16; do
   for name in secant_solve bare_factorization; do
-    "$build/bench/formflow_bench" --benchmark_filter="^${name}/${k}\$" --benchmark_repetitions=3 \
+    "$build/bench/formflow_bench" --benchmark_filter="^${name}/${k}(/|\$)" --benchmark_repetitions=3 \
       --benchmark_report_aggregates_only=true \
       --benchmark_out="bench/results/${name}_${k}.json" --benchmark_out_format=json
   done

@@ -118,7 +118,7 @@ TEST(Lagrange, ReferenceNodesAreLexicographicWithXFastest) {
   EXPECT_EQ(fem::reference_node<3>(1, 5), Point<3>(1, -1, 1));   // 5 = 1 + 0·2 + 1·4
   EXPECT_EQ(fem::reference_node<3>(2, 13), Point<3>(0, 0, 0));   // 13 = 1 + 1·3 + 1·9
   EXPECT_EQ(fem::reference_node<3>(2, 26), Point<3>(1, 1, 1));
-  EXPECT_EQ(fem::reference_node<3>(2, 11), Point<3>(1, -1, 0));  // 11 = 2 + 0·3 + 1·9
+  EXPECT_EQ(fem::reference_node<3>(2, 11), Point<3>(1.0, -1.0, 0.0));  // 11 = 2 + 0·3 + 1·9
   EXPECT_EQ(fem::lattice_coordinate(2, 1), 0.0);
   EXPECT_EQ(fem::element_order(fem::ElementKind::Q1), 1);
   EXPECT_EQ(fem::element_order(fem::ElementKind::Q2), 2);

@@ -43,6 +43,12 @@ void complete(Axis& axis) {
   std::sort(axis.ticks.begin(), axis.ticks.end());
 }
 
+/// The centre of the pixel containing `v`: a 1 px line there covers one pixel
+/// column exactly instead of smearing grey over two.
+double crisp(double v) {
+  return std::floor(v) + 0.5;
+}
+
 double fraction(const Axis& axis, double value) {
   if (axis.log)
     return (std::log10(std::max(value, 1e-300)) - std::log10(axis.lo)) /
@@ -94,26 +100,28 @@ double Axes::py(double y) const {
 void Axes::draw(const Canvas& canvas, bool grid) const {
   if (grid) {
     for (const double tick : x_.ticks)
-      canvas.line({px(tick), area_.y}, {px(tick), area_.bottom()}, grid_stroke);
+      canvas.line({crisp(px(tick)), area_.y}, {crisp(px(tick)), area_.bottom()}, grid_stroke);
     for (const double tick : y_.ticks)
-      canvas.line({area_.x, py(tick)}, {area_.right(), py(tick)}, grid_stroke);
+      canvas.line({area_.x, crisp(py(tick))}, {area_.right(), crisp(py(tick))}, grid_stroke);
   }
-  canvas.stroke_rect(area_, frame_stroke);
-  draw_x_ticks(canvas, area_.bottom());
-  draw_y_ticks(canvas, area_.x);
+  const Rect frame{crisp(area_.x), crisp(area_.y), std::round(area_.width),
+                   std::round(area_.height)};
+  canvas.stroke_rect(frame, frame_stroke);
+  draw_x_ticks(canvas, frame.bottom());
+  draw_y_ticks(canvas, frame.x);
 }
 
 void Axes::draw_spines(const Canvas& canvas, double offset) const {
-  canvas.line({area_.x, area_.bottom() + offset}, {area_.right(), area_.bottom() + offset},
-              frame_stroke);
-  canvas.line({area_.x - offset, area_.y}, {area_.x - offset, area_.bottom()}, frame_stroke);
-  draw_x_ticks(canvas, area_.bottom() + offset);
-  draw_y_ticks(canvas, area_.x - offset);
+  const double x = crisp(area_.x - offset), y = crisp(area_.bottom() + offset);
+  canvas.line({area_.x, y}, {area_.right(), y}, frame_stroke);
+  canvas.line({x, area_.y}, {x, area_.bottom()}, frame_stroke);
+  draw_x_ticks(canvas, y);
+  draw_y_ticks(canvas, x);
 }
 
 void Axes::draw_x_ticks(const Canvas& canvas, double y) const {
   for (const double tick : x_.ticks) {
-    canvas.line({px(tick), y}, {px(tick), y + 5}, frame_stroke);
+    canvas.line({crisp(px(tick)), y}, {crisp(px(tick)), y + 5}, frame_stroke);
     canvas.text({px(tick), y + 8}, label_of(x_, tick), tick_font, HAlign::Centre, VAlign::Top);
   }
   canvas.text({area_.x + 0.5 * area_.width, y + 28}, x_.label, label_font, HAlign::Centre,
@@ -122,12 +130,12 @@ void Axes::draw_x_ticks(const Canvas& canvas, double y) const {
 
 void Axes::draw_y_ticks(const Canvas& canvas, double x) const {
   for (const double tick : y_.ticks) {
-    canvas.line({x - 5, py(tick)}, {x, py(tick)}, frame_stroke);
+    canvas.line({x - 5, crisp(py(tick))}, {x, crisp(py(tick))}, frame_stroke);
     canvas.text({x - 8, py(tick)}, label_of(y_, tick), tick_font, HAlign::Right, VAlign::Middle);
   }
   if (y_.log)
     for (const double tick : minor_log_ticks(y_))
-      canvas.line({x - 3, py(tick)}, {x, py(tick)}, frame_stroke);
+      canvas.line({x - 3, crisp(py(tick))}, {x, crisp(py(tick))}, frame_stroke);
   const double label_x = x - 14 - widest_label(canvas, y_);
   canvas.text({label_x, area_.y + 0.5 * area_.height}, y_.label, label_font, HAlign::Centre,
               VAlign::Bottom, 90.0);
@@ -138,7 +146,8 @@ void Axes::draw_right(const Canvas& canvas, const Rgb& colour) const {
   Font font = tick_font;
   font.colour = colour;
   for (const double tick : y_.ticks) {
-    canvas.line({area_.right(), py(tick)}, {area_.right() + 5, py(tick)}, stroke);
+    canvas.line({crisp(area_.right()), crisp(py(tick))}, {area_.right() + 5, crisp(py(tick))},
+                stroke);
     canvas.text({area_.right() + 8, py(tick)}, label_of(y_, tick), font, HAlign::Left,
                 VAlign::Middle);
   }
@@ -169,7 +178,8 @@ void draw_legend(const Canvas& canvas, Pixel corner, std::span<const LegendEntry
   const Rect box{side == HAlign::Left ? corner[0] : corner[0] - width, corner[1], width,
                  2 * pad + row * static_cast<double>(entries.size()) - 4};
   canvas.fill_rect(box, {1, 1, 1}, 0.9);
-  canvas.stroke_rect(box, {1.0, {0.7, 0.7, 0.7}});
+  canvas.stroke_rect({crisp(box.x), crisp(box.y), std::round(box.width), std::round(box.height)},
+                     {1.0, {0.7, 0.7, 0.7}});
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const double y = box.y + pad + row * (static_cast<double>(i) + 0.5) - 2;
     canvas.line({box.x + pad, y}, {box.x + pad + sample, y}, entries[i].stroke);

@@ -64,7 +64,10 @@ void draw_colour_bar(const Canvas& canvas, const Rect& bar, const ColourScale& s
     const double top = y_of(bounds[band + 1]), bottom = y_of(bounds[band]);
     canvas.fill_rect({bar.x, top, bar.width, bottom - top + 0.5}, scale.band_colour(band));
   }
-  canvas.stroke_rect(bar, {1.0, {0.15, 0.15, 0.15}});
+  // On pixel centres, so the 1 px frame is sharp rather than two grey columns.
+  canvas.stroke_rect({std::floor(bar.x) + 0.5, std::floor(bar.y) + 0.5, std::round(bar.width),
+                      std::round(bar.height)},
+                     {1.0, {0.15, 0.15, 0.15}});
   if (scale.extends_below)
     draw_extension(canvas, bar, false, scale.band_colour(0));
   if (scale.extends_above)
