@@ -12,7 +12,7 @@
 
 #include <array>
 #include <cmath>
-#include <random>
+#include <ostream>
 #include <vector>
 
 namespace formflow::testing {
@@ -104,6 +104,10 @@ struct KernelCase {
   ViscousStrain strain;
 };
 
+void PrintTo(const KernelCase& c, std::ostream* os) {
+  *os << "Q" << c.order << (c.strain == ViscousStrain::Full ? " full" : " deviatoric");
+}
+
 class ViscousKernel : public ::testing::TestWithParam<KernelCase> {
  protected:
   int order() const { return GetParam().order; }
@@ -127,8 +131,8 @@ TEST_P(ViscousKernel, RigidBodyModesAreExactlyTheNullSpace) {
   const MatrixX k = viscous_matrix(v, varying_viscosity(v.n_points()), strain());
   Tensor2<2> rotation;
   rotation << 0, -1, 1, 0;  // u = (−y, x)
-  const std::array<VectorX, 3> modes = {nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(1, 0)),
-                                        nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(0, 1)),
+  const std::array<VectorX, 3> modes = {nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(1.0, 0.0)),
+                                        nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(0.0, 1.0)),
                                         nodal_field<2>(distorted(order()), rotation)};
   for (const VectorX& mode : modes)
     EXPECT_TRUE(approx((k * mode).norm(), 0.0, 0.0, roundoff * k.norm() * mode.norm()));

@@ -316,11 +316,11 @@ TEST(FacetValues, HexahedronPlanarFacesByHand) {
     double area;
     Point<3> normal;
   };
-  const std::array<Face, 5> faces = {{{0, 1.0, Point<3>(-1, 0, 0)},
-                                      {1, 1.65, Point<3>(1, 0, 0)},
-                                      {2, 1.25, Point<3>(0, -1, 0)},
-                                      {3, 1.4, Point<3>(0, 1, 0)},
-                                      {4, 1.0, Point<3>(0, 0, -1)}}};
+  const std::array<Face, 5> faces = {{{0, 1.0, Point<3>(-1.0, 0.0, 0.0)},
+                                      {1, 1.65, Point<3>(1.0, 0.0, 0.0)},
+                                      {2, 1.25, Point<3>(0.0, -1.0, 0.0)},
+                                      {3, 1.4, Point<3>(0.0, 1.0, 0.0)},
+                                      {4, 1.0, Point<3>(0.0, 0.0, -1.0)}}};
   fem::FacetValues<3> values(1, fem::gauss_rule<2>(2));
   for (const Face& face : faces) {
     values.reinit(sheared_hex(), face.face);

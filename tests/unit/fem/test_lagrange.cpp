@@ -107,17 +107,17 @@ TEST(Lagrange, KroneckerDeltaAtTheReferenceNodes) {
 TEST(Lagrange, ReferenceNodesAreLexicographicWithXFastest) {
   // Drawing in fem/lagrange.hpp: Q1 0 (−1,−1), 1 (1,−1), 2 (−1,1), 3 (1,1);
   // Q2 4 is the centre, 5 the right mid-edge, 7 the top mid-edge.
-  EXPECT_EQ(fem::reference_node<2>(1, 0), Point<2>(-1, -1));
-  EXPECT_EQ(fem::reference_node<2>(1, 1), Point<2>(1, -1));
-  EXPECT_EQ(fem::reference_node<2>(1, 2), Point<2>(-1, 1));
-  EXPECT_EQ(fem::reference_node<2>(1, 3), Point<2>(1, 1));
-  EXPECT_EQ(fem::reference_node<2>(2, 1), Point<2>(0, -1));
-  EXPECT_EQ(fem::reference_node<2>(2, 4), Point<2>(0, 0));
-  EXPECT_EQ(fem::reference_node<2>(2, 5), Point<2>(1, 0));
-  EXPECT_EQ(fem::reference_node<2>(2, 7), Point<2>(0, 1));
-  EXPECT_EQ(fem::reference_node<3>(1, 5), Point<3>(1, -1, 1));   // 5 = 1 + 0·2 + 1·4
-  EXPECT_EQ(fem::reference_node<3>(2, 13), Point<3>(0, 0, 0));   // 13 = 1 + 1·3 + 1·9
-  EXPECT_EQ(fem::reference_node<3>(2, 26), Point<3>(1, 1, 1));
+  EXPECT_EQ(fem::reference_node<2>(1, 0), Point<2>(-1.0, -1.0));
+  EXPECT_EQ(fem::reference_node<2>(1, 1), Point<2>(1.0, -1.0));
+  EXPECT_EQ(fem::reference_node<2>(1, 2), Point<2>(-1.0, 1.0));
+  EXPECT_EQ(fem::reference_node<2>(1, 3), Point<2>(1.0, 1.0));
+  EXPECT_EQ(fem::reference_node<2>(2, 1), Point<2>(0.0, -1.0));
+  EXPECT_EQ(fem::reference_node<2>(2, 4), Point<2>(0.0, 0.0));
+  EXPECT_EQ(fem::reference_node<2>(2, 5), Point<2>(1.0, 0.0));
+  EXPECT_EQ(fem::reference_node<2>(2, 7), Point<2>(0.0, 1.0));
+  EXPECT_EQ(fem::reference_node<3>(1, 5), Point<3>(1.0, -1.0, 1.0));  // 5 = 1 + 0·2 + 1·4
+  EXPECT_EQ(fem::reference_node<3>(2, 13), Point<3>(0.0, 0.0, 0.0));  // 13 = 1 + 1·3 + 1·9
+  EXPECT_EQ(fem::reference_node<3>(2, 26), Point<3>(1.0, 1.0, 1.0));
   EXPECT_EQ(fem::reference_node<3>(2, 11), Point<3>(1.0, -1.0, 0.0));  // 11 = 2 + 0·3 + 1·9
   EXPECT_EQ(fem::lattice_coordinate(2, 1), 0.0);
   EXPECT_EQ(fem::element_order(fem::ElementKind::Q1), 1);
@@ -187,7 +187,7 @@ TEST(Lagrange, Q1DoesNotReproduceAQuadratic) {
   // Guard for the reproduction test: interpolating x² with Q1 must fail at the centre.
   VectorX values;
   Eigen::Matrix<Real, 2, Eigen::Dynamic> gradients;
-  fem::tabulate_shape<2>(1, Point<2>(0, 0), values, gradients);
+  fem::tabulate_shape<2>(1, Point<2>(0.0, 0.0), values, gradients);
   double interpolated = 0.0;
   for (int a = 0; a < 4; ++a) interpolated += values[a] * std::pow(fem::reference_node<2>(1, a).x(), 2);
   EXPECT_TRUE(approx(interpolated, 1.0, 0.0, 1e-15));  // the chord, not x²(0) = 0

@@ -10,8 +10,9 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <ostream>
 #include <set>
-#include <tuple>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -68,6 +69,8 @@ const std::array<MeshCase, 4> benchmark_meshes = {{
     {"mesh_II_Q1", 1.0, 1, 150, 181},
     {"mesh_II_Q2", 1.0, 2, 150, 661},
 }};
+
+void PrintTo(const MeshCase& c, std::ostream* os) { *os << c.name; }
 
 class BenchmarkMesh : public ::testing::TestWithParam<MeshCase> {
  protected:

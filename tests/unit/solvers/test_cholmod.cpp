@@ -10,6 +10,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
+#include <ostream>
 #include <random>
 #include <vector>
 
@@ -162,6 +164,11 @@ struct SystemCase {
   physics::ViscousStrain strain;
 };
 
+void PrintTo(const SystemCase& c, std::ostream* os) {
+  *os << "Q" << c.order << ", volumetric " << c.volumetric_points << "^2"
+      << (c.strain == physics::ViscousStrain::Full ? ", full" : ", deviatoric");
+}
+
 class FormingSystem : public ::testing::TestWithParam<SystemCase> {};
 
 TEST_P(FormingSystem, AssembledMatrixIsPositiveDefinite) {
@@ -242,7 +249,7 @@ TEST(FormingProblem, ContactStateOfAUniformVelocityByHand) {
   for (const auto& point : state) {
     const bool die = m.facets[point.facet].label == mesh::BoundaryLabel::Die;
     (die ? die_length : container_length) += point.weight;
-    const Point<2> normal = die ? Point<2>(1, 0) : Point<2>(0, 1);
+    const Point<2> normal = die ? Point<2>(1.0, 0.0) : Point<2>(0.0, 1.0);
     const double u_n = die ? 0.5 : 0.2;
     const Point<2> u_t = die ? Point<2>(0, 0.2) : Point<2>(0.5, 0);
     // Unit-cell geometry and O(1) velocities: round-off 1e-13.
@@ -264,6 +271,92 @@ TEST(FormingProblem, ContactStateOfAUniformVelocityByHand) {
   }
   EXPECT_TRUE(approx(container_length, 2.0, 1e-13));
   EXPECT_TRUE(approx(die_length, 1.0, 1e-13));
+}
+
+TEST(FormingProblem, StartingViscosityIsTheSecantViscosityAtTheInitialRate) {
+  // Without w the viscosity is σ_p(r0)/r0. Simple shear w = (γ y, 0) has
+  // ε̄̇ = γ/√3 everywhere (SPEC §1), so with γ = √3 r0 the secant system K(w)
+  // must be the very same matrix. A rate-sensitive law (α = 0.5) makes any
+  // other starting rate, or a wrong ε̄̇ of w, change the viscosity.
+  const mesh::Mesh<2> m = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
+  assembly::ProblemSettings settings;
+  settings.law.alpha = 0.5;
+  settings.initial_rate = 0.04;
+  const assembly::FormingProblem<2> problem(m, settings);
+  VectorX w(problem.n_dofs());
+  const double gamma = std::sqrt(3.0) * settings.initial_rate;
+  for (Index node = 0; node < m.n_nodes(); ++node) w.segment<2>(2 * node) = Point<2>(gamma * m.nodes(1, node), 0.0);
+  assembly::LinearSystem start = problem.plan().make_system(), shear = problem.plan().make_system();
+  problem.assemble(nullptr, start);
+  problem.assemble(&w, shear);
+  const MatrixX difference = MatrixX(start.matrix) - MatrixX(shear.matrix);
+  // pow() of the same argument reached two ways: 1e-12 relative to ‖K‖ is round-off.
+  EXPECT_TRUE(approx(difference.norm(), 0.0, 0.0, 1e-12 * MatrixX(start.matrix).norm()));
+  // And a different rate does change the matrix (the check above can fail).
+  w *= 3.0;
+  problem.assemble(&w, shear);
+  EXPECT_GT((MatrixX(start.matrix) - MatrixX(shear.matrix)).norm(), 1e-6 * MatrixX(start.matrix).norm());
+}
+
+TEST(FormingProblem, FrictionAddsItsPointwiseSecantTermToTheSystem) {
+  // K(w) with μ_f > 0 minus K(w) with μ_f = 0 is the friction term alone:
+  // vᵀ ΔK v = Σ_Γ3 points κ_q |v_T(x_q)|² JxW_q, with κ_q the friction weight
+  // that contact_state reports at x_q. w is the constant-viscosity solution,
+  // so u_N, u_T and hence κ vary from point to point.
+  const mesh::Mesh<2> m = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
+  assembly::ProblemSettings frictionless, with_friction;
+  with_friction.friction.mu = 0.2;
+  with_friction.friction.d_t = 1e-2;
+  const assembly::FormingProblem<2> plain(m, frictionless), rough(m, with_friction);
+
+  assembly::LinearSystem system = plain.plan().make_system();
+  plain.assemble(nullptr, system);
+  auto solver = solvers::make_cholmod_solver();
+  VectorX free_w;
+  ASSERT_TRUE(solver->analyze(system.matrix) && solver->factorize(system.matrix) &&
+              solver->solve(system.rhs, free_w));
+  const VectorX w = plain.plan().expand(free_w, plain.constraints().values);
+
+  assembly::LinearSystem k0 = plain.plan().make_system(), k1 = rough.plan().make_system();
+  plain.assemble(&w, k0);
+  rough.assemble(&w, k1);
+  std::mt19937 generator(17);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  VectorX v_free(plain.plan().n_free());
+  for (Index k = 0; k < v_free.size(); ++k) v_free[k] = uniform(generator);
+  const SparseMatrix difference = SparseMatrix(k1.matrix.selfadjointView<Eigen::Lower>()) -
+                                  SparseMatrix(k0.matrix.selfadjointView<Eigen::Lower>());
+  const double energy = v_free.dot(difference * v_free);
+  const VectorX v = plain.plan().expand(v_free, VectorX::Zero(plain.n_dofs()));
+
+  const auto state = rough.contact_state(w);
+  fem::FacetValues<2> values(2, fem::gauss_rule<1>(3));
+  typename fem::CellValues<2>::Gradients coordinates, velocities;
+  double expected = 0.0, largest = 0.0, smallest = 1e300;
+  std::size_t matched = 0;
+  for (Index f = 0; f < static_cast<Index>(m.facets.size()); ++f) {
+    if (!mesh::is_contact(m.facets[f].label)) continue;
+    rough.gather(m.facets[f].cell, &v, coordinates, velocities);
+    values.reinit(coordinates, m.facets[f].local_face);
+    for (int q = 0; q < values.n_points(); ++q) {
+      // Find the state entry of this face point by facet and position.
+      const assembly::ContactPoint<2>* point = nullptr;
+      for (const auto& candidate : state)
+        if (candidate.facet == f && (candidate.position - values.point(q)).norm() < 1e-12) point = &candidate;
+      ASSERT_NE(point, nullptr) << "facet " << f << " point " << q;
+      ++matched;
+      const Point<2> v_q = velocities * values.shape(q);
+      const Point<2> v_t = v_q - v_q.dot(values.normal(q)) * values.normal(q);
+      expected += point->friction_weight * v_t.squaredNorm() * values.JxW(q);
+      largest = std::max(largest, point->friction_weight);
+      smallest = std::min(smallest, point->friction_weight);
+    }
+  }
+  EXPECT_EQ(matched, state.size());
+  ASSERT_GT(largest, 1.01 * smallest) << "weights must differ between points for this test to bite";
+  // Sums of a few dozen terms of mixed size: 1e-10 relative is round-off.
+  EXPECT_TRUE(approx(energy, expected, 1e-10));
+  EXPECT_GT(expected, 0.0);
 }
 
 }  // namespace

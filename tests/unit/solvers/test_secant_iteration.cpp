@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace formflow::testing {
@@ -40,18 +41,16 @@ solvers::SecantOutcome run(const assembly::FormingProblem<2>& problem, const sol
 class SecantIteration : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    problem_ = new assembly::FormingProblem<2>(small_mesh(), assembly::ProblemSettings{});
-    outcome_ = new solvers::SecantOutcome(run(*problem_, solvers::IterationControl{}));
+    problem_ = std::make_unique<assembly::FormingProblem<2>>(small_mesh(), assembly::ProblemSettings{});
+    outcome_ = std::make_unique<solvers::SecantOutcome>(run(*problem_, solvers::IterationControl{}));
   }
   static void TearDownTestSuite() {
-    delete outcome_;
-    delete problem_;
+    outcome_.reset();
+    problem_.reset();
   }
-  static const assembly::FormingProblem<2>* problem_;
-  static const solvers::SecantOutcome* outcome_;
+  inline static std::unique_ptr<assembly::FormingProblem<2>> problem_;
+  inline static std::unique_ptr<solvers::SecantOutcome> outcome_;
 };
-const assembly::FormingProblem<2>* SecantIteration::problem_ = nullptr;
-const solvers::SecantOutcome* SecantIteration::outcome_ = nullptr;
 
 TEST_F(SecantIteration, ConvergesWithAHistoryEndingBelowTheTolerance) {
   const solvers::IterationControl control;
