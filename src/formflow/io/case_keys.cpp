@@ -209,6 +209,20 @@ std::vector<CaseKey> contact_keys() {
           .unit("length")
           .doc("mollifier radius h of the mean contact pressure σ̄_N; 0 = local pressure"),
       friction_parts_key(),
+      enum_key("friction.regularization", "regularized",
+               {{"regularized", physics::FrictionRegularization::Regularized},
+                {"none", physics::FrictionRegularization::None}},
+               [](auto& c) -> auto& { return c.friction.regularization; })
+          .doc("regularized: the paper's |u_T| → √(|u_T|² + d_T²) with penalty.dT (eq. 3.14); "
+               "none: exact Coulomb law by an augmented Lagrangian on the friction traction "
+               "(docs/friction.md)"),
+      real_key("friction.augmentation", 1.0,
+               [](auto& c) -> auto& { return c.friction.augmentation; })
+          .above(0)
+          .at_most(1e6)
+          .unit("1/penalty.dN")
+          .doc("exact friction only: augmentation r = value/d_N of λ_T = proj(λ_T + r u_T); "
+               "any value converges, larger takes fewer multiplier updates"),
       real_key("penalty.d", 1e-3, [](auto& c) -> auto& { return c.penalty.d; })
           .above(0)
           .unit("1/(stress·time)")
@@ -314,7 +328,8 @@ const std::vector<CaseSection>& case_sections() {
       {"formulation", "Which form of the a-term is assembled (SPEC §2)."},
       {"material", "Flow law σ_p = A ε̄̇^α on [rate1, rate2], linear through the origin outside "
                    "(paper eq. 5.4)."},
-      {"friction", "Regularised nonlocal Coulomb friction on Γ3 (paper eq. 3.14–3.15)."},
+      {"friction", "Nonlocal Coulomb friction on Γ3: regularised (paper eq. 3.14–3.15) or "
+                   "exact."},
       {"penalty", "Penalty and regularisation parameters (paper eq. 3.8, 3.14)."},
       {"solver", "The secant-modulus (Kachanov) iteration (paper eq. 5.2–5.3)."},
   };

@@ -90,7 +90,7 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
     for (int q = 0; q < n_q; ++q) {
       const auto& point = contact[first + q];
       pressure_at[q] = point.contact_pressure;
-      friction_at[q] = point.friction_weight * point.tangential_velocity.norm();
+      friction_at[q] = point.friction_traction.norm();
     }
     const VectorX nodal_pressure = facet_to_nodes * pressure_at;
     const VectorX nodal_friction = facet_to_nodes * friction_at;

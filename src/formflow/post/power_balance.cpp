@@ -35,7 +35,7 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
   }
   for (const auto& point : contact) {
     power.contact_penalty += point.normal_velocity * point.normal_velocity / settings.penalty.d_n * point.weight;
-    power.friction += point.friction_weight * point.tangential_velocity.squaredNorm() * point.weight;
+    power.friction += point.friction_traction.dot(point.tangential_velocity) * point.weight;
   }
   return power;
 }
