@@ -315,6 +315,8 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
                                         {"friction.mu", "0.15"},
                                         {"friction.radius", "0.5"},
                                         {"friction.on", "[\"die\"]"},
+                                        {"friction.regularization", "\"none\""},
+                                        {"friction.augmentation", "10.0"},
                                         {"penalty.d", "0.01"},
                                         {"penalty.dN", "1e-05"},
                                         {"penalty.dT", "1e-07"},
