@@ -21,7 +21,7 @@ using Variant = std::tuple<double, double>;
 class FrictionLadder : public ::testing::TestWithParam<Variant> {};
 
 io::Case benchmark(double mu, double radius, physics::FrictionRegularization regularization) {
-  io::Case case_;  // defaults: Q2, 2×2 volumetric rule, mesh II, friction on container and die
+  io::Case case_; // defaults: Q2, 2×2 volumetric rule, mesh II, friction on container and die
   case_.friction.mu = mu;
   case_.friction.radius = radius;
   case_.friction.regularization = regularization;
@@ -31,7 +31,8 @@ io::Case benchmark(double mu, double radius, physics::FrictionRegularization reg
 
 TEST_P(FrictionLadder, ExactConvergesAtThePapersToleranceWithStickAndSlip) {
   const auto [mu, radius] = GetParam();
-  const FrictionSolve solve = solve_friction_case(benchmark(mu, radius, physics::FrictionRegularization::None));
+  const FrictionSolve solve =
+      solve_friction_case(benchmark(mu, radius, physics::FrictionRegularization::None));
   ASSERT_TRUE(solve.converged());
   // The secant iteration alone needs ≈ 60 here; the multiplier updates add ≈ 30–45
   // single secant steps. A bound that would catch a loop that stalls.
@@ -40,7 +41,8 @@ TEST_P(FrictionLadder, ExactConvergesAtThePapersToleranceWithStickAndSlip) {
   EXPECT_GT(zones.stick_length, 0.0);
   EXPECT_GT(zones.slip_length(), 0.0);
   const auto& pressure = solve.results.pressure;
-  EXPECT_LT(std::abs(pressure.ram_reaction - pressure.total_power) / pressure.ram_reaction, 20 * 1e-4);
+  EXPECT_LT(std::abs(pressure.ram_reaction - pressure.total_power) / pressure.ram_reaction,
+            20 * 1e-4);
 }
 
 TEST_P(FrictionLadder, RegularisedApproachesExactAtLeastLikeSquareRootOfDT) {
@@ -58,8 +60,8 @@ TEST_P(FrictionLadder, RegularisedApproachesExactAtLeastLikeSquareRootOfDT) {
     const FrictionSolve solve = solve_friction_case(case_);
     ASSERT_TRUE(solve.converged()) << "d_T = " << value;
     velocity_error.push_back(relative_velocity_difference(solve.velocity, reference.velocity));
-    pressure_error.push_back(std::abs(solve.results.pressure.ram_reaction -
-                                      reference.results.pressure.ram_reaction));
+    pressure_error.push_back(
+        std::abs(solve.results.pressure.ram_reaction - reference.results.pressure.ram_reaction));
     std::cout << "mu " << mu << " h " << radius << " d_T " << value << ": velocity "
               << velocity_error.back() << " pressure " << pressure_error.back() << "\n";
   }
@@ -69,11 +71,13 @@ TEST_P(FrictionLadder, RegularisedApproachesExactAtLeastLikeSquareRootOfDT) {
   // The pressure difference may change sign along the ladder (see
   // tests/verification/test_exact_friction.cpp): it must stay under the √d_T envelope.
   for (std::size_t k = 1; k < d_t.size(); ++k)
-    EXPECT_LE(pressure_error[k], pressure_error[0] * std::sqrt(d_t[k] / d_t[0])) << "d_T = " << d_t[k];
+    EXPECT_LE(pressure_error[k], pressure_error[0] * std::sqrt(d_t[k] / d_t[0]))
+        << "d_T = " << d_t[k];
 }
 
 INSTANTIATE_TEST_SUITE_P(MeshTwo, FrictionLadder,
-                         ::testing::Combine(::testing::Values(0.1, 0.2), ::testing::Values(0.0, 1.0)));
+                         ::testing::Combine(::testing::Values(0.1, 0.2),
+                                            ::testing::Values(0.0, 1.0)));
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

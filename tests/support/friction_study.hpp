@@ -37,8 +37,8 @@ struct FrictionSolve {
 /// secant iteration when friction.regularization = "none", plain secant otherwise.
 inline FrictionSolve solve_friction_case(const io::Case& case_) {
   FrictionSolve solve;
-  solve.mesh = std::make_unique<mesh::Mesh<2>>(mesh::make_channel_mesh(
-      case_.geometry, case_.mesh_size, fem::element_order(case_.element)));
+  solve.mesh = std::make_unique<mesh::Mesh<2>>(
+      mesh::make_channel_mesh(case_.geometry, case_.mesh_size, fem::element_order(case_.element)));
   assembly::ProblemSettings settings;
   settings.process = case_.process;
   settings.law = case_.material;
@@ -76,4 +76,4 @@ inline double relative_velocity_difference(const VectorX& a, const VectorX& b) {
   return (a - b).norm() / b.norm();
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

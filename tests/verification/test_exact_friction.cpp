@@ -75,7 +75,8 @@ TEST_P(ExactCoulomb, ConditionsHoldPointwiseAndReactionEqualsPower) {
     } else if (slip > 1e-5 * speed) {
       // On the circle and slipping: σ_T = −λ_T opposes u_T (cosine −1 to 1e-6).
       ++slipping;
-      EXPECT_GT(point.friction_traction.dot(point.tangential_velocity), (1 - 1e-6) * traction * slip)
+      EXPECT_GT(point.friction_traction.dot(point.tangential_velocity),
+                (1 - 1e-6) * traction * slip)
           << "at x = " << point.position.transpose();
     }
   }
@@ -115,8 +116,8 @@ TEST(ExactFriction, RegularisedSolutionsConvergeAtLeastLikeSquareRootOfDT) {
     const FrictionSolve solve = solve_friction_case(case_);
     ASSERT_TRUE(solve.converged()) << "d_T = " << value;
     velocity_error.push_back(relative_velocity_difference(solve.velocity, reference.velocity));
-    pressure_error.push_back(std::abs(solve.results.pressure.ram_reaction -
-                                      reference.results.pressure.ram_reaction));
+    pressure_error.push_back(
+        std::abs(solve.results.pressure.ram_reaction - reference.results.pressure.ram_reaction));
     std::cout << "d_T = " << value << ": velocity " << velocity_error.back() << ", pressure "
               << pressure_error.back() << ", iterations " << solve.iterations << "\n";
   }
@@ -125,14 +126,16 @@ TEST(ExactFriction, RegularisedSolutionsConvergeAtLeastLikeSquareRootOfDT) {
   const std::size_t last = d_t.size() - 1;
   const double velocity_rate = std::log10(velocity_error[last - 1] / velocity_error[last]);
   EXPECT_GE(velocity_rate, 0.5 - 0.15);
-  for (std::size_t k = 1; k < d_t.size(); ++k) EXPECT_LT(velocity_error[k], velocity_error[k - 1]);
+  for (std::size_t k = 1; k < d_t.size(); ++k)
+    EXPECT_LT(velocity_error[k], velocity_error[k - 1]);
   // The pressure is a functional of u, so |p_dT − p| ≤ C ‖u_dT − u‖: it must stay
   // under the √d_T envelope drawn from the coarsest rung. Its ratio between two
   // rungs is no rate: p_dT − p changes sign between d_T = 1e-5 and 1e-6 on this
   // mesh (−9.5e-8, then +4.6e-8; +7.8e-9 at 1e-7), so that ratio is only 0.33.
   for (std::size_t k = 1; k < d_t.size(); ++k)
-    EXPECT_LE(pressure_error[k], pressure_error[0] * std::sqrt(d_t[k] / d_t[0])) << "d_T = " << d_t[k];
+    EXPECT_LE(pressure_error[k], pressure_error[0] * std::sqrt(d_t[k] / d_t[0]))
+        << "d_T = " << d_t[k];
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -15,9 +15,6 @@ namespace formflow::assembly {
 /// λ = proj_{|λ| ≤ τ_f}(λ_T + r u_T), linearised as a load plus a penalty of at
 /// most r; the augmented-Lagrangian loop (solvers/augmented_lagrangian.hpp)
 /// updates them between inner solves. An empty `traction` means λ_T = 0.
-template <int dim>
-struct FrictionMultipliers {
-  std::vector<Point<dim>> traction;
-};
+template <int dim> struct FrictionMultipliers { std::vector<Point<dim>> traction; };
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -14,7 +14,8 @@ void contact_zones(const assembly::FormingProblem<dim>& problem,
     ContactZones& zones =
         problem.mesh().facets[point.facet].label == mesh::BoundaryLabel::Die ? die : container;
     zones.length += point.weight;
-    if (point.sticking) zones.stick_length += point.weight;
+    if (point.sticking)
+      zones.stick_length += point.weight;
   }
 }
 
@@ -25,4 +26,4 @@ template void contact_zones<3>(const assembly::FormingProblem<3>&,
                                const std::vector<assembly::ContactPoint<3>>&, ContactZones&,
                                ContactZones&);
 
-}  // namespace formflow::post
+} // namespace formflow::post

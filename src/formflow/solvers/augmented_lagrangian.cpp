@@ -35,13 +35,12 @@ std::pair<Real, Real> multiplier_norms(const std::vector<assembly::ContactPoint<
   return {std::sqrt(difference), std::sqrt(norm)};
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
-AugmentedOutcome<dim> augmented_lagrangian(const assembly::FormingProblem<dim>& problem,
-                                           const InnerSolve<dim>& inner,
-                                           const IterationControl& control,
-                                           const IterationObserver& on_iteration) {
+AugmentedOutcome<dim>
+augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSolve<dim>& inner,
+                     const IterationControl& control, const IterationObserver& on_iteration) {
   AugmentedOutcome<dim> outcome;
   SecantOutcome& solve = outcome.solve;
   int used = 0;
@@ -58,10 +57,11 @@ AugmentedOutcome<dim> augmented_lagrangian(const assembly::FormingProblem<dim>& 
     const IterationObserver renumbered = [&](const IterationRecord& record) {
       IterationRecord shifted = record;
       shifted.iteration += offset;
-      if (on_iteration) on_iteration(shifted);
+      if (on_iteration)
+        on_iteration(shifted);
     };
-    SecantOutcome step = inner(outcome.multipliers, warm ? &solve.velocity : nullptr,
-                               inner_control, renumbered);
+    SecantOutcome step =
+        inner(outcome.multipliers, warm ? &solve.velocity : nullptr, inner_control, renumbered);
     for (IterationRecord& record : step.history) {
       record.iteration += offset;
       solve.history.push_back(record);
@@ -71,7 +71,8 @@ AugmentedOutcome<dim> augmented_lagrangian(const assembly::FormingProblem<dim>& 
     solve.stop_reason = step.stop_reason;
     warm = true;
     ++outcome.augmentations;
-    if (step.stop_reason != StopReason::Converged) return outcome;
+    if (step.stop_reason != StopReason::Converged)
+      return outcome;
 
     // λᵏ⁺¹ = proj(λᵏ + r uᵏ_T): the traction contact_state evaluates for λᵏ at uᵏ.
     const auto state = problem.contact_state(solve.velocity, &outcome.multipliers);
@@ -85,7 +86,8 @@ AugmentedOutcome<dim> augmented_lagrangian(const assembly::FormingProblem<dim>& 
       solve.stop_reason = StopReason::NonFinite;
       return outcome;
     }
-    if (outcome.multiplier_change < control.tolerance) return outcome;  // Converged
+    if (outcome.multiplier_change < control.tolerance)
+      return outcome; // Converged
   }
 }
 
@@ -112,4 +114,4 @@ template InnerSolve<2> secant_inner_solve<2>(const assembly::FormingProblem<2>&,
 template InnerSolve<3> secant_inner_solve<3>(const assembly::FormingProblem<3>&, LinearSolver&,
                                              PhaseTimes&);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

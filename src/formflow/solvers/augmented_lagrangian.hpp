@@ -20,18 +20,18 @@ using IterationObserver = std::function<void(const IterationRecord&)>;
 /// iteration. Any solver that passes the multipliers to FormingProblem::assemble
 /// fits (the secant iteration below; a Newton iteration later).
 template <int dim>
-using InnerSolve = std::function<SecantOutcome(const assembly::FrictionMultipliers<dim>& multipliers,
-                                               const VectorX* start, const IterationControl& control,
-                                               const IterationObserver& on_iteration)>;
+using InnerSolve =
+    std::function<SecantOutcome(const assembly::FrictionMultipliers<dim>& multipliers,
+                                const VectorX* start, const IterationControl& control,
+                                const IterationObserver& on_iteration)>;
 
-template <int dim>
-struct AugmentedOutcome {
+template <int dim> struct AugmentedOutcome {
   /// Final velocity, stop reason and the inner iterations of all outer steps, numbered on.
   SecantOutcome solve;
   /// λ_T at the Γ3 points after the last update (what post-processing evaluates with).
   assembly::FrictionMultipliers<dim> multipliers;
   int augmentations = 0;        ///< outer (multiplier) updates
-  Real multiplier_change = 0.0;  ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
+  Real multiplier_change = 0.0; ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
 };
 
 /// Uzawa iteration of the augmented Lagrangian for λ_T (Alart–Curnier form):
@@ -41,14 +41,13 @@ struct AugmentedOutcome {
 /// changed by less than δ relative in L²(Γ3); `control.max_iterations` bounds the
 /// inner iterations of all outer steps together.
 template <int dim>
-AugmentedOutcome<dim> augmented_lagrangian(const assembly::FormingProblem<dim>& problem,
-                                           const InnerSolve<dim>& inner,
-                                           const IterationControl& control,
-                                           const IterationObserver& on_iteration);
+AugmentedOutcome<dim>
+augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSolve<dim>& inner,
+                     const IterationControl& control, const IterationObserver& on_iteration);
 
 /// The secant-modulus iteration as the inner solve (same solver and timers throughout).
 template <int dim>
 InnerSolve<dim> secant_inner_solve(const assembly::FormingProblem<dim>& problem,
                                    LinearSolver& solver, PhaseTimes& times);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -24,8 +24,8 @@ TEST(RegularizedStick, MeansSlipBelowSevenDT) {
   const double d_t = 1e-6, tau = 0.3;
   EXPECT_TRUE(physics::is_sticking_regularized(tau, 7.0 * d_t, d_t));
   EXPECT_FALSE(physics::is_sticking_regularized(tau, 7.05 * d_t, d_t));
-  EXPECT_FALSE(physics::is_sticking_regularized(0.0, 0.0, d_t));  // no friction: never stick
+  EXPECT_FALSE(physics::is_sticking_regularized(0.0, 0.0, d_t)); // no friction: never stick
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing
