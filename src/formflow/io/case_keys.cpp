@@ -104,7 +104,7 @@ KeySpec friction_parts_key() {
     return parts;
   };
   return spec.doc("parts of the contact boundary Γ3 with friction: the container wall y = H_in "
-                  "and/or the die face x = L_c; [] = frictionless everywhere");
+                  "and/or the die (its face and its land); [] = frictionless everywhere");
 }
 
 KeySpec die_shape_key() {
