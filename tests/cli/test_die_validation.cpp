@@ -68,21 +68,23 @@ TEST(DieValidation, BadDieExitsTwoNamingFileLineAndKey) {
 namespace {
 
 TEST(DieValidation, GoodPolylineAndArcPassCheck) {
-  const std::string binary = "'" + std::string(FORMFLOW_BINARY) + "'";
+  const std::string binary =
+      "'" + std::string(FORMFLOW_BINARY) + "' check '" + FORMFLOW_SOURCE_DIR +
+      "/cases/paper-q2-2x2-mesh2.toml'";
   const std::string polyline = binary +
-                               " check --set geometry.die=polyline"
+                               " --set geometry.die=polyline"
                                " --set 'geometry.die_profile=[[0, 10], [4, 7.5], [9.5, 5]]'"
                                " --set geometry.land_length=2 > /dev/null 2>&1";
   int status = std::system(polyline.c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0);
   const std::string arc = binary +
-                          " check --set geometry.die=arc --set geometry.die_radius=5"
+                          " --set geometry.die=arc --set geometry.die_radius=5"
                           " --set geometry.symmetry=axisymmetric --set process.type=drawing"
                           " > /dev/null 2>&1";
   status = std::system(arc.c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0);
   // A profile entry that is not an [x, y] pair is a type error, exit 2.
-  const std::string bad = binary + " check --set 'geometry.die_profile=[[0, 10, 3]]' > /dev/null 2>&1";
+  const std::string bad = binary + " --set 'geometry.die_profile=[[0, 10, 3]]' > /dev/null 2>&1";
   status = std::system(bad.c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2);
 }
