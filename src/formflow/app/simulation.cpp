@@ -3,6 +3,7 @@
 #include "formflow/app/simulation.hpp"
 
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
@@ -22,6 +23,7 @@ assembly::ProblemSettings settings_of(const io::Case& case_) {
   settings.friction = case_.friction;
   settings.volumetric_points = case_.volumetric_points;
   settings.initial_rate = case_.solver.initial_rate;
+  settings.symmetry = case_.symmetry;
   return settings;
 }
 
@@ -33,8 +35,9 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   const auto start = std::chrono::steady_clock::now();
   {
     ScopedTimer timer(results.timing, "mesh");
-    simulation.mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size,
-                                              fem::element_order(case_.element));
+    simulation.mesh = mesh::make_die_channel_mesh(case_.geometry, case_.mesh_size,
+                                                  fem::element_order(case_.element));
+    if (case_.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(simulation.mesh);
   }
   std::unique_ptr<assembly::FormingProblem<2>> problem;
   {

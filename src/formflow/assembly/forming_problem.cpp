@@ -42,6 +42,7 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
       full_rule_(fem::gauss_rule<dim>(mesh.order + 1)),
       volumetric_rule_(fem::gauss_rule<dim>(settings.volumetric_points)),
       facet_rule_(fem::gauss_rule<dim - 1>(mesh.order + 1)) {
+  FF_ASSERT(dim == 2 || !axisymmetric(), "axisymmetry is a two-dimensional formulation");
   BlockDofs blocks;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell)
     blocks.add(fem::dofs_of_nodes<dim>(mesh.cells.col(cell)));
@@ -76,7 +77,7 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
     if (facet.label != constraints_.driven_label) continue;
     gather(facet.cell, nullptr, coordinates, unused);
-    facet_values.reinit(coordinates, facet.local_face);
+    reinit(facet_values, coordinates, facet.local_face);
     for (int q = 0; q < facet_values.n_points(); ++q) driven_height_ += facet_values.JxW(q);
   }
 }
@@ -105,7 +106,7 @@ std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(
   for (Index f : contact_facets_) {
     const mesh::BoundaryFacet& facet = mesh_.facets[f];
     gather(facet.cell, &u, coordinates, velocities);
-    facet_values.reinit(coordinates, facet.local_face);
+    reinit(facet_values, coordinates, facet.local_face);
     for (int q = 0; q < facet_values.n_points(); ++q) {
       ContactPoint<dim> point;
       point.facet = f;
@@ -163,20 +164,25 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
 
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
     gather(cell, w, coordinates, velocities);
-    full_values.reinit(coordinates);
-    volumetric_values.reinit(coordinates);
+    reinit(full_values, coordinates);
+    reinit(volumetric_values, coordinates);
     for (int q = 0; q < full_values.n_points(); ++q) {
       if (!w) {
         viscosity[q] = initial_viscosity;
         continue;
       }
-      const Tensor3 rate = physics::strain_rate<dim>(
-          physics::velocity_gradient<dim>(velocities, full_values.gradients(q)));
+      const Tensor3 rate = strain_rate_at(full_values, velocities, q);
       viscosity[q] = settings_.law.secant_viscosity(physics::equivalent_strain_rate(rate));
     }
     local_matrix.setZero();
     add_viscous_term<dim>(full_values, viscosity, settings_.viscous_strain, local_matrix);
-    add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
+    if constexpr (dim == 2) {
+      if (axisymmetric()) {
+        add_hoop_viscous_term(full_values, viscosity, settings_.viscous_strain, local_matrix);
+        add_volumetric_penalty_axisymmetric(volumetric_values, settings_.penalty.d, local_matrix);
+      }
+    }
+    if (!axisymmetric()) add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
     assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_matrix);
     plan_->scatter(cell, local_matrix, constraints_.values, system);
     if (with_friction && has_exact_friction())
@@ -220,12 +226,32 @@ void FormingProblem<dim>::assemble_contact(Index cell, const std::vector<Contact
   std::vector<Real> weight(n_q, 0.0);
   for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
     const Index position = cell_contact_[k];
-    facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+    reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
     add_contact_penalty<dim>(facet_values, settings_.penalty.d_n, local_matrix);
     if (!state) continue;
     for (int q = 0; q < n_q; ++q) weight[q] = (*state)[position * n_q + q].friction_weight;
     add_friction_term<dim>(facet_values, weight, local_matrix);
   }
+}
+
+template <int dim>
+Tensor3 FormingProblem<dim>::strain_rate_at(const fem::CellValues<dim>& values,
+                                            const typename fem::CellValues<dim>::Gradients& velocities,
+                                            int q) const {
+  const Tensor2<dim> gradient = physics::velocity_gradient<dim>(velocities, values.gradients(q));
+  Tensor3 rate = physics::strain_rate<dim>(gradient);
+  if constexpr (dim == 2)
+    if (axisymmetric())
+      physics::add_hoop_rate<dim>(rate, gradient, (velocities * values.shape(q))[1], values.point(q)[1]);
+  return rate;
+}
+
+template <int dim>
+Real FormingProblem<dim>::hoop_rate_at(const fem::CellValues<dim>& values,
+                                       const typename fem::CellValues<dim>::Gradients& velocities,
+                                       int q) const {
+  if (!axisymmetric()) return 0.0;
+  return strain_rate_at(values, velocities, q)(2, 2);
 }
 
 template <int dim>

@@ -24,6 +24,7 @@ struct ProblemSettings {
   physics::Friction friction;
   int volumetric_points = 2;  ///< Gauss points per direction of the (1/d) term
   Real initial_rate = 1.0;    ///< ε̄̇ of the constant viscosity that starts the iteration
+  physics::Symmetry symmetry = physics::Symmetry::Plane;  ///< axisymmetric: dim = 2 only
 };
 
 /// State of the contact boundary Γ3 at one face quadrature point for a velocity w.
@@ -86,6 +87,23 @@ class FormingProblem {
   const fem::QuadratureRule<dim>& full_rule() const { return full_rule_; }
   const fem::QuadratureRule<dim>& volumetric_rule() const { return volumetric_rule_; }
   const fem::QuadratureRule<dim - 1>& facet_rule() const { return facet_rule_; }
+  /// Maps `values` to a cell or face and, in axisymmetry, weights them by r
+  /// (all integrals are per radian: forces per radian, "heights" ∫ r dr).
+  template <class Values, class... Face>
+  void reinit(Values& values, const typename fem::CellValues<dim>::Gradients& coordinates,
+              Face... local_face) const {
+    values.reinit(coordinates, local_face...);
+    if (axisymmetric()) values.weight_by_radius();
+  }
+  bool axisymmetric() const { return settings_.symmetry == physics::Symmetry::Axisymmetric; }
+  /// ε̇ at point q of `values` for the cell's nodal `velocities`; in
+  /// axisymmetry with the hoop rate u_r/r in the θθ (third) slot.
+  Tensor3 strain_rate_at(const fem::CellValues<dim>& values,
+                         const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
+  /// The hoop rate u_r/r at point q (exactly 0 in plane strain), the part of
+  /// ε̇_V = tr ε̇ beyond the in-plane divergence.
+  Real hoop_rate_at(const fem::CellValues<dim>& values,
+                    const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
   /// Node coordinates (dim × n) and nodal velocities (dim × n) of one cell.
   void gather(Index cell, const VectorX* u, typename fem::CellValues<dim>::Gradients& coordinates,
               typename fem::CellValues<dim>::Gradients& velocities) const;

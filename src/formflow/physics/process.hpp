@@ -12,6 +12,9 @@ enum class ProcessType { Extrusion, Drawing };
 enum class RamCondition { Sliding, Sticking };
 /// Strain rate used in the a-form: the full ε̇ (paper eq. 3.3, default) or its deviator ė.
 enum class ViscousStrain { Full, Deviatoric };
+/// Plane strain, or axial symmetry about the x axis (y = r): hoop rate u_r/r and
+/// r-weighted integrals (per radian, so forces are per radian and areas ∫ r dr).
+enum class Symmetry { Plane, Axisymmetric };
 
 struct Process {
   ProcessType type = ProcessType::Extrusion;

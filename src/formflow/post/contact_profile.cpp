@@ -63,7 +63,11 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
     }
     std::sort(along.begin(), along.end(), [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
     samples.insert(samples.end(), along.begin(), along.end());
-    for (int q = 0; q < n_q; ++q) arc_length += contact[segment.first_point + q].weight;
+    for (int q = 0; q < n_q; ++q) {
+      const auto& point = contact[segment.first_point + q];
+      // Axisymmetric weights are r dΓ (per radian): the arc length wants dΓ.
+      arc_length += problem.axisymmetric() ? point.weight / point.position[1] : point.weight;
+    }
     node = segment.from == node ? segment.to : segment.from;
   }
   return samples;
