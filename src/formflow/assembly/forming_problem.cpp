@@ -200,7 +200,7 @@ void FormingProblem<dim>::add_friction_loads(Index cell, const std::vector<Conta
   const int n_q = facet_rule_.size();
   for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
     const Index position = cell_contact_[k];
-    facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+    reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
     for (int q = 0; q < n_q; ++q) {
       const ContactPoint<dim>& point = state[position * n_q + q];
       if (point.friction_load.isZero(0.0)) continue;

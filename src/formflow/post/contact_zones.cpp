@@ -13,9 +13,13 @@ void contact_zones(const assembly::FormingProblem<dim>& problem,
   for (const auto& point : contact) {
     ContactZones& zones =
         problem.mesh().facets[point.facet].label == mesh::BoundaryLabel::Die ? die : container;
-    zones.length += point.weight;
-    if (point.sticking)
-      zones.stick_length += point.weight;
+    // Lengths along the profile: in axisymmetry the quadrature weight carries
+    // the radius (integrals are per radian), which a length must not.
+    Real length = point.weight;
+    if constexpr (dim == 2)
+      if (problem.axisymmetric()) length /= point.position[1];
+    zones.length += length;
+    if (point.sticking) zones.stick_length += length;
   }
 }
 
