@@ -4,6 +4,7 @@
 
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/post/post_process.hpp"
+#include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
 #include <chrono>
@@ -42,7 +43,9 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   }
   auto solver = solvers::make_cholmod_solver();
   solvers::SecantOutcome outcome =
-      solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+      case_.solver.method == solvers::NonlinearMethod::Newton
+          ? solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration, results.timing)
+          : solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());

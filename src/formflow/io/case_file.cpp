@@ -149,6 +149,7 @@ class CaseBuilder {
     check_order("geometry.exit_half_height", "geometry.entry_half_height");
     check_order("material.rate1", "material.rate2");
     check_mesh_fits();
+    check_flow_law();
   }
 
   Case finish(std::string source) {
@@ -179,6 +180,21 @@ class CaseBuilder {
                                  blame_small ? "less than" : "greater than", other,
                                  format_key_value(real_value(other))),
                      fmt::format("{} must be {} {}", blamed, blame_small ? "<" : ">", other));
+  }
+
+  /// Condition (2.11) of the whole law; blames the material key set last.
+  void check_flow_law() const {
+    const auto violation = physics::check_flow_law(case_.material);
+    if (!violation) return;
+    std::string blamed = "material.law";
+    for (const CaseKey& key : case_keys())
+      if (key.section() == "material" && origin(std::string(key.name)).order > origin(blamed).order)
+        blamed = key.name;
+    const Origin where = origin(blamed);
+    throw InputError(where.file, where.line, blamed,
+                     "the flow law violates condition (2.11): " + *violation,
+                     "choose parameters with σ_p increasing and σ_p′ ≤ σ_p/ε̄̇ (rate exponent in "
+                     "(0, 1])");
   }
 
   void check_mesh_fits() const {
