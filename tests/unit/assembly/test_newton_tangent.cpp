@@ -277,7 +277,7 @@ TEST(NewtonSystem, GlobalTangentMatchesFiniteDifferencesOfTheResidual) {
     if (plan.free_index(dof) >= 0) free_u[plan.free_index(dof)] = u[dof];
   assembly::LinearSystem secant = plan.make_system(), tangent = plan.make_system();
   problem.assemble_newton(u, thresholds, {}, secant, &tangent);
-  const MatrixX exact = MatrixX(tangent.matrix.selfadjointView<Eigen::Lower>());
+  const MatrixX exact = MatrixX(assembly::SparseMatrix(tangent.matrix.selfadjointView<Eigen::Lower>()));
   const MatrixX fd = finite_difference_jacobian(free_residual, free_u, 1e-6);
   EXPECT_LE((exact - fd).norm(), fd_tolerance * exact.norm());
 }
