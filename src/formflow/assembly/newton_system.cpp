@@ -18,6 +18,7 @@
 
 #include "formflow/assembly/kernels/kernels.hpp"
 #include "formflow/assembly/kernels/tangent_kernels.hpp"
+#include "formflow/core/error.hpp"
 #include "formflow/physics/kinematics.hpp"
 
 namespace formflow::assembly {
@@ -34,6 +35,8 @@ template <int dim>
 void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real> thresholds,
                                           const NewtonDuals<dim>& duals, LinearSystem& secant,
                                           LinearSystem* tangent) const {
+  // Plane strain with regularised friction only: no hoop terms, no multipliers here.
+  FF_ASSERT(!axisymmetric() && !has_exact_friction(), "Newton covers the plane regularised problem");
   ScatterPlan::clear(secant);
   if (tangent) ScatterPlan::clear(*tangent);
   std::vector<ContactPoint<dim>> state = contact_state(u);
