@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Cost of the secant iteration on the paper's benchmark, mesh II refined k times
 // (Q2, 2×2 volumetric rule), against one bare CHOLMOD factorisation of the same
-// matrix. Results and machine notes: docs/benchmarks.md.
+// matrix; and secant vs Newton, whole solves, for μ = 0, 0.1, 0.2 on the same
+// meshes. Results and machine notes: docs/benchmarks.md.
 #include "formflow/app/simulation.hpp"
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
@@ -30,7 +31,39 @@ io::Case refined_case(int refinement) {
   // Up to 4 refinements the whole solve is timed; beyond, 10 iterations give
   // the per-iteration cost without a many-minute run (the count is reported).
   if (refinement > 4) case_.solver.max_iterations = 10;
+  case_.solver.method = solvers::NonlinearMethod::Secant;
   return case_;
+}
+
+/// Seconds of the nonlinear solve proper (everything but mesh, setup and post).
+double solver_seconds(const post::Results& results) {
+  double seconds = 0.0;
+  for (const char* phase :
+       {"assembly", "analysis", "factorization", "solve", "line search", "dual update"})
+    seconds += results.timing.get(phase);
+  return seconds;
+}
+
+/// Whole solve to δ = 1e-4 of mesh II refined range(0) times with μ = range(1)/10,
+/// by the method range(2) (0 secant, 1 Newton). Secant beyond k = 4 would take
+/// minutes per case: those rows are Newton only.
+void method_solve(benchmark::State& state) {
+  io::Case case_;
+  case_.mesh_size = 1.0 / static_cast<double>(state.range(0));
+  case_.friction.mu = static_cast<double>(state.range(1)) / 10.0;
+  case_.solver.method =
+      state.range(2) == 1 ? solvers::NonlinearMethod::Newton : solvers::NonlinearMethod::Secant;
+  case_.solver.max_iterations = 2000;
+  post::Results results;
+  for (auto _ : state) results = app::simulate(case_).results;
+  state.counters["dofs"] = results.n_dofs;
+  state.counters["iterations"] = results.iterations;
+  state.counters["converged"] = results.converged() ? 1 : 0;
+  state.counters["total_s"] = results.timing.get("total");
+  state.counters["solver_s"] = solver_seconds(results);
+  state.counters["factorization_s"] = results.timing.get("factorization");
+  state.counters["ram_reaction"] = results.pressure.ram_reaction;
+  state.counters["peak_mib"] = peak_memory_mib();
 }
 
 void secant_solve(benchmark::State& state) {
@@ -70,5 +103,11 @@ void bare_factorization(benchmark::State& state) {
 
 BENCHMARK(secant_solve)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(bare_factorization)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+
+BENCHMARK(method_solve)
+    ->ArgsProduct({{1, 2, 4}, {0, 1, 2}, {0, 1}})
+    ->ArgsProduct({{8, 16}, {0, 1, 2}, {1}})
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 BENCHMARK_MAIN();

@@ -26,7 +26,7 @@ TOLERANCE = "1e-8"
 def solve(binary, out, name, settings, tolerance=TOLERANCE):
     directory = Path(out) / name
     command = [binary, "run", "-q", "-o", str(directory), "--set", f"solver.tolerance={tolerance}",
-               "--set", "solver.max_iterations=100000"]
+               "--set", "solver.max_iterations=100000", "--set", 'solver.method="secant"']
     for key, value in settings.items():
         command += ["--set", f"{key}={value}"]
     subprocess.run(command, check=False)  # exit 3 is reported in the table

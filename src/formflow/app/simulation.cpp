@@ -6,6 +6,7 @@
 #include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
+#include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
 #include <chrono>
@@ -48,12 +49,18 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   solvers::SecantOutcome outcome;
   assembly::FrictionMultipliers<2> multipliers;
   if (problem->has_exact_friction()) {
+    // Exact Coulomb friction: the augmented-Lagrangian loop with secant inner
+    // solves (Newton is not wired into it yet; solver.method is ignored here).
     auto augmented = solvers::augmented_lagrangian(
         *problem, solvers::secant_inner_solve(*problem, *solver, results.timing), case_.solver,
         on_iteration);
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
     results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+  } else if (case_.solver.method == solvers::NonlinearMethod::Newton && !problem->axisymmetric()) {
+    // Newton's tangent has no hoop terms yet: axisymmetric cases run the secant iteration.
+    outcome =
+        solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
   } else {
     outcome =
         solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);

@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 
 namespace formflow::assembly {
 
@@ -50,6 +51,18 @@ struct ContactPoint {
   bool sticking = false;
 };
 
+/// Dual variables of the primal–dual Newton linearisation (assembly/newton_system.cpp):
+/// the viscous stress w ≈ ν ė per cell and full-rule point (cell-major) and the slip
+/// direction λ ≈ u_T/√(|u_T|² + d_T²) per Γ3 point (contact_state() order). Empty:
+/// the primal choice at the current velocity, i.e. the exact tangent.
+template <int dim>
+struct NewtonDuals {
+  std::vector<Tensor3> stress;
+  std::vector<Point<dim>> slip;
+  bool empty() const { return stress.empty(); }
+  void clear() { stress.clear(), slip.clear(); }
+};
+
 template <int dim>
 class FormingProblem {
  public:
@@ -61,6 +74,25 @@ class FormingProblem {
   /// penalty s·r, s = proj factor at w (null: λ_T = 0); ignored when regularised.
   void assemble(const VectorX* w, LinearSystem& system,
                 const FrictionMultipliers<dim>* multipliers = nullptr) const;
+
+  /// Newton (assembly/newton_system.cpp): τ_f(w) at each Γ3 quadrature point,
+  /// in contact_state() order, to be frozen during one Newton step.
+  std::vector<Real> friction_thresholds(const VectorX& w) const;
+
+  /// Newton (assembly/newton_system.cpp): the secant system K(u), F with τ_f frozen
+  /// at `thresholds`, so that K(u)u − F is the residual at `u` (full dof vector
+  /// with the prescribed values), and, when `tangent` is given, its Newton tangent
+  /// built with `duals` (same pattern; its rhs is not meaningful).
+  void assemble_newton(const VectorX& u, std::span<const Real> thresholds,
+                       const NewtonDuals<dim>& duals, LinearSystem& secant,
+                       LinearSystem* tangent) const;
+
+  /// Newton (assembly/newton_system.cpp): the duals after the full step `step`
+  /// from `u`, the iterate being `next`: Newton's update of w = ν ė and of
+  /// λ = u_T/s, then the caps √(⅔ w:w) ≤ σ_p(ε̄̇(next)) and |λ| ≤ 1 that keep the
+  /// tangent positive semi-definite; w = ν ė where the law is linear.
+  void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
+                    NewtonDuals<dim>& duals) const;
 
   /// Γ3 quadrature-point state for the velocity `u` (full dof vector); with exact
   /// friction the traction is proj(λ_T + r u_T) for the given (or zero) multipliers.
@@ -109,6 +141,8 @@ class FormingProblem {
               typename fem::CellValues<dim>::Gradients& velocities) const;
 
  private:
+  void update_slip_duals(const VectorX& u, const VectorX& step, bool primal,
+                         std::vector<Point<dim>>& slip_duals) const;
   void assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
                         const typename fem::CellValues<dim>::Gradients& coordinates,
                         fem::FacetValues<dim>& facet_values, MatrixX& local_matrix) const;

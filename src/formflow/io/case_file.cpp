@@ -167,6 +167,7 @@ class CaseBuilder {
     check_order("material.rate1", "material.rate2");
     check_die();
     check_mesh_fits();
+    check_flow_law();
   }
 
   Case finish(std::string source) {
@@ -197,6 +198,21 @@ class CaseBuilder {
                                  blame_small ? "less than" : "greater than", other,
                                  format_key_value(real_value(other))),
                      fmt::format("{} must be {} {}", blamed, blame_small ? "<" : ">", other));
+  }
+
+  /// Condition (2.11) of the whole law; blames the material key set last.
+  void check_flow_law() const {
+    const auto violation = physics::check_flow_law(case_.material);
+    if (!violation) return;
+    std::string blamed = "material.law";
+    for (const CaseKey& key : case_keys())
+      if (key.section() == "material" && origin(std::string(key.name)).order > origin(blamed).order)
+        blamed = key.name;
+    const Origin where = origin(blamed);
+    throw InputError(where.file, where.line, blamed,
+                     "the flow law violates condition (2.11): " + *violation,
+                     "choose parameters with σ_p increasing and σ_p′ ≤ σ_p/ε̄̇ (rate exponent in "
+                     "(0, 1])");
   }
 
   [[noreturn]] void die_error(const std::string& name, const std::string& message,

@@ -227,7 +227,18 @@ std::vector<CaseKey> discretisation_keys() {
 }
 
 std::vector<CaseKey> material_keys() {
+  using physics::FlowLawKind;
   return {
+      enum_key("material.law", "piecewise_power",
+               {{"piecewise_power", FlowLawKind::PiecewisePower},
+                {"norton_hoff", FlowLawKind::NortonHoff},
+                {"hensel_spittel", FlowLawKind::HenselSpittel},
+                {"perfectly_plastic", FlowLawKind::PerfectlyPlastic}},
+               [](auto& c) -> auto& { return c.material.kind; })
+          .constraint("the law must satisfy condition (2.11) (checked at load time)")
+          .doc("σ_p on [rate1, rate2], linear through the origin outside: piecewise_power "
+               "A ε̄̇^α (paper eq. 5.4); norton_hoff √3 K (√3 ε̄̇)^m; hensel_spittel "
+               "A e^(m1 T) ε^m2 e^(m4/ε) ε̄̇^(m3 + m8 T); perfectly_plastic σ0"),
       real_key("material.A", 1.7320508075688772, [](auto& c) -> auto& { return c.material.A; })
           .above(0)
           .unit("stress·time^α")
@@ -246,6 +257,45 @@ std::vector<CaseKey> material_keys() {
           .constraint("> material.rate1")
           .unit("1/time")
           .doc("ε̄̇₂: above it σ_p is continued linearly through the origin"),
+      real_key("material.K", 1.0, [](auto& c) -> auto& { return c.material.K; })
+          .above(0)
+          .unit("stress·time^m")
+          .doc("norton_hoff: consistency K of s = 2K(√3 ε̄̇)^(m−1) ė"),
+      real_key("material.m", 0.1, [](auto& c) -> auto& { return c.material.m; })
+          .above(0)
+          .at_most(1)
+          .doc("norton_hoff: strain-rate sensitivity m (1 = linear viscous)"),
+      real_key("material.sigma0", 1.7320508075688772,
+               [](auto& c) -> auto& { return c.material.sigma0; })
+          .above(0)
+          .unit("stress")
+          .doc("perfectly_plastic: the rate-independent yield stress σ0"),
+      real_key("material.hs_A", 1.7320508075688772, [](auto& c) -> auto& { return c.material.hs_A; })
+          .above(0)
+          .unit("stress·time^(m3+m8 T)")
+          .doc("hensel_spittel: A"),
+      real_key("material.hs_m1", 0.0, [](auto& c) -> auto& { return c.material.hs_m1; })
+          .unit("1/temperature")
+          .doc("hensel_spittel: temperature factor e^(m1 T)"),
+      real_key("material.hs_m2", 0.0, [](auto& c) -> auto& { return c.material.hs_m2; })
+          .doc("hensel_spittel: strain-hardening exponent of ε^m2"),
+      real_key("material.hs_m3", 0.1, [](auto& c) -> auto& { return c.material.hs_m3; })
+          .constraint("0 < m3 + m8 T ≤ 1")
+          .doc("hensel_spittel: strain-rate exponent m3 of ε̄̇^(m3 + m8 T)"),
+      real_key("material.hs_m4", 0.0, [](auto& c) -> auto& { return c.material.hs_m4; })
+          .doc("hensel_spittel: softening term e^(m4/ε)"),
+      real_key("material.hs_m8", 0.0, [](auto& c) -> auto& { return c.material.hs_m8; })
+          .unit("1/temperature")
+          .constraint("0 < m3 + m8 T ≤ 1")
+          .doc("hensel_spittel: temperature dependence m8 T of the strain-rate exponent"),
+      real_key("material.temperature", 0.0,
+               [](auto& c) -> auto& { return c.material.temperature; })
+          .unit("temperature")
+          .doc("hensel_spittel: the (uniform, constant) temperature T of the isothermal form"),
+      real_key("material.strain", 1.0, [](auto& c) -> auto& { return c.material.strain; })
+          .above(0)
+          .doc("hensel_spittel: the reference equivalent strain ε at which the law is taken "
+               "(the steady model carries no strain history)"),
   };
 }
 
@@ -304,6 +354,16 @@ std::vector<CaseKey> solver_keys() {
           .unit("1/time")
           .doc("ε̄̇ whose secant viscosity σ_p(ε̄̇)/ε̄̇ gives the constant-viscosity first "
                "iterate"),
+      enum_key("solver.method", "newton",
+               {{"newton", solvers::NonlinearMethod::Newton},
+                {"secant", solvers::NonlinearMethod::Secant}},
+               [](auto& c) -> auto& { return c.solver.method; })
+          .doc("newton: Newton–Raphson with the consistent tangent and a line search; "
+               "secant: the paper's secant-modulus (Kachanov) iteration (eq. 5.2–5.3)"),
+      real_key("solver.newton_start", 0.5, [](auto& c) -> auto& { return c.solver.newton_start; })
+          .above(0)
+          .doc("newton only: secant steps are taken while the relative change exceeds this "
+               "(safeguard far from the solution)"),
   };
 }
 
@@ -376,12 +436,13 @@ const std::vector<CaseSection>& case_sections() {
       {"mesh", "Uniform square cells of one element kind."},
       {"integration", "Quadrature of the volumetric penalty term (selective integration, SPEC §3)."},
       {"formulation", "Which form of the a-term is assembled (SPEC §2)."},
-      {"material", "Flow law σ_p = A ε̄̇^α on [rate1, rate2], linear through the origin outside "
-                   "(paper eq. 5.4)."},
+      {"material", "Flow law σ_p(ε̄̇) on [rate1, rate2], linear through the origin outside "
+                   "(paper eq. 5.4 by default; material.law picks another)."},
       {"friction", "Nonlocal Coulomb friction on Γ3: regularised (paper eq. 3.14–3.15) or "
                    "exact."},
       {"penalty", "Penalty and regularisation parameters (paper eq. 3.8, 3.14)."},
-      {"solver", "The secant-modulus (Kachanov) iteration (paper eq. 5.2–5.3)."},
+      {"solver", "The nonlinear iteration: Newton, or the paper's secant-modulus (Kachanov) "
+                 "iteration (eq. 5.2–5.3)."},
   };
   return sections;
 }

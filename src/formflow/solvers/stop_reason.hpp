@@ -21,11 +21,19 @@ inline std::string_view stop_reason_name(StopReason reason) {
   return "unknown";
 }
 
+/// The nonlinear method: the paper's secant-modulus (Kachanov) iteration, or
+/// Newton–Raphson with the consistent tangent (solvers/newton_iteration.hpp).
+enum class NonlinearMethod { Secant, Newton };
+
 /// Stopping rule of the secant iteration (SPEC §3): ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < tolerance.
+/// Newton uses the same rule on its (damped) steps, so counts are comparable.
 struct IterationControl {
   Real tolerance = 1e-4;     ///< δ
   int max_iterations = 500;  ///< iteration limit; reaching it is a stop reason, not an error
   Real initial_rate = 1.0;   ///< ε̄̇ whose secant viscosity starts the iteration
+  NonlinearMethod method = NonlinearMethod::Newton;
+  /// Newton only: secant steps are taken while the relative change exceeds this.
+  Real newton_start = 0.5;
 };
 
 /// One line of the iteration history.

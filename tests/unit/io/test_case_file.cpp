@@ -317,6 +317,18 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
                                         {"material.alpha", "0.2"},
                                         {"material.rate1", "0.01"},
                                         {"material.rate2", "100.0"},
+                                        {"material.law", "\"hensel_spittel\""},
+                                        {"material.K", "0.7"},
+                                        {"material.m", "0.3"},
+                                        {"material.sigma0", "2.2"},
+                                        {"material.hs_A", "250.0"},
+                                        {"material.hs_m1", "-0.003"},
+                                        {"material.hs_m2", "0.12"},
+                                        {"material.hs_m3", "0.1"},
+                                        {"material.hs_m4", "-0.02"},
+                                        {"material.hs_m8", "0.0001"},
+                                        {"material.temperature", "650.0"},
+                                        {"material.strain", "0.4"},
                                         {"formulation.viscous_strain", "\"deviatoric\""},
                                         {"friction.mu", "0.15"},
                                         {"friction.radius", "0.5"},
@@ -328,7 +340,9 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
                                         {"penalty.dT", "1e-07"},
                                         {"solver.tolerance", "1e-06"},
                                         {"solver.max_iterations", "42"},
-                                        {"solver.initial_rate", "0.5"}};
+                                        {"solver.initial_rate", "0.5"},
+                                        {"solver.method", "\"secant\""},
+                                        {"solver.newton_start", "0.2"}};
   ASSERT_EQ(values.size(), case_keys().size()) << "a key was added: give it a value here";
   const nlohmann::json json = case_to_json(load_case("", values));
   std::size_t n_keys = 0;

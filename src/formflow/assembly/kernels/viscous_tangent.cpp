@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Consistent-tangent correction of the viscous a-form (Newton, SPEC §2 eq. 3.3).
+#include "formflow/assembly/kernels/tangent_kernels.hpp"
+
+namespace formflow::assembly {
+
+// ė(u):ε̇(φ_a e_i) = Σ_j ė_ij ∂_j φ_a (ė symmetric, and ė:I = 0 removes the
+// volumetric part of ε̇(v)), so the row over local dofs is ė·∇φ_a per node.
+template <int dim>
+void add_viscous_tangent(const fem::CellValues<dim>& values, std::span<const Tensor3> deviators,
+                         std::span<const Tensor3> duals, std::span<const Real> a,
+                         std::span<const Real> b, MatrixX& local_matrix) {
+  const int n = values.n_nodes();
+  VectorX g(n * dim), h(n * dim);
+  for (int q = 0; q < values.n_points(); ++q) {
+    if (a[q] == 0.0 && b[q] == 0.0) continue;
+    const Tensor2<dim> dev = deviators[q].template topLeftCorner<dim, dim>();
+    const Tensor2<dim> dual = duals[q].template topLeftCorner<dim, dim>();
+    const auto& grad = values.gradients(q);
+    for (int node = 0; node < n; ++node) {
+      g.template segment<dim>(node * dim) = dev * grad.col(node);
+      h.template segment<dim>(node * dim) = dual * grad.col(node);
+    }
+    const Real jxw = values.JxW(q);
+    local_matrix.noalias() += (a[q] * jxw) * g * g.transpose();  // a g⊗g dx
+    local_matrix.noalias() += (0.5 * b[q] * jxw) * (h * g.transpose() + g * h.transpose());  // b sym(h⊗g) dx
+  }
+}
+
+template void add_viscous_tangent<2>(const fem::CellValues<2>&, std::span<const Tensor3>,
+                                     std::span<const Tensor3>, std::span<const Real>,
+                                     std::span<const Real>, MatrixX&);
+template void add_viscous_tangent<3>(const fem::CellValues<3>&, std::span<const Tensor3>,
+                                     std::span<const Tensor3>, std::span<const Real>,
+                                     std::span<const Real>, MatrixX&);
+
+}  // namespace formflow::assembly
