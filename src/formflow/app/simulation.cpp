@@ -5,6 +5,7 @@
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
+#include "formflow/solvers/uzawa_iteration.hpp"
 
 #include <chrono>
 
@@ -40,9 +41,21 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     ScopedTimer timer(results.timing, "setup");
     problem = std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, settings_of(case_));
   }
+  // Mixed formulation and exact constraints (issue 5): pressures condensed cell
+  // by cell keep the velocity system SPD, so CHOLMOD serves every formulation.
+  std::unique_ptr<assembly::ConstraintMultipliers<2>> multipliers;
+  if (case_.formulation.type == assembly::FormulationType::Mixed || case_.penalty.d_n == 0) {
+    multipliers = std::make_unique<assembly::ConstraintMultipliers<2>>(
+        simulation.mesh, case_.penalty, case_.formulation, problem->full_rule(),
+        problem->n_contact_points());
+    problem->attach_multipliers(multipliers.get());
+  }
   auto solver = solvers::make_cholmod_solver();
   solvers::SecantOutcome outcome =
-      solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+      multipliers && multipliers->needs_uzawa()
+          ? solvers::uzawa_secant_iteration(*problem, *solver, case_.solver, on_iteration,
+                                            results.timing)
+          : solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());

@@ -30,6 +30,9 @@ struct LinearSystem {
   SparseMatrix matrix;         ///< K_ff, lower triangle only (symmetric)
   VectorX rhs;                 ///< F_f = −K_fc u_c (+ loads)
   SparseMatrix reaction_rows;  ///< K_c·, n_constrained × n_dofs
+  /// Loads on the prescribed dofs (n_constrained, or empty = none): their
+  /// reactions are K_c· u − prescribed_load.
+  VectorX prescribed_load;
 };
 
 /// Precomputed scatter of symmetric local matrices into a LinearSystem. Since

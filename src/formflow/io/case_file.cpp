@@ -149,6 +149,7 @@ class CaseBuilder {
     check_order("geometry.exit_half_height", "geometry.entry_half_height");
     check_order("material.rate1", "material.rate2");
     check_mesh_fits();
+    check_formulation();
   }
 
   Case finish(std::string source) {
@@ -179,6 +180,50 @@ class CaseBuilder {
                                  blame_small ? "less than" : "greater than", other,
                                  format_key_value(real_value(other))),
                      fmt::format("{} must be {} {}", blamed, blame_small ? "<" : ">", other));
+  }
+
+  /// Pairs and exact constraints the solver can honour (docs/mixed.md).
+  void check_formulation() const {
+    using assembly::FormulationType;
+    using fem::PressureSpace;
+    const bool mixed = case_.formulation.type == FormulationType::Mixed;
+    const PressureSpace pressure = case_.formulation.pressure;
+    if (case_.penalty.d == 0 && !mixed)
+      blame({"penalty.d", "formulation.type"},
+            "d = 0 (exact incompressibility) needs a pressure space: the penalty formulation "
+            "would lock (complete rule) or leave σ_H undefined",
+            "set formulation.type = \"mixed\" (e.g. with formulation.pressure = \"P1disc\"), "
+            "or use penalty.d > 0");
+    if (!mixed) return;
+    if (pressure == PressureSpace::Q1)
+      blame({"formulation.pressure"},
+            "the continuous Q1 pressure (Taylor–Hood) is not implemented in the solver: it needs a "
+            "global saddle-point solve (its inf-sup constant is in docs/mixed.md)",
+            "use \"P1disc\" (stable with Q2) or \"P0\"");
+    if (case_.element == fem::ElementKind::Q1 && pressure != PressureSpace::P0)
+      blame({"formulation.pressure", "mesh.element"},
+            fmt::format("Q1 velocity with the {} pressure locks (more pressure than velocity "
+                        "freedom per cell)",
+                        fem::pressure_space_name(pressure)),
+            "with mesh.element = \"Q1\" use formulation.pressure = \"P0\"; or mesh.element = \"Q2\"");
+    if (case_.element == fem::ElementKind::Q1 && case_.penalty.d == 0)
+      blame({"penalty.d", "mesh.element"},
+            "Q1–P0 is not inf-sup stable (Remark 4.3: checkerboard pressure, β_h → 0), so the "
+            "exact constraint d = 0 is refused",
+            "use penalty.d > 0 with Q1–P0, or mesh.element = \"Q2\" with \"P1disc\"");
+  }
+
+  /// Throws for the key (of `names`) that was set last: it is the one to change.
+  [[noreturn]] void blame(std::initializer_list<std::string> names, const std::string& message,
+                          const std::string& hint) const {
+    std::string blamed = *names.begin();
+    for (const std::string& name : names)
+      if (origin(name).order > origin(blamed).order) blamed = name;
+    const Origin where = origin(blamed);
+    throw InputError(where.file, where.line, blamed,
+                     fmt::format("value {}: {}",
+                                 format_key_value(find_case_key(blamed)->get(case_)), message),
+                     hint);
   }
 
   void check_mesh_fits() const {
