@@ -352,7 +352,7 @@ const std::vector<CaseSection>& case_sections() {
       {"geometry", "The half model of the die channel (SPEC §4); lengths are dimensionless."},
       {"mesh", "Uniform square cells of one element kind."},
       {"integration", "Quadrature of the volumetric penalty term (selective integration, SPEC §3)."},
-      {"formulation", "Which form of the a-term is assembled (SPEC §2)."},
+      {"formulation", "Which form of the a-term is assembled, and penalty or mixed (pressure) form of the constraints (SPEC §2, docs/mixed.md)."},
       {"material", "Flow law σ_p = A ε̄̇^α on [rate1, rate2], linear through the origin outside "
                    "(paper eq. 5.4)."},
       {"friction", "Regularised nonlocal Coulomb friction on Γ3 (paper eq. 3.14–3.15)."},
