@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 
@@ -27,7 +28,9 @@ app::Simulation solve_mixed(Real size) {
   return app::simulate(case_);
 }
 
-void check(Real size) {
+/// Solves at `size`, prints the load measures, checks convergence and smoothness;
+/// returns the ram pressure.
+double solve_and_check(Real size) {
   const app::Simulation simulation = solve_mixed(size);
   const post::Results& results = simulation.results;
   const double share = testing::checkerboard_share(simulation.mesh, size,
@@ -37,15 +40,21 @@ void check(Real size) {
               size, results.pressure.ram_reaction, results.pressure.power_balance,
               results.pressure.total_power, results.pressure.mean_hydrostatic_near_ram,
               results.iterations, share, results.timing.get("total"));
-  ASSERT_TRUE(results.converged());
-  // 2 % of the slip-line value: the acceptance bound, not a fit.
-  EXPECT_TRUE(testing::approx(results.pressure.ram_reaction, slip_line, 0.02));
+  std::fflush(stdout);
+  EXPECT_TRUE(results.converged());
+  // Smooth pressure: the cell means' checkerboard share is O(h²) (Q1–P0: ~0.1).
   EXPECT_LT(share, 0.01);
+  return results.pressure.ram_reaction;
 }
 
-TEST(MixedSlipLine, Q2P1discExactIncompressibilityAtH0125) { check(0.125); }
-
-TEST(MixedSlipLine, Q2P1discExactIncompressibilityAtH025) { check(0.25); }
+TEST(MixedSlipLine, Q2P1discExactIncompressibilityWithinTwoPercentAtH0125) {
+  const double coarse = solve_and_check(0.25);
+  const double fine = solve_and_check(0.125);
+  // 2 % of the slip-line value at h = 0.125: the acceptance bound, not a fit.
+  EXPECT_TRUE(testing::approx(fine, slip_line, 0.02));
+  // The error falls as h halves (about first order: the die corner is singular).
+  EXPECT_LT(std::abs(fine - slip_line), 0.75 * std::abs(coarse - slip_line));
+}
 
 }  // namespace
 }  // namespace formflow
