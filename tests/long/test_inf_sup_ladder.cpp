@@ -14,5 +14,5 @@ TEST(InfSupLadder, TableOfDocsMixed) {
   EXPECT_LT(table[4][2].beta, 0.6 * table[4][0].beta);
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

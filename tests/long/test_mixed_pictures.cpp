@@ -41,8 +41,9 @@ io::Case sticking_case(fem::ElementKind element, fem::PressureSpace space, Real 
 void save(const io::Case& case_, const app::Simulation& simulation, const std::string& name,
           const std::function<void(const io::plot::Canvas&, const io::plot::PictureData&)>& draw) {
   const io::plot::PictureData data{case_, simulation.mesh, simulation.results};
-  const std::string png = io::plot::render_png(io::plot::picture_width, io::plot::picture_height,
-                                               [&](io::plot::Canvas& canvas) { draw(canvas, data); });
+  const std::string png =
+      io::plot::render_png(io::plot::picture_width, io::plot::picture_height,
+                           [&](io::plot::Canvas& canvas) { draw(canvas, data); });
   std::ofstream(pictures_dir() / (name + ".png"), std::ios::binary) << png;
 }
 
@@ -52,17 +53,20 @@ TEST(MixedPictures, CheckerboardOfQ1P0AndItsFilterAndTheSmoothQ2P1discPressure) 
   const VectorX raw = -q1p0.results.fields.cell_hydrostatic_stress;
   const VectorX filtered = assembly::filter_checkerboard(q1p0.mesh, size, raw);
   save(q1p0_case, q1p0, "mixed_q1p0_cells", [&](const auto& canvas, const auto& data) {
-    io::plot::draw_cell_pressure(canvas, data, raw, "Q1–P0 cell pressure (= Q1, 1×1 rule), d = 1e-3");
+    io::plot::draw_cell_pressure(canvas, data, raw,
+                                 "Q1–P0 cell pressure (= Q1, 1×1 rule), d = 1e-3");
   });
   save(q1p0_case, q1p0, "mixed_q1p0_filtered", [&](const auto& canvas, const auto& data) {
-    io::plot::draw_cell_pressure(canvas, data, filtered, "Q1–P0 cell pressure after the 2×2 macro filter");
+    io::plot::draw_cell_pressure(canvas, data, filtered,
+                                 "Q1–P0 cell pressure after the 2×2 macro filter");
   });
 
   const io::Case q2_case = sticking_case(fem::ElementKind::Q2, fem::PressureSpace::P1disc, 0.0);
   const app::Simulation q2 = app::simulate(q2_case);
   const VectorX q2_cells = -q2.results.fields.cell_hydrostatic_stress;
   save(q2_case, q2, "mixed_q2p1disc_cells", [&](const auto& canvas, const auto& data) {
-    io::plot::draw_cell_pressure(canvas, data, q2_cells, "Q2–P1disc cell-mean pressure, d = 0 (exact)");
+    io::plot::draw_cell_pressure(canvas, data, q2_cells,
+                                 "Q2–P1disc cell-mean pressure, d = 0 (exact)");
   });
   save(q2_case, q2, "mixed_q2p1disc_pressure", io::plot::draw_pressure);
 
@@ -75,5 +79,5 @@ TEST(MixedPictures, CheckerboardOfQ1P0AndItsFilterAndTheSmoothQ2P1discPressure) 
   EXPECT_GT(q1p0_share, 10.0 * q2_share);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -56,5 +56,5 @@ TEST(MixedSlipLine, Q2P1discExactIncompressibilityWithinTwoPercentAtH0125) {
   EXPECT_LT(std::abs(fine - slip_line), 0.75 * std::abs(coarse - slip_line));
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -33,7 +33,8 @@ inline const std::vector<Pair>& inf_sup_pairs() {
 }
 
 /// β_h per pair (rows) and cell size (columns); prints the markdown table.
-inline std::vector<std::vector<assembly::InfSupEstimate>> inf_sup_table(const std::vector<int>& cells_per_unit) {
+inline std::vector<std::vector<assembly::InfSupEstimate>>
+inf_sup_table(const std::vector<int>& cells_per_unit) {
   const mesh::ChannelGeometry geometry{1.0, 1.0, 0.5, 1.0};
   std::vector<std::vector<assembly::InfSupEstimate>> table;
   std::string header = "| pair |", rule = "|---|";
@@ -49,7 +50,8 @@ inline std::vector<std::vector<assembly::InfSupEstimate>> inf_sup_table(const st
       const mesh::Mesh<2> mesh = mesh::make_channel_mesh(geometry, 1.0 / n, pair.order);
       row.push_back(assembly::inf_sup_constant(mesh, pair.space, pair.filter));
       char cell[64];
-      std::snprintf(cell, sizeof cell, " %.4f (%d null) |", row.back().beta, row.back().n_null_modes);
+      std::snprintf(cell, sizeof cell, " %.4f (%d null) |", row.back().beta,
+                    row.back().n_null_modes);
       line += cell;
     }
     std::printf("%s\n", line.c_str());
@@ -59,4 +61,4 @@ inline std::vector<std::vector<assembly::InfSupEstimate>> inf_sup_table(const st
   return table;
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

@@ -19,7 +19,7 @@ using testing::approx;
 post::Results solve(const std::function<void(io::Case&)>& edit) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.mesh_size = 2.5;  // 4 + 2 cells across: seconds, not minutes
+  case_.mesh_size = 2.5; // 4 + 2 cells across: seconds, not minutes
   edit(case_);
   return app::simulate(case_).results;
 }
@@ -90,12 +90,13 @@ TEST(MixedFormulation, ExactContactIsTheLimitOfTheContactPenalty) {
     difference = std::max(difference, std::abs(exact.contact[k].contact_pressure -
                                                perturbed.contact[k].contact_pressure));
   }
-  EXPECT_GT(largest, 1.0);  // the die face carries the extrusion pressure
+  EXPECT_GT(largest, 1.0); // the die face carries the extrusion pressure
   EXPECT_LT(difference, 1e-3 * largest);
 }
 
 /// Checkerboard share of the cell pressure in the container, x < 8 (away from the die).
-double container_checkerboard(fem::ElementKind element, fem::PressureSpace space, Real d, Real size) {
+double container_checkerboard(fem::ElementKind element, fem::PressureSpace space, Real d,
+                              Real size) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
   case_.element = element;
@@ -108,16 +109,21 @@ double container_checkerboard(fem::ElementKind element, fem::PressureSpace space
   const VectorX filtered = assembly::filter_checkerboard(
       simulation.mesh, size, simulation.results.fields.cell_hydrostatic_stress);
   EXPECT_LT(testing::checkerboard_share(simulation.mesh, size, filtered, 8.0), 1e-12);
-  std::printf("%s-%s h = %g: checkerboard share %.3e\n", std::string(fem::element_name(element)).c_str(),
+  std::printf("%s-%s h = %g: checkerboard share %.3e\n",
+              std::string(fem::element_name(element)).c_str(),
               std::string(fem::pressure_space_name(space)).c_str(), size, share);
   return share;
 }
 
 TEST(MixedFormulation, Q1P0PressureHasACheckerboardThatDoesNotShrinkWithTheMesh) {
-  const double q1p0_coarse = container_checkerboard(fem::ElementKind::Q1, fem::PressureSpace::P0, 1e-3, 1.0);
-  const double q1p0_fine = container_checkerboard(fem::ElementKind::Q1, fem::PressureSpace::P0, 1e-3, 0.5);
-  const double q2_coarse = container_checkerboard(fem::ElementKind::Q2, fem::PressureSpace::P1disc, 0.0, 1.0);
-  const double q2_fine = container_checkerboard(fem::ElementKind::Q2, fem::PressureSpace::P1disc, 0.0, 0.5);
+  const double q1p0_coarse =
+      container_checkerboard(fem::ElementKind::Q1, fem::PressureSpace::P0, 1e-3, 1.0);
+  const double q1p0_fine =
+      container_checkerboard(fem::ElementKind::Q1, fem::PressureSpace::P0, 1e-3, 0.5);
+  const double q2_coarse =
+      container_checkerboard(fem::ElementKind::Q2, fem::PressureSpace::P1disc, 0.0, 1.0);
+  const double q2_fine =
+      container_checkerboard(fem::ElementKind::Q2, fem::PressureSpace::P1disc, 0.0, 0.5);
   // A smooth pressure's cell means carry a checkerboard share O(h²) (O(h) near
   // singular points): halving h must at least halve it. Q1–P0's spurious mode
   // is O(1): it does not shrink.
@@ -125,5 +131,5 @@ TEST(MixedFormulation, Q1P0PressureHasACheckerboardThatDoesNotShrinkWithTheMesh)
   EXPECT_LT(q2_fine, 0.5 * q2_coarse);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -21,7 +21,8 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
     : mesh_(mesh), penalty_(penalty), formulation_(formulation) {
   contact_multiplier_.assign(n_contact_points, 0.0);
   contact_weight_.assign(n_contact_points, 0.0);
-  if (!has_pressure_space()) return;
+  if (!has_pressure_space())
+    return;
   FF_ASSERT(fem::is_discontinuous(formulation.pressure),
             "a continuous pressure cannot be condensed cell by cell");
   n_pressure_ = fem::pressure_functions_per_cell<dim>(formulation.pressure);
@@ -42,12 +43,12 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
       // div(φ_a e_i) = ∂_i φ_a: the flattened gradient is the divergence row.
       const auto& grad = values.gradients(q);
       const Eigen::Map<const VectorX> divergence_row(grad.data(), n_local);
-      divergence.noalias() += values.JxW(q) * basis[q] * divergence_row.transpose();  // ψ div φ dx
-      mass.noalias() += values.JxW(q) * basis[q] * basis[q].transpose();              // ψ ψ dx
+      divergence.noalias() += values.JxW(q) * basis[q] * divergence_row.transpose(); // ψ div φ dx
+      mass.noalias() += values.JxW(q) * basis[q] * basis[q].transpose();             // ψ ψ dx
       integral += values.JxW(q) * basis[q];
     }
     divergence_.push_back(std::move(divergence));
-    inverse_mass_.push_back(mass.inverse());  // at most 2^dim × 2^dim, SPD
+    inverse_mass_.push_back(mass.inverse()); // at most 2^dim × 2^dim, SPD
     mass_.push_back(std::move(mass));
     basis_integral_.push_back(std::move(integral));
   }
@@ -61,10 +62,10 @@ void ConstraintMultipliers<dim>::add_cell_terms(Index cell, std::span<const Real
   const MatrixX& divergence = divergence_[cell];
   Real weight = 0.0;
   if (is_exact_pressure()) {
-    const Real mean_viscosity =
-        std::accumulate(viscosity.begin(), viscosity.end(), 0.0) / static_cast<Real>(viscosity.size());
+    const Real mean_viscosity = std::accumulate(viscosity.begin(), viscosity.end(), 0.0) /
+                                static_cast<Real>(viscosity.size());
     weight = augmentation_[cell] = formulation_.augmentation * mean_viscosity;
-    local_load.noalias() -= divergence.transpose() * multiplier_[cell];  // −Bᵀ λ
+    local_load.noalias() -= divergence.transpose() * multiplier_[cell]; // −Bᵀ λ
   } else {
     weight = 1.0 / penalty_.d;
   }
@@ -79,12 +80,13 @@ void ConstraintMultipliers<dim>::add_contact_terms(Index first_point,
   VectorX normal_row(n * dim);
   for (int q = 0; q < values.n_points(); ++q) {
     for (int a = 0; a < n; ++a)
-      for (int i = 0; i < dim; ++i) normal_row[a * dim + i] = values.shape(q)[a] * values.normal(q)[i];
+      for (int i = 0; i < dim; ++i)
+        normal_row[a * dim + i] = values.shape(q)[a] * values.normal(q)[i];
     const Index k = first_point + q;
     contact_weight_[k] = values.JxW(q);
     local_matrix.noalias() += (formulation_.contact_augmentation * values.JxW(q)) * normal_row *
-                              normal_row.transpose();                    // r_N u_N v_N dΓ
-    local_load.noalias() -= (contact_multiplier_[k] * values.JxW(q)) * normal_row;  // −λ v_N dΓ
+                              normal_row.transpose(); // r_N u_N v_N dΓ
+    local_load.noalias() -= (contact_multiplier_[k] * values.JxW(q)) * normal_row; // −λ v_N dΓ
   }
 }
 
@@ -92,7 +94,8 @@ template <int dim>
 VectorX ConstraintMultipliers<dim>::cell_velocity(Index cell, const VectorX& u) const {
   VectorX local(mesh_.nodes_per_cell() * dim);
   for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
-    local.template segment<dim>(a * dim) = u.template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, cell), 0));
+    local.template segment<dim>(a * dim) =
+        u.template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, cell), 0));
   return local;
 }
 
@@ -102,7 +105,8 @@ Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> 
   if (is_exact_pressure()) {
     Real change_norm = 0.0, norm = 0.0;
     for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
-      const VectorX step = augmentation_[cell] * (inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u)));
+      const VectorX step = augmentation_[cell] *
+                           (inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u)));
       multiplier_[cell] += step;
       change_norm += step.dot(mass_[cell] * step);
       norm += multiplier_[cell].dot(mass_[cell] * multiplier_[cell]);
@@ -118,16 +122,19 @@ Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> 
       change_norm += step * step * contact_weight_[k];
       norm += contact_multiplier_[k] * contact_multiplier_[k] * contact_weight_[k];
     }
-    if (norm > 0) change = std::max(change, std::sqrt(change_norm / norm));
+    if (norm > 0)
+      change = std::max(change, std::sqrt(change_norm / norm));
   }
   return change;
 }
 
 template <int dim>
 VectorX ConstraintMultipliers<dim>::pressure_coefficients(Index cell, const VectorX& u) const {
-  const VectorX projected_divergence = inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u));
-  if (is_exact_pressure()) return multiplier_[cell] + augmentation_[cell] * projected_divergence;
-  return projected_divergence / penalty_.d;  // σ_H = (1/d) P div u (eq. 3.6 in the pressure space)
+  const VectorX projected_divergence =
+      inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u));
+  if (is_exact_pressure())
+    return multiplier_[cell] + augmentation_[cell] * projected_divergence;
+  return projected_divergence / penalty_.d; // σ_H = (1/d) P div u (eq. 3.6 in the pressure space)
 }
 
 template <int dim>
@@ -135,8 +142,7 @@ Real ConstraintMultipliers<dim>::pressure_integral(Index cell, const VectorX& u)
   return basis_integral_[cell].dot(pressure_coefficients(cell, u));
 }
 
-template <int dim>
-Real ConstraintMultipliers<dim>::pressure_power(const VectorX& u) const {
+template <int dim> Real ConstraintMultipliers<dim>::pressure_power(const VectorX& u) const {
   Real power = 0.0;
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell)
     power += pressure_coefficients(cell, u).dot(divergence_[cell] * cell_velocity(cell, u));
@@ -153,4 +159,4 @@ Real ConstraintMultipliers<dim>::contact_pressure(Index k, Real normal_velocity)
 template class ConstraintMultipliers<2>;
 template class ConstraintMultipliers<3>;
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -27,9 +27,9 @@ struct Formulation {
   /// the cell's mean secant viscosity, so that every cell's constraint converges
   /// at the rate ≈ 1/(1 + ρ β_h²) whatever its viscosity.
   Real augmentation = 1e3;
-  Real contact_augmentation = 1e6;  ///< r_N of the contact term when d_N = 0 (like 1/d_N)
-  Real uzawa_tolerance = 1e-8;      ///< relative multiplier change that ends the Uzawa steps
-  int uzawa_max_steps = 50;         ///< Uzawa steps per secant iteration
+  Real contact_augmentation = 1e6; ///< r_N of the contact term when d_N = 0 (like 1/d_N)
+  Real uzawa_tolerance = 1e-8;     ///< relative multiplier change that ends the Uzawa steps
+  int uzawa_max_steps = 50;        ///< Uzawa steps per secant iteration
 };
 
 /// Per-cell matrices of the discontinuous pressure space and the multiplier state.
@@ -42,9 +42,8 @@ struct Formulation {
 /// and each Uzawa step sets λ_e ← λ_e + r_e M⁻¹ B u_e (fixed point: M⁻¹ B u = 0).
 /// Exact contact (d_N = 0) is the same at each Γ3 quadrature point: the term
 /// r_N u_N v_N, the load −λ_k v_N and λ_k ← λ_k + r_N u_N(x_k) (−σ_N = λ).
-template <int dim>
-class ConstraintMultipliers {
- public:
+template <int dim> class ConstraintMultipliers {
+public:
   /// `full_rule` integrates B and M exactly on affine cells; `n_contact_points`
   /// is the number of Γ3 quadrature points (FormingProblem::contact_state order).
   ConstraintMultipliers(const mesh::Mesh<dim>& mesh, const physics::Penalty& penalty,
@@ -83,14 +82,14 @@ class ConstraintMultipliers {
   const Formulation& formulation() const { return formulation_; }
   const physics::Penalty& penalty() const { return penalty_; }
 
- private:
+private:
   VectorX cell_velocity(Index cell, const VectorX& u) const;
 
   const mesh::Mesh<dim>& mesh_;
   physics::Penalty penalty_;
   Formulation formulation_;
   int n_pressure_ = 0;
-  std::vector<MatrixX> divergence_;      ///< B per cell, n_pressure × n_local
+  std::vector<MatrixX> divergence_; ///< B per cell, n_pressure × n_local
   std::vector<MatrixX> mass_, inverse_mass_;
   std::vector<VectorX> basis_integral_;  ///< ∫ ψ_i dx per cell
   std::vector<VectorX> multiplier_;      ///< λ per cell (d = 0)
@@ -99,4 +98,4 @@ class ConstraintMultipliers {
   std::vector<Real> contact_weight_;     ///< JxW per Γ3 point, filled by add_contact_terms
 };
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -10,8 +10,8 @@ namespace formflow::assembly {
 /// β_h = min_q max_v (q, div v) / (|v|_1 ‖q‖_0) over the mesh's velocity space
 /// (all boundary nodes fixed: H¹₀) and the pressure space, q ⊥ the null modes.
 struct InfSupEstimate {
-  Real beta = 0.0;           ///< √ of the smallest eigenvalue of S q = λ M q above the null modes
-  int n_null_modes = 0;      ///< pressures with (q, div v) = 0 ∀v: the constant and spurious modes
+  Real beta = 0.0;      ///< √ of the smallest eigenvalue of S q = λ M q above the null modes
+  int n_null_modes = 0; ///< pressures with (q, div v) = 0 ∀v: the constant and spurious modes
   Index n_velocity_dofs = 0; ///< free velocity dofs
   Index n_pressure_dofs = 0; ///< pressure dofs (after the filter)
 };
@@ -30,4 +30,4 @@ InfSupEstimate inf_sup_constant(const mesh::Mesh<2>& mesh, fem::PressureSpace sp
 /// cells of incomplete macro-elements keep their values. `cell_values` is a P0 field.
 VectorX filter_checkerboard(const mesh::Mesh<2>& mesh, Real size, const VectorX& cell_values);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -22,24 +22,28 @@ enum class PressureSpace { P0, P1disc, Q1disc, Q1 };
 
 inline std::string_view pressure_space_name(PressureSpace space) {
   switch (space) {
-    case PressureSpace::P0: return "P0";
-    case PressureSpace::P1disc: return "P1disc";
-    case PressureSpace::Q1disc: return "Q1disc";
-    case PressureSpace::Q1: return "Q1";
+  case PressureSpace::P0:
+    return "P0";
+  case PressureSpace::P1disc:
+    return "P1disc";
+  case PressureSpace::Q1disc:
+    return "Q1disc";
+  case PressureSpace::Q1:
+    return "Q1";
   }
   return "?";
 }
 
-inline bool is_discontinuous(PressureSpace space) { return space != PressureSpace::Q1; }
+inline bool is_discontinuous(PressureSpace space) {
+  return space != PressureSpace::Q1;
+}
 
 /// Number of pressure basis functions on one cell.
-template <int dim>
-int pressure_functions_per_cell(PressureSpace space);
+template <int dim> int pressure_functions_per_cell(PressureSpace space);
 
 /// Values of the cell's pressure basis functions at reference point `xi`
 /// (length pressure_functions_per_cell). For Q1 these are the vertex (Q1)
 /// shape functions in the lexicographic vertex order of fem/lagrange.hpp.
-template <int dim>
-VectorX tabulate_pressure(PressureSpace space, const Point<dim>& xi);
+template <int dim> VectorX tabulate_pressure(PressureSpace space, const Point<dim>& xi);
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

@@ -15,9 +15,10 @@ namespace formflow::solvers {
 /// Formulation::uzawa_tolerance (or uzawa_max_steps). The secant step counts
 /// as converged only when ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < δ and the Uzawa steps converged.
 template <int dim>
-SecantOutcome uzawa_secant_iteration(const assembly::FormingProblem<dim>& problem,
-                                     LinearSolver& solver, const IterationControl& control,
-                                     const std::function<void(const IterationRecord&)>& on_iteration,
-                                     PhaseTimes& times);
+SecantOutcome
+uzawa_secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+                       const IterationControl& control,
+                       const std::function<void(const IterationRecord&)>& on_iteration,
+                       PhaseTimes& times);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

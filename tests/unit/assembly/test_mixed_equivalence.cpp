@@ -15,7 +15,7 @@ namespace formflow::assembly {
 namespace {
 
 mesh::Mesh<2> small_channel(int order) {
-  const mesh::ChannelGeometry geometry{2.0, 2.0, 1.0, 2.0};  // L_c, H_in, H_out, L_e
+  const mesh::ChannelGeometry geometry{2.0, 2.0, 1.0, 2.0}; // L_c, H_in, H_out, L_e
   return mesh::make_channel_mesh(geometry, 0.5, order);
 }
 
@@ -54,10 +54,12 @@ std::pair<MatrixX, MatrixX> penalty_and_mixed(int order, int points, fem::Pressu
   LinearSystem a = penalty.plan().make_system(), b = mixed.plan().make_system();
   penalty.assemble(&w, a);
   mixed.assemble(&w, b);
-  return {MatrixX(a.matrix), MatrixX(b.matrix)};  // lower triangles
+  return {MatrixX(a.matrix), MatrixX(b.matrix)}; // lower triangles
 }
 
-Real relative_difference(const MatrixX& a, const MatrixX& b) { return (a - b).norm() / a.norm(); }
+Real relative_difference(const MatrixX& a, const MatrixX& b) {
+  return (a - b).norm() / a.norm();
+}
 
 // The volumetric block is (1/d)·1e3 times larger than the viscous one, so round-off
 // is relative to ‖K‖: 1e-13 leaves room for the few hundred summed terms per entry.
@@ -72,7 +74,7 @@ TEST(MixedEquivalence, Q1PenaltyWithOnePointRuleIsQ1P0) {
 TEST(MixedEquivalence, Q1CompleteRuleIsNotQ1P0) {
   // The complete 2×2 rule is the locking Q1–Q1disc pairing, clearly different.
   const auto [penalty, mixed] = penalty_and_mixed(1, 2, fem::PressureSpace::P0);
-  EXPECT_GT(relative_difference(penalty, mixed), 1e3 * round_off);  // not round-off
+  EXPECT_GT(relative_difference(penalty, mixed), 1e3 * round_off); // not round-off
 }
 
 TEST(MixedEquivalence, Q2PenaltyWithTwoByTwoRuleIsQ2Q1disc) {
@@ -91,8 +93,8 @@ TEST(MixedEquivalence, Q2TwoByTwoDiffersFromQ2P1discOnlyInTheBilinearPressureMod
   const Eigen::SelfAdjointEigenSolver<MatrixX> eigen(difference, Eigen::EigenvaluesOnly);
   const VectorX& lambda = eigen.eigenvalues();
   const Real scale = lambda.cwiseAbs().maxCoeff();
-  EXPECT_GT(scale, 1e-3 * MatrixX(penalty).norm());  // not equal: P1disc is not Q1disc
-  EXPECT_GT(lambda.minCoeff(), -1e-10 * scale);       // semidefinite
+  EXPECT_GT(scale, 1e-3 * MatrixX(penalty).norm()); // not equal: P1disc is not Q1disc
+  EXPECT_GT(lambda.minCoeff(), -1e-10 * scale);     // semidefinite
   const Index rank = (lambda.array() > 1e-10 * scale).count();
   const Index n_cells = small_channel(2).n_cells();
   EXPECT_LE(rank, n_cells);
@@ -102,8 +104,8 @@ TEST(MixedEquivalence, Q2TwoByTwoDiffersFromQ2P1discOnlyInTheBilinearPressureMod
 TEST(MixedEquivalence, Q2PenaltyWithOnePointRuleIsNotQ2P0) {
   // Remark 5.1: Q2 with 1×1 is not {Q2, P0}: ∫div u over the cell ≠ |cell|·div u(centre).
   const auto [penalty, mixed] = penalty_and_mixed(2, 1, fem::PressureSpace::P0);
-  EXPECT_GT(relative_difference(penalty, mixed), 1e3 * round_off);  // not round-off
+  EXPECT_GT(relative_difference(penalty, mixed), 1e3 * round_off); // not round-off
 }
 
-}  // namespace
-}  // namespace formflow::assembly
+} // namespace
+} // namespace formflow::assembly

@@ -16,7 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 
 ::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  if (text.find(part) != std::string::npos)
+    return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
 }
 
@@ -61,8 +62,9 @@ TEST(FormulationKeys, UnstableOrUnimplementedPairsAreRefused) {
       refusal("", {{"formulation.type", "mixed"}, {"formulation.pressure", "Q1"}});
   EXPECT_EQ(taylor_hood.key, "formulation.pressure");
   const InputError locking = refusal(
-      "", {{"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}, {"mesh.element", "Q1"}});
-  EXPECT_EQ(locking.key, "mesh.element");  // set last: the one to change
+      "",
+      {{"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}, {"mesh.element", "Q1"}});
+  EXPECT_EQ(locking.key, "mesh.element"); // set last: the one to change
   EXPECT_TRUE(has_text(locking.hint, "P0"));
   const InputError checkerboard = refusal("", {{"mesh.element", "Q1"},
                                                {"formulation.type", "mixed"},
@@ -73,7 +75,8 @@ TEST(FormulationKeys, UnstableOrUnimplementedPairsAreRefused) {
 }
 
 TEST(FormulationKeys, RefusalInAFileNamesItsLine) {
-  const fs::path path = fs::temp_directory_path() / ("formflow-formulation-" + std::to_string(getpid()) + ".toml");
+  const fs::path path =
+      fs::temp_directory_path() / ("formflow-formulation-" + std::to_string(getpid()) + ".toml");
   std::ofstream(path) << "[formulation]\ntype = \"penalty\"\n\n[penalty]\nd = 0\n";
   const InputError error = refusal(path.string(), {});
   fs::remove(path);
@@ -81,5 +84,5 @@ TEST(FormulationKeys, RefusalInAFileNamesItsLine) {
   EXPECT_EQ(error.line, 5);
 }
 
-}  // namespace
-}  // namespace formflow::io
+} // namespace
+} // namespace formflow::io

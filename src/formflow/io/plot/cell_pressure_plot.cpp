@@ -22,14 +22,14 @@ mesh::Mesh<2> broken_mesh(const mesh::Mesh<2>& mesh) {
       broken.cells(a, cell) = cell * n + a;
       broken.nodes.col(cell * n + a) = mesh.nodes.col(mesh.cells(a, cell));
     }
-  broken.facets = mesh.facets;  // facets name (cell, local face): unchanged
+  broken.facets = mesh.facets; // facets name (cell, local face): unchanged
   return broken;
 }
 
-}  // namespace
+} // namespace
 
-void draw_cell_pressure(const Canvas& canvas, const PictureData& data,
-                        const VectorX& cell_pressure, const std::string& title) {
+void draw_cell_pressure(const Canvas& canvas, const PictureData& data, const VectorX& cell_pressure,
+                        const std::string& title) {
   draw_title(canvas, title, run_description(data.case_, data.results));
   const FieldLayout layout = field_layout(data.mesh);
   if (data.mesh.n_cells() == 0 || cell_pressure.size() != data.mesh.n_cells()) {
@@ -39,7 +39,8 @@ void draw_cell_pressure(const Canvas& canvas, const PictureData& data,
   const mesh::Mesh<2> broken = broken_mesh(data.mesh);
   VectorX nodal(broken.n_nodes());
   for (Index cell = 0; cell < data.mesh.n_cells(); ++cell)
-    nodal.segment(cell * data.mesh.nodes_per_cell(), data.mesh.nodes_per_cell()).setConstant(cell_pressure[cell]);
+    nodal.segment(cell * data.mesh.nodes_per_cell(), data.mesh.nodes_per_cell())
+        .setConstant(cell_pressure[cell]);
   std::vector<double> sorted(cell_pressure.data(), cell_pressure.data() + cell_pressure.size());
   std::sort(sorted.begin(), sorted.end());
   // The same 0.5 % clipping at each end as pressure.png (singular die corner).
@@ -57,4 +58,4 @@ void draw_cell_pressure(const Canvas& canvas, const PictureData& data,
   draw_colour_bar(canvas, layout.colour_bar, scale, "cell pressure p = −σ_{H} [units of σ_{p}]");
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot
