@@ -18,11 +18,10 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
   PowerTerms power;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     problem.gather(cell, &u, coordinates, velocities);
-    full_values.reinit(coordinates);
-    volumetric_values.reinit(coordinates);
+    problem.reinit(full_values, coordinates);
+    problem.reinit(volumetric_values, coordinates);
     for (int q = 0; q < full_values.n_points(); ++q) {
-      const Tensor3 rate = physics::strain_rate<dim>(
-          physics::velocity_gradient<dim>(velocities, full_values.gradients(q)));
+      const Tensor3 rate = problem.strain_rate_at(full_values, velocities, q);
       const Real equivalent = physics::equivalent_strain_rate(rate);
       const Tensor3 measured = deviatoric ? physics::deviator(rate) : rate;
       power.plastic_dissipation += settings.law.dissipation(equivalent) * full_values.JxW(q);
@@ -31,7 +30,9 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
     }
     if (mixed) continue;  // the pressure term's power follows the loop
     for (int q = 0; q < volumetric_values.n_points(); ++q) {
-      const Real volumetric = physics::velocity_gradient<dim>(velocities, volumetric_values.gradients(q)).trace();
+      const Real volumetric =
+          physics::velocity_gradient<dim>(velocities, volumetric_values.gradients(q)).trace() +
+          problem.hoop_rate_at(volumetric_values, velocities, q);
       power.volumetric_penalty += volumetric * volumetric / settings.penalty.d * volumetric_values.JxW(q);
     }
   }
@@ -40,7 +41,7 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
   for (const auto& point : contact) {
     // −σ_N u_N dΓ: u_N²/d_N for the penalty, → 0 for the exact contact.
     power.contact_penalty += point.contact_pressure * point.normal_velocity * point.weight;
-    power.friction += point.friction_weight * point.tangential_velocity.squaredNorm() * point.weight;
+    power.friction += point.friction_traction.dot(point.tangential_velocity) * point.weight;
   }
   return power;
 }
@@ -57,14 +58,15 @@ Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, con
     if (facet.label != label || counted[facet.cell]) continue;
     counted[facet.cell] = true;
     problem.gather(facet.cell, &u, coordinates, velocities);
-    values.reinit(coordinates);
+    problem.reinit(values, coordinates);
     if (problem.multipliers() && problem.multipliers()->has_pressure_space()) {
       integral -= problem.multipliers()->pressure_integral(facet.cell, u);  // −σ_H dx
       for (int q = 0; q < values.n_points(); ++q) area += values.JxW(q);
       continue;
     }
     for (int q = 0; q < values.n_points(); ++q) {
-      const Real volumetric = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace();
+      const Real volumetric = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() +
+                              problem.hoop_rate_at(values, velocities, q);
       integral += -volumetric / problem.settings().penalty.d * values.JxW(q);  // −σ_H dx
       area += values.JxW(q);
     }

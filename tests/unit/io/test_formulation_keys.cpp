@@ -3,6 +3,7 @@
 // (key, file, line, hint).
 #include "formflow/core/error.hpp"
 #include "formflow/io/case.hpp"
+#include "formflow/io/case_json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,6 +43,12 @@ TEST(FormulationKeys, MixedWithExactConstraintsIsAccepted) {
   EXPECT_EQ(case_.penalty.d_n, 0.0);
 }
 
+TEST(FormulationKeys, MixedIsWrittenToTheResolvedCase) {
+  const nlohmann::json json = case_to_json(load_case("", {{"formulation.type", "mixed"}}));
+  EXPECT_EQ(json["formulation"]["type"], "mixed");
+  EXPECT_EQ(json["formulation"]["pressure"], "P1disc");
+}
+
 TEST(FormulationKeys, ExactContactIsAcceptedWithThePenaltyFormulation) {
   EXPECT_EQ(load_case("", {{"penalty.dN", "0"}}).penalty.d_n, 0.0);
 }
@@ -72,6 +79,16 @@ TEST(FormulationKeys, UnstableOrUnimplementedPairsAreRefused) {
                                                {"penalty.d", "0"}});
   EXPECT_EQ(checkerboard.key, "penalty.d");
   EXPECT_TRUE(has_text(checkerboard.message, "inf-sup"));
+}
+
+TEST(FormulationKeys, CombinationsNotYetSupportedAreRefused) {
+  const InputError axisymmetric = refusal(
+      "", {{"formulation.type", "mixed"}, {"geometry.symmetry", "axisymmetric"}});
+  EXPECT_EQ(axisymmetric.key, "geometry.symmetry");
+  const InputError exact_friction =
+      refusal("", {{"friction.regularization", "none"}, {"penalty.dN", "0"}});
+  EXPECT_EQ(exact_friction.key, "penalty.dN");
+  EXPECT_TRUE(has_text(exact_friction.hint, "regularized"));
 }
 
 TEST(FormulationKeys, RefusalInAFileNamesItsLine) {
