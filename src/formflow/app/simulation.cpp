@@ -8,6 +8,7 @@
 #include "formflow/solvers/augmented_lagrangian.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
+#include "formflow/solvers/uzawa_iteration.hpp"
 
 #include <chrono>
 
@@ -45,6 +46,17 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     ScopedTimer timer(results.timing, "setup");
     problem = std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, settings_of(case_));
   }
+  // Mixed formulation and exact constraints (issue 5): pressures condensed cell
+  // by cell keep the velocity system SPD, so CHOLMOD serves every formulation.
+  // Exact friction (friction.regularization = "none") with d = 0 or d_N = 0 is
+  // refused by the case validation: one multiplier loop at a time.
+  std::unique_ptr<assembly::ConstraintMultipliers<2>> constraint_multipliers;
+  if (case_.formulation.type == assembly::FormulationType::Mixed || case_.penalty.d_n == 0) {
+    constraint_multipliers = std::make_unique<assembly::ConstraintMultipliers<2>>(
+        simulation.mesh, case_.penalty, case_.formulation, problem->full_rule(),
+        problem->n_contact_points());
+    problem->attach_multipliers(constraint_multipliers.get());
+  }
   auto solver = solvers::make_cholmod_solver();
   solvers::SecantOutcome outcome;
   assembly::FrictionMultipliers<2> multipliers;
@@ -57,8 +69,13 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
     results.augmentation = {augmented.augmentations, augmented.multiplier_change};
-  } else if (case_.solver.method == solvers::NonlinearMethod::Newton && !problem->axisymmetric()) {
-    // Newton's tangent has no hoop terms yet: axisymmetric cases run the secant iteration.
+  } else if (constraint_multipliers && constraint_multipliers->needs_uzawa()) {
+    outcome = solvers::uzawa_secant_iteration(*problem, *solver, case_.solver, on_iteration,
+                                              results.timing);
+  } else if (case_.solver.method == solvers::NonlinearMethod::Newton && !problem->axisymmetric() &&
+             case_.formulation.type == assembly::FormulationType::Penalty) {
+    // Newton's tangent has neither hoop terms nor the condensed mixed pressure yet:
+    // axisymmetric and mixed cases run the secant iteration.
     outcome =
         solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
   } else {

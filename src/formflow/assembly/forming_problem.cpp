@@ -116,7 +116,9 @@ std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(
       const Point<dim> velocity = velocities * facet_values.shape(q);
       point.normal_velocity = velocity.dot(point.normal);
       point.tangential_velocity = velocity - point.normal_velocity * point.normal;
-      point.contact_pressure = point.normal_velocity / settings_.penalty.d_n;  // −σ_N (eq. 3.6)
+      point.contact_pressure =
+          multipliers_ ? multipliers_->contact_pressure(static_cast<Index>(state.size()), point.normal_velocity)
+                       : point.normal_velocity / settings_.penalty.d_n;  // −σ_N (eq. 3.6)
       state.push_back(point);
     }
   }
@@ -159,6 +161,7 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   const int n_local = mesh_.nodes_per_cell() * dim;
   MatrixX local_matrix(n_local, n_local);
+  VectorX local_load(n_local);
   std::vector<Real> viscosity(full_rule_.size());
   const Real initial_viscosity = settings_.law.secant_viscosity(settings_.initial_rate);
 
@@ -175,6 +178,7 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
       viscosity[q] = settings_.law.secant_viscosity(physics::equivalent_strain_rate(rate));
     }
     local_matrix.setZero();
+    local_load.setZero();
     add_viscous_term<dim>(full_values, viscosity, settings_.viscous_strain, local_matrix);
     if constexpr (dim == 2) {
       if (axisymmetric()) {
@@ -182,9 +186,14 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
         add_volumetric_penalty_axisymmetric(volumetric_values, settings_.penalty.d, local_matrix);
       }
     }
-    if (!axisymmetric()) add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
-    assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_matrix);
+    if (multipliers_ && multipliers_->has_pressure_space())
+      multipliers_->add_cell_terms(cell, viscosity, local_matrix, local_load);
+    else if (!axisymmetric())
+      add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
+    assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_matrix,
+                     local_load);
     plan_->scatter(cell, local_matrix, constraints_.values, system);
+    if (multipliers_ && multipliers_->needs_uzawa()) scatter_load(cell, local_load, system);
     if (with_friction && has_exact_friction())
       add_friction_loads(cell, state, coordinates, facet_values, system);
   }
@@ -221,17 +230,34 @@ template <int dim>
 void FormingProblem<dim>::assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
                                            const typename fem::CellValues<dim>::Gradients& coordinates,
                                            fem::FacetValues<dim>& facet_values,
-                                           MatrixX& local_matrix) const {
+                                           MatrixX& local_matrix, VectorX& local_load) const {
   const int n_q = facet_rule_.size();
   std::vector<Real> weight(n_q, 0.0);
   for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
     const Index position = cell_contact_[k];
     reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
-    add_contact_penalty<dim>(facet_values, settings_.penalty.d_n, local_matrix);
+    if (multipliers_ && multipliers_->is_exact_contact())
+      multipliers_->add_contact_terms(position * n_q, facet_values, local_matrix, local_load);
+    else
+      add_contact_penalty<dim>(facet_values, settings_.penalty.d_n, local_matrix);
     if (!state) continue;
     for (int q = 0; q < n_q; ++q) weight[q] = (*state)[position * n_q + q].friction_weight;
     add_friction_term<dim>(facet_values, weight, local_matrix);
   }
+}
+
+template <int dim>
+void FormingProblem<dim>::scatter_load(Index cell, const VectorX& local_load,
+                                       LinearSystem& system) const {
+  for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
+    for (int i = 0; i < dim; ++i) {
+      const Index dof = fem::dof_of<dim>(mesh_.cells(a, cell), i);
+      const Real load = local_load[a * dim + i];
+      if (const Index free = plan_->free_index(dof); free >= 0)
+        system.rhs[free] += load;
+      else
+        system.prescribed_loads[plan_->prescribed_index(dof)] += load;
+    }
 }
 
 template <int dim>

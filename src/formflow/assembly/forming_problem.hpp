@@ -3,6 +3,7 @@
 // linearisation K(w) u = F (eq. 5.3): assembly of the global system for a given w.
 #pragma once
 
+#include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/assembly/constraints.hpp"
 #include "formflow/assembly/friction_multipliers.hpp"
 #include "formflow/assembly/sparsity.hpp"
@@ -107,6 +108,15 @@ class FormingProblem {
 
   /// Process force: the summed reaction K_c· u − F_c on the driven dofs.
   Real driven_force(const LinearSystem& system, const VectorX& u) const;
+  /// Mixed formulation and exact constraints (issue 5): the pressure term and
+  /// the contact term come from `multipliers` (not owned; may be null = the
+  /// penalty terms of eq. 3.8). Assembly records each cell's augmentation in it.
+  void attach_multipliers(ConstraintMultipliers<dim>* multipliers) { multipliers_ = multipliers; }
+  ConstraintMultipliers<dim>* multipliers() const { return multipliers_; }
+  /// Number of Γ3 quadrature points (the length of contact_state()).
+  Index n_contact_points() const {
+    return static_cast<Index>(contact_facets_.size()) * facet_rule_.size();
+  }
   /// Measure of the driven end (ram height, or exit half height for drawing).
   Real driven_height() const { return driven_height_; }
 
@@ -145,7 +155,11 @@ class FormingProblem {
                          std::vector<Point<dim>>& slip_duals) const;
   void assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
                         const typename fem::CellValues<dim>::Gradients& coordinates,
-                        fem::FacetValues<dim>& facet_values, MatrixX& local_matrix) const;
+                        fem::FacetValues<dim>& facet_values, MatrixX& local_matrix,
+                        VectorX& local_load) const;
+  /// Adds a cell's load vector (node-major local dofs) to the rhs and, on
+  /// prescribed dofs, to LinearSystem::prescribed_loads.
+  void scatter_load(Index cell, const VectorX& local_load, LinearSystem& system) const;
   void add_friction_loads(Index cell, const std::vector<ContactPoint<dim>>& state,
                           const typename fem::CellValues<dim>::Gradients& coordinates,
                           fem::FacetValues<dim>& facet_values, LinearSystem& system) const;
@@ -161,6 +175,7 @@ class FormingProblem {
   std::vector<Index> cell_contact_;         ///< positions in contact_facets_
   std::unique_ptr<physics::NonlocalAverage> average_;
   Real driven_height_ = 0.0;
+  ConstraintMultipliers<dim>* multipliers_ = nullptr;
 };
 
 }  // namespace formflow::assembly

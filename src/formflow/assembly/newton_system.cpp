@@ -36,7 +36,8 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
                                           const NewtonDuals<dim>& duals, LinearSystem& secant,
                                           LinearSystem* tangent) const {
   // Plane strain with regularised friction only: no hoop terms, no multipliers here.
-  FF_ASSERT(!axisymmetric() && !has_exact_friction(), "Newton covers the plane regularised problem");
+  FF_ASSERT(!axisymmetric() && !has_exact_friction() && !multipliers_,
+            "Newton covers the plane regularised penalty problem");
   ScatterPlan::clear(secant);
   if (tangent) ScatterPlan::clear(*tangent);
   std::vector<ContactPoint<dim>> state = contact_state(u);
@@ -53,6 +54,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   const int n_local = mesh_.nodes_per_cell() * dim;
   MatrixX local_secant(n_local, n_local), local_tangent(n_local, n_local);
+  VectorX unused_load = VectorX::Zero(n_local);  // loads come only from mixed multipliers
   const int n_q = full_rule_.size(), n_face_q = facet_rule_.size();
   std::vector<Real> viscosity(n_q), coefficient_a(n_q), coefficient_b(n_q);
   std::vector<Tensor3> deviators(n_q), cell_duals(n_q);
@@ -79,7 +81,8 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
     local_secant.setZero();
     add_viscous_term<dim>(full_values, viscosity, settings_.viscous_strain, local_secant);
     add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_secant);
-    assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_secant);
+    assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_secant,
+                     unused_load);
     plan_->scatter(cell, local_secant, constraints_.values, secant);
     if (!tangent) continue;
 

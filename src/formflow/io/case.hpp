@@ -2,6 +2,7 @@
 // A fully resolved, validated case: every parameter the solver consumes.
 #pragma once
 
+#include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/fem/lagrange.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/physics/flow_law.hpp"
@@ -27,6 +28,7 @@ struct Case {
   int volumetric_points = 2;  ///< Gauss points per direction of the volumetric (penalty) term
   physics::PowerLaw material;
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
+  assembly::Formulation formulation;  ///< penalty or mixed; exact-constraint (Uzawa) settings
   physics::Friction friction;
   physics::Penalty penalty;
   solvers::IterationControl solver;

@@ -168,6 +168,7 @@ class CaseBuilder {
     check_die();
     check_mesh_fits();
     check_flow_law();
+    check_formulation();
   }
 
   Case finish(std::string source) {
@@ -213,6 +214,61 @@ class CaseBuilder {
                      "the flow law violates condition (2.11): " + *violation,
                      "choose parameters with σ_p increasing and σ_p′ ≤ σ_p/ε̄̇ (rate exponent in "
                      "(0, 1])");
+  }
+
+  /// Pairs and exact constraints the solver can honour (docs/mixed.md).
+  void check_formulation() const {
+    using assembly::FormulationType;
+    using fem::PressureSpace;
+    const bool mixed = case_.formulation.type == FormulationType::Mixed;
+    const PressureSpace pressure = case_.formulation.pressure;
+    if (case_.penalty.d == 0 && !mixed)
+      blame({"penalty.d", "formulation.type"},
+            "d = 0 (exact incompressibility) needs a pressure space: the penalty formulation "
+            "would lock (complete rule) or leave σ_H undefined",
+            "set formulation.type = \"mixed\" (e.g. with formulation.pressure = \"P1disc\"), "
+            "or use penalty.d > 0");
+    const bool exact_friction =
+        case_.friction.regularization == physics::FrictionRegularization::None;
+    if (exact_friction && (case_.penalty.d == 0 || case_.penalty.d_n == 0))
+      blame({"friction.regularization", case_.penalty.d_n == 0 ? "penalty.dN" : "penalty.d"},
+            "exact friction (its own augmented-Lagrangian loop, scaled by 1/d_N) cannot yet be "
+            "combined with the exact constraints d = 0 or d_N = 0 (Uzawa steps)",
+            "use friction.regularization = \"regularized\", or penalty.d > 0 and penalty.dN > 0");
+    if (!mixed) return;
+    if (case_.symmetry == physics::Symmetry::Axisymmetric)
+      blame({"formulation.type", "geometry.symmetry"},
+            "the mixed formulation is plane only: its pressure term has no hoop part u_r/r",
+            "use formulation.type = \"penalty\" for axisymmetric runs");
+    if (pressure == PressureSpace::Q1)
+      blame({"formulation.pressure"},
+            "the continuous Q1 pressure (Taylor–Hood) is not implemented in the solver: it needs a "
+            "global saddle-point solve (its inf-sup constant is in docs/mixed.md)",
+            "use \"P1disc\" (stable with Q2) or \"P0\"");
+    if (case_.element == fem::ElementKind::Q1 && pressure != PressureSpace::P0)
+      blame({"formulation.pressure", "mesh.element"},
+            fmt::format("Q1 velocity with the {} pressure locks (more pressure than velocity "
+                        "freedom per cell)",
+                        fem::pressure_space_name(pressure)),
+            "with mesh.element = \"Q1\" use formulation.pressure = \"P0\"; or mesh.element = \"Q2\"");
+    if (case_.element == fem::ElementKind::Q1 && case_.penalty.d == 0)
+      blame({"penalty.d", "mesh.element"},
+            "Q1–P0 is not inf-sup stable (Remark 4.3: checkerboard pressure, β_h → 0), so the "
+            "exact constraint d = 0 is refused",
+            "use penalty.d > 0 with Q1–P0, or mesh.element = \"Q2\" with \"P1disc\"");
+  }
+
+  /// Throws for the key (of `names`) that was set last: it is the one to change.
+  [[noreturn]] void blame(std::initializer_list<std::string> names, const std::string& message,
+                          const std::string& hint) const {
+    std::string blamed = *names.begin();
+    for (const std::string& name : names)
+      if (origin(name).order > origin(blamed).order) blamed = name;
+    const Origin where = origin(blamed);
+    throw InputError(where.file, where.line, blamed,
+                     fmt::format("value {}: {}",
+                                 format_key_value(find_case_key(blamed)->get(case_)), message),
+                     hint);
   }
 
   [[noreturn]] void die_error(const std::string& name, const std::string& message,

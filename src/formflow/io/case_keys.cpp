@@ -223,6 +223,44 @@ std::vector<CaseKey> discretisation_keys() {
                [](auto& c) -> auto& { return c.viscous_strain; })
           .doc("strain rate in the viscous a-form: the full ε̇ (paper eq. 3.3) or its deviator "
                "ė (the same as d → 0)"),
+      enum_key("formulation.type", "penalty",
+               {{"penalty", assembly::FormulationType::Penalty},
+                {"mixed", assembly::FormulationType::Mixed}},
+               [](auto& c) -> auto& { return c.formulation.type; })
+          .doc("penalty: problem (3.9), σ_H = ε̇_V/d at the volumetric points; mixed: problem "
+               "(3.7), σ_H in formulation.pressure, condensed cell by cell (docs/mixed.md)"),
+      enum_key("formulation.pressure", "P1disc",
+               {{"P0", fem::PressureSpace::P0},
+                {"P1disc", fem::PressureSpace::P1disc},
+                {"Q1", fem::PressureSpace::Q1}},
+               [](auto& c) -> auto& { return c.formulation.pressure; })
+          .constraint("mixed with Q1 velocity: P0 only; Q1 (Taylor–Hood) is refused (not implemented)")
+          .doc("pressure space of the mixed formulation: P0 (cell constant), P1disc (cell linear, "
+               "discontinuous) or Q1 (continuous bilinear)"),
+      real_key("formulation.augmentation", 1e3,
+               [](auto& c) -> auto& { return c.formulation.augmentation; })
+          .above(0)
+          .at_most(1e8)
+          .doc("ρ of the augmented-Lagrangian term for d = 0: r = ρ × the cell's mean secant "
+               "viscosity; larger = fewer Uzawa steps, worse conditioning"),
+      real_key("formulation.contact_augmentation", 1e6,
+               [](auto& c) -> auto& { return c.formulation.contact_augmentation; })
+          .above(0)
+          .at_most(1e12)
+          .unit("stress·time/length")
+          .doc("r_N of the augmented-Lagrangian contact term for dN = 0 (plays the role of 1/d_N)"),
+      real_key("formulation.uzawa_tolerance", 1e-8,
+               [](auto& c) -> auto& { return c.formulation.uzawa_tolerance; })
+          .above(0)
+          .below(1)
+          .doc("Uzawa steps (d = 0 or dN = 0) end when the multipliers change by less than "
+               "this, relative"),
+      integer_key("formulation.uzawa_max_steps", 50,
+                  [](auto& c) -> auto& { return c.formulation.uzawa_max_steps; })
+          .at_least(1)
+          .at_most(10000)
+          .doc("Uzawa steps per secant iteration at most (each is one solve with the same "
+               "factorisation)"),
   };
 }
 
@@ -324,13 +362,16 @@ std::vector<CaseKey> contact_keys() {
           .doc("exact friction only: augmentation r = value/d_N of λ_T = proj(λ_T + r u_T); "
                "any value converges, larger takes fewer multiplier updates"),
       real_key("penalty.d", 1e-3, [](auto& c) -> auto& { return c.penalty.d; })
-          .above(0)
+          .at_least(0)
+          .constraint("0 (exact incompressibility) only with formulation.type = \"mixed\"")
           .unit("1/(stress·time)")
-          .doc("incompressibility penalty: σ_H = ε̇_V/d (paper eq. 3.8)"),
+          .doc("incompressibility penalty: σ_H = ε̇_V/d (paper eq. 3.8); 0 = exact constraint "
+               "(Uzawa steps)"),
       real_key("penalty.dN", 1e-6, [](auto& c) -> auto& { return c.penalty.d_n; })
-          .above(0)
+          .at_least(0)
           .unit("length/(stress·time)")
-          .doc("contact penalty d_N: σ_N = −u_N/d_N on Γ3 (paper eq. 3.8)"),
+          .doc("contact penalty d_N: σ_N = −u_N/d_N on Γ3 (paper eq. 3.8); 0 = exact u_N = 0 "
+               "(Uzawa steps)"),
       real_key("penalty.dT", 1e-6, [](auto& c) -> auto& { return c.friction.d_t; })
           .above(0)
           .unit("length/time")
@@ -435,7 +476,7 @@ const std::vector<CaseSection>& case_sections() {
       {"geometry", "The half model of the die channel (SPEC §4); lengths are dimensionless."},
       {"mesh", "Uniform square cells of one element kind."},
       {"integration", "Quadrature of the volumetric penalty term (selective integration, SPEC §3)."},
-      {"formulation", "Which form of the a-term is assembled (SPEC §2)."},
+      {"formulation", "Which form of the a-term is assembled, and penalty or mixed (pressure) form of the constraints (SPEC §2, docs/mixed.md)."},
       {"material", "Flow law σ_p(ε̄̇) on [rate1, rate2], linear through the origin outside "
                    "(paper eq. 5.4 by default; material.law picks another)."},
       {"friction", "Nonlocal Coulomb friction on Γ3: regularised (paper eq. 3.14–3.15) or "

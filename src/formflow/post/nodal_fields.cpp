@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Integration-point quantities averaged to nodes, and cell means.
 #include "formflow/fem/lagrange.hpp"
+#include "formflow/fem/pressure_space.hpp"
 #include "formflow/physics/kinematics.hpp"
 #include "formflow/post/post_process.hpp"
 
@@ -31,6 +32,8 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
                     const std::vector<assembly::ContactPoint<dim>>& contact) {
   const auto& mesh = problem.mesh();
   const Real d = problem.settings().penalty.d;
+  const assembly::ConstraintMultipliers<dim>* mixed =
+      problem.multipliers() && problem.multipliers()->has_pressure_space() ? problem.multipliers() : nullptr;
   const int n = mesh.nodes_per_cell();
   fem::CellValues<dim> at_nodes(mesh.order, node_rule<dim>(mesh.order, n));
   fem::CellValues<dim> full_values(mesh.order, problem.full_rule());
@@ -61,13 +64,25 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
       area += full_values.JxW(q);
     }
     fields.cell_equivalent_strain_rate[cell] /= area;
-    for (int q = 0; q < volumetric_values.n_points(); ++q) {
-      // σ_H = ε̇_V/d (eq. 3.6), the Lagrange multiplier of incompressibility.
-      stress_at_points[q] = (velocities.cwiseProduct(volumetric_values.gradients(q)).sum() +
-                             problem.hoop_rate_at(volumetric_values, velocities, q)) / d;
-      fields.cell_hydrostatic_stress[cell] += stress_at_points[q] * volumetric_values.JxW(q) / area;
+    VectorX nodal_stress;
+    if (mixed) {
+      // σ_H from the pressure space: its cell mean, and its values at the nodes.
+      fields.cell_hydrostatic_stress[cell] = mixed->pressure_integral(cell, u) / area;
+      const VectorX coefficients = mixed->pressure_coefficients(cell, u);
+      nodal_stress.resize(n);
+      for (int a = 0; a < n; ++a)
+        nodal_stress[a] = fem::tabulate_pressure<dim>(mixed->pressure_space(),
+                                                      fem::reference_node<dim>(mesh.order, a))
+                              .dot(coefficients);
+    } else {
+      for (int q = 0; q < volumetric_values.n_points(); ++q) {
+        // σ_H = ε̇_V/d (eq. 3.6), the Lagrange multiplier of incompressibility.
+        stress_at_points[q] = (velocities.cwiseProduct(volumetric_values.gradients(q)).sum() +
+                               problem.hoop_rate_at(volumetric_values, velocities, q)) / d;
+        fields.cell_hydrostatic_stress[cell] += stress_at_points[q] * volumetric_values.JxW(q) / area;
+      }
+      nodal_stress = pressure_to_nodes * stress_at_points;
     }
-    const VectorX nodal_stress = pressure_to_nodes * stress_at_points;
     for (int a = 0; a < n; ++a) {
       const Index node = mesh.cells(a, cell);
       fields.equivalent_strain_rate[node] += rate_at(at_nodes, a);

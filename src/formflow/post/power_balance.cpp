@@ -14,6 +14,7 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
   fem::CellValues<dim> volumetric_values(mesh.order, problem.volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   const bool deviatoric = settings.viscous_strain == physics::ViscousStrain::Deviatoric;
+  const bool mixed = problem.multipliers() && problem.multipliers()->has_pressure_space();
   PowerTerms power;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     problem.gather(cell, &u, coordinates, velocities);
@@ -27,6 +28,7 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
       power.viscous_form += 2.0 / 3.0 * settings.law.secant_viscosity(equivalent) *
                             measured.cwiseProduct(measured).sum() * full_values.JxW(q);
     }
+    if (mixed) continue;  // the pressure term's power follows the loop
     for (int q = 0; q < volumetric_values.n_points(); ++q) {
       const Real volumetric =
           physics::velocity_gradient<dim>(velocities, volumetric_values.gradients(q)).trace() +
@@ -34,8 +36,11 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
       power.volumetric_penalty += volumetric * volumetric / settings.penalty.d * volumetric_values.JxW(q);
     }
   }
+  // Mixed: ∫ σ_H div u dx = (1/d)‖P div u‖² for d > 0, → 0 for the exact constraint.
+  if (mixed) power.volumetric_penalty = problem.multipliers()->pressure_power(u);
   for (const auto& point : contact) {
-    power.contact_penalty += point.normal_velocity * point.normal_velocity / settings.penalty.d_n * point.weight;
+    // −σ_N u_N dΓ: u_N²/d_N for the penalty, → 0 for the exact contact.
+    power.contact_penalty += point.contact_pressure * point.normal_velocity * point.weight;
     power.friction += point.friction_traction.dot(point.tangential_velocity) * point.weight;
   }
   return power;
@@ -54,6 +59,11 @@ Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, con
     counted[facet.cell] = true;
     problem.gather(facet.cell, &u, coordinates, velocities);
     problem.reinit(values, coordinates);
+    if (problem.multipliers() && problem.multipliers()->has_pressure_space()) {
+      integral -= problem.multipliers()->pressure_integral(facet.cell, u);  // −σ_H dx
+      for (int q = 0; q < values.n_points(); ++q) area += values.JxW(q);
+      continue;
+    }
     for (int q = 0; q < values.n_points(); ++q) {
       const Real volumetric = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() +
                               problem.hoop_rate_at(values, velocities, q);

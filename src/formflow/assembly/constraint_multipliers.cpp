@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+// Cell-wise condensation of discontinuous pressures and the Uzawa multiplier updates.
+#include "formflow/assembly/constraint_multipliers.hpp"
+
+#include "formflow/core/error.hpp"
+#include "formflow/fem/dof_map.hpp"
+
+#include <Eigen/LU>
+
+#include <cmath>
+#include <numeric>
+
+namespace formflow::assembly {
+
+template <int dim>
+ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
+                                                  const physics::Penalty& penalty,
+                                                  const Formulation& formulation,
+                                                  const fem::QuadratureRule<dim>& full_rule,
+                                                  Index n_contact_points)
+    : mesh_(mesh), penalty_(penalty), formulation_(formulation) {
+  contact_multiplier_.assign(n_contact_points, 0.0);
+  contact_weight_.assign(n_contact_points, 0.0);
+  if (!has_pressure_space())
+    return;
+  FF_ASSERT(fem::is_discontinuous(formulation.pressure),
+            "a continuous pressure cannot be condensed cell by cell");
+  n_pressure_ = fem::pressure_functions_per_cell<dim>(formulation.pressure);
+  const int n_local = mesh.nodes_per_cell() * dim;
+  fem::CellValues<dim> values(mesh.order, full_rule);
+  typename fem::CellValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
+  std::vector<VectorX> basis;
+  for (const Point<dim>& xi : full_rule.points)
+    basis.push_back(fem::tabulate_pressure<dim>(formulation.pressure, xi));
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+      coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
+    values.reinit(coordinates);
+    MatrixX divergence = MatrixX::Zero(n_pressure_, n_local);
+    MatrixX mass = MatrixX::Zero(n_pressure_, n_pressure_);
+    VectorX integral = VectorX::Zero(n_pressure_);
+    for (int q = 0; q < values.n_points(); ++q) {
+      // div(φ_a e_i) = ∂_i φ_a: the flattened gradient is the divergence row.
+      const auto& grad = values.gradients(q);
+      const Eigen::Map<const VectorX> divergence_row(grad.data(), n_local);
+      divergence.noalias() += values.JxW(q) * basis[q] * divergence_row.transpose(); // ψ div φ dx
+      mass.noalias() += values.JxW(q) * basis[q] * basis[q].transpose();             // ψ ψ dx
+      integral += values.JxW(q) * basis[q];
+    }
+    divergence_.push_back(std::move(divergence));
+    inverse_mass_.push_back(mass.inverse()); // at most 2^dim × 2^dim, SPD
+    mass_.push_back(std::move(mass));
+    basis_integral_.push_back(std::move(integral));
+  }
+  multiplier_.assign(mesh.n_cells(), VectorX::Zero(n_pressure_));
+  augmentation_.assign(mesh.n_cells(), 0.0);
+}
+
+template <int dim>
+void ConstraintMultipliers<dim>::add_cell_terms(Index cell, std::span<const Real> viscosity,
+                                                MatrixX& local_matrix, VectorX& local_load) {
+  const MatrixX& divergence = divergence_[cell];
+  Real weight = 0.0;
+  if (is_exact_pressure()) {
+    const Real mean_viscosity = std::accumulate(viscosity.begin(), viscosity.end(), 0.0) /
+                                static_cast<Real>(viscosity.size());
+    weight = augmentation_[cell] = formulation_.augmentation * mean_viscosity;
+    local_load.noalias() -= divergence.transpose() * multiplier_[cell]; // −Bᵀ λ
+  } else {
+    weight = 1.0 / penalty_.d;
+  }
+  local_matrix.noalias() += weight * divergence.transpose() * inverse_mass_[cell] * divergence;
+}
+
+template <int dim>
+void ConstraintMultipliers<dim>::add_contact_terms(Index first_point,
+                                                   const fem::FacetValues<dim>& values,
+                                                   MatrixX& local_matrix, VectorX& local_load) {
+  const int n = static_cast<int>(values.shape(0).size());
+  VectorX normal_row(n * dim);
+  for (int q = 0; q < values.n_points(); ++q) {
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < dim; ++i)
+        normal_row[a * dim + i] = values.shape(q)[a] * values.normal(q)[i];
+    const Index k = first_point + q;
+    contact_weight_[k] = values.JxW(q);
+    local_matrix.noalias() += (formulation_.contact_augmentation * values.JxW(q)) * normal_row *
+                              normal_row.transpose(); // r_N u_N v_N dΓ
+    local_load.noalias() -= (contact_multiplier_[k] * values.JxW(q)) * normal_row; // −λ v_N dΓ
+  }
+}
+
+template <int dim>
+VectorX ConstraintMultipliers<dim>::cell_velocity(Index cell, const VectorX& u) const {
+  VectorX local(mesh_.nodes_per_cell() * dim);
+  for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
+    local.template segment<dim>(a * dim) =
+        u.template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, cell), 0));
+  return local;
+}
+
+template <int dim>
+Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> normal_velocity) {
+  Real change = 0.0;
+  if (is_exact_pressure()) {
+    Real change_norm = 0.0, norm = 0.0;
+    for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
+      const VectorX step = augmentation_[cell] *
+                           (inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u)));
+      multiplier_[cell] += step;
+      change_norm += step.dot(mass_[cell] * step);
+      norm += multiplier_[cell].dot(mass_[cell] * multiplier_[cell]);
+    }
+    change = norm > 0 ? std::sqrt(change_norm / norm) : 0.0;
+  }
+  if (is_exact_contact()) {
+    FF_ASSERT(normal_velocity.size() == contact_multiplier_.size(), "one u_N per Γ3 point");
+    Real change_norm = 0.0, norm = 0.0;
+    for (std::size_t k = 0; k < contact_multiplier_.size(); ++k) {
+      const Real step = formulation_.contact_augmentation * normal_velocity[k];
+      contact_multiplier_[k] += step;
+      change_norm += step * step * contact_weight_[k];
+      norm += contact_multiplier_[k] * contact_multiplier_[k] * contact_weight_[k];
+    }
+    if (norm > 0)
+      change = std::max(change, std::sqrt(change_norm / norm));
+  }
+  return change;
+}
+
+template <int dim>
+VectorX ConstraintMultipliers<dim>::pressure_coefficients(Index cell, const VectorX& u) const {
+  const VectorX projected_divergence =
+      inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u));
+  if (is_exact_pressure())
+    return multiplier_[cell] + augmentation_[cell] * projected_divergence;
+  return projected_divergence / penalty_.d; // σ_H = (1/d) P div u (eq. 3.6 in the pressure space)
+}
+
+template <int dim>
+Real ConstraintMultipliers<dim>::pressure_integral(Index cell, const VectorX& u) const {
+  return basis_integral_[cell].dot(pressure_coefficients(cell, u));
+}
+
+template <int dim> Real ConstraintMultipliers<dim>::pressure_power(const VectorX& u) const {
+  Real power = 0.0;
+  for (Index cell = 0; cell < mesh_.n_cells(); ++cell)
+    power += pressure_coefficients(cell, u).dot(divergence_[cell] * cell_velocity(cell, u));
+  return power;
+}
+
+template <int dim>
+Real ConstraintMultipliers<dim>::contact_pressure(Index k, Real normal_velocity) const {
+  if (is_exact_contact())
+    return contact_multiplier_[k] + formulation_.contact_augmentation * normal_velocity;
+  return normal_velocity / penalty_.d_n;
+}
+
+template class ConstraintMultipliers<2>;
+template class ConstraintMultipliers<3>;
+
+} // namespace formflow::assembly

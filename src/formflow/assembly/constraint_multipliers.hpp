@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+// The mixed formulation's multipliers: the hydrostatic stress σ_H in a
+// discontinuous pressure space, condensed cell by cell, and the exact-constraint
+// (augmented-Lagrangian) multipliers of incompressibility and contact (issue 5).
+#pragma once
+
+#include "formflow/fem/cell_values.hpp"
+#include "formflow/fem/pressure_space.hpp"
+#include "formflow/mesh/mesh.hpp"
+#include "formflow/physics/process.hpp"
+
+#include <span>
+#include <vector>
+
+namespace formflow::assembly {
+
+enum class FormulationType { Penalty, Mixed };
+
+/// Which problem is discretised (SPEC §2): the penalty problem (3.9) with σ_H
+/// at the volumetric points, or the perturbed mixed problem (3.7) with σ_H in
+/// `pressure`. penalty.d = 0 (mixed only) and penalty.dN = 0 select the exact
+/// constraints, enforced by augmented-Lagrangian (Uzawa) steps.
+struct Formulation {
+  FormulationType type = FormulationType::Penalty;
+  fem::PressureSpace pressure = fem::PressureSpace::P1disc;
+  /// ρ of the augmented-Lagrangian term when d = 0: per cell r_e = ρ ν̄_e with ν̄_e
+  /// the cell's mean secant viscosity, so that every cell's constraint converges
+  /// at the rate ≈ 1/(1 + ρ β_h²) whatever its viscosity.
+  Real augmentation = 1e3;
+  Real contact_augmentation = 1e6; ///< r_N of the contact term when d_N = 0 (like 1/d_N)
+  Real uzawa_tolerance = 1e-8;     ///< relative multiplier change that ends the Uzawa steps
+  int uzawa_max_steps = 50;        ///< Uzawa steps per secant iteration
+};
+
+/// Per-cell matrices of the discontinuous pressure space and the multiplier state.
+///
+/// Mixed problem (3.7) on one cell with pressure coefficients c:
+///   a(u, v) + cᵀ B v = f(v),   B u − d M c = 0,
+/// B_ia = ∫ ψ_i div φ_a dx, M_ij = ∫ ψ_i ψ_j dx. For d > 0 the pressure is
+/// condensed, c = (1/d) M⁻¹ B u, and the cell adds (1/d) Bᵀ M⁻¹ B to the SPD
+/// velocity matrix. For d = 0 the cell adds r_e Bᵀ M⁻¹ B and the load −Bᵀ λ_e,
+/// and each Uzawa step sets λ_e ← λ_e + r_e M⁻¹ B u_e (fixed point: M⁻¹ B u = 0).
+/// Exact contact (d_N = 0) is the same at each Γ3 quadrature point: the term
+/// r_N u_N v_N, the load −λ_k v_N and λ_k ← λ_k + r_N u_N(x_k) (−σ_N = λ).
+template <int dim> class ConstraintMultipliers {
+public:
+  /// `full_rule` integrates B and M exactly on affine cells; `n_contact_points`
+  /// is the number of Γ3 quadrature points (FormingProblem::contact_state order).
+  ConstraintMultipliers(const mesh::Mesh<dim>& mesh, const physics::Penalty& penalty,
+                        const Formulation& formulation, const fem::QuadratureRule<dim>& full_rule,
+                        Index n_contact_points);
+
+  bool has_pressure_space() const { return formulation_.type == FormulationType::Mixed; }
+  bool is_exact_pressure() const { return has_pressure_space() && penalty_.d == 0; }
+  bool is_exact_contact() const { return penalty_.d_n == 0; }
+  /// True when Uzawa steps are needed (some constraint is exact).
+  bool needs_uzawa() const { return is_exact_pressure() || is_exact_contact(); }
+
+  /// Adds the condensed pressure term of `cell` (and its load when d = 0).
+  /// `viscosity` is the secant viscosity at the cell's full-rule points; it fixes
+  /// r_e, remembered for the next update (so call update after assembling).
+  void add_cell_terms(Index cell, std::span<const Real> viscosity, MatrixX& local_matrix,
+                      VectorX& local_load);
+  /// Exact contact on one Γ3 face whose first quadrature point is `first_point`.
+  void add_contact_terms(Index first_point, const fem::FacetValues<dim>& values,
+                         MatrixX& local_matrix, VectorX& local_load);
+
+  /// One Uzawa step from velocity `u` and the Γ3 normal velocities
+  /// (contact_state order). Returns the relative change of the multipliers
+  /// (the larger of pressure and contact), 0 when nothing is exact.
+  Real update(const VectorX& u, std::span<const Real> normal_velocity);
+
+  /// σ_H coefficients of `cell` at velocity `u` (length pressure_functions_per_cell).
+  VectorX pressure_coefficients(Index cell, const VectorX& u) const;
+  /// ∫_cell σ_H dx at velocity `u`.
+  Real pressure_integral(Index cell, const VectorX& u) const;
+  /// Σ_cells ∫ σ_H div u dx: the power of the pressure term (→ 0 when d = 0).
+  Real pressure_power(const VectorX& u) const;
+  /// Contact pressure −σ_N at Γ3 point `k` with normal velocity `normal_velocity`.
+  Real contact_pressure(Index k, Real normal_velocity) const;
+  fem::PressureSpace pressure_space() const { return formulation_.pressure; }
+  const Formulation& formulation() const { return formulation_; }
+  const physics::Penalty& penalty() const { return penalty_; }
+
+private:
+  VectorX cell_velocity(Index cell, const VectorX& u) const;
+
+  const mesh::Mesh<dim>& mesh_;
+  physics::Penalty penalty_;
+  Formulation formulation_;
+  int n_pressure_ = 0;
+  std::vector<MatrixX> divergence_; ///< B per cell, n_pressure × n_local
+  std::vector<MatrixX> mass_, inverse_mass_;
+  std::vector<VectorX> basis_integral_;  ///< ∫ ψ_i dx per cell
+  std::vector<VectorX> multiplier_;      ///< λ per cell (d = 0)
+  std::vector<Real> augmentation_;       ///< r_e per cell from the last assembly (d = 0)
+  std::vector<Real> contact_multiplier_; ///< λ_k per Γ3 point (d_N = 0)
+  std::vector<Real> contact_weight_;     ///< JxW per Γ3 point, filled by add_contact_terms
+};
+
+} // namespace formflow::assembly

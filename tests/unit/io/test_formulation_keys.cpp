@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// formulation.* keys and the exact constraints: what is accepted, what is refused
+// (key, file, line, hint).
+#include "formflow/core/error.hpp"
+#include "formflow/io/case.hpp"
+#include "formflow/io/case_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace formflow::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
+}
+
+InputError refusal(const std::string& path, const std::vector<Override>& overrides) {
+  try {
+    load_case(path, overrides);
+  } catch (const InputError& error) {
+    return error;
+  }
+  ADD_FAILURE() << "load_case did not throw InputError";
+  return InputError("", -1, "", "");
+}
+
+TEST(FormulationKeys, MixedWithExactConstraintsIsAccepted) {
+  const Case case_ = load_case("", {{"formulation.type", "mixed"},
+                                    {"formulation.pressure", "P1disc"},
+                                    {"penalty.d", "0"},
+                                    {"penalty.dN", "0"}});
+  EXPECT_EQ(case_.formulation.type, assembly::FormulationType::Mixed);
+  EXPECT_EQ(case_.formulation.pressure, fem::PressureSpace::P1disc);
+  EXPECT_EQ(case_.penalty.d, 0.0);
+  EXPECT_EQ(case_.penalty.d_n, 0.0);
+}
+
+TEST(FormulationKeys, MixedIsWrittenToTheResolvedCase) {
+  const nlohmann::json json = case_to_json(load_case("", {{"formulation.type", "mixed"}}));
+  EXPECT_EQ(json["formulation"]["type"], "mixed");
+  EXPECT_EQ(json["formulation"]["pressure"], "P1disc");
+}
+
+TEST(FormulationKeys, ExactContactIsAcceptedWithThePenaltyFormulation) {
+  EXPECT_EQ(load_case("", {{"penalty.dN", "0"}}).penalty.d_n, 0.0);
+}
+
+TEST(FormulationKeys, ExactIncompressibilityNeedsTheMixedFormulation) {
+  const InputError error = refusal("", {{"penalty.d", "0"}});
+  EXPECT_EQ(error.key, "penalty.d");
+  EXPECT_EQ(error.file, "--set");
+  EXPECT_TRUE(has_text(error.hint, "formulation.type = \"mixed\""));
+}
+
+TEST(FormulationKeys, NegativePenaltyIsOutOfRange) {
+  EXPECT_EQ(refusal("", {{"penalty.d", "-1e-3"}}).key, "penalty.d");
+}
+
+TEST(FormulationKeys, UnstableOrUnimplementedPairsAreRefused) {
+  const InputError taylor_hood =
+      refusal("", {{"formulation.type", "mixed"}, {"formulation.pressure", "Q1"}});
+  EXPECT_EQ(taylor_hood.key, "formulation.pressure");
+  const InputError locking = refusal(
+      "",
+      {{"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}, {"mesh.element", "Q1"}});
+  EXPECT_EQ(locking.key, "mesh.element"); // set last: the one to change
+  EXPECT_TRUE(has_text(locking.hint, "P0"));
+  const InputError checkerboard = refusal("", {{"mesh.element", "Q1"},
+                                               {"formulation.type", "mixed"},
+                                               {"formulation.pressure", "P0"},
+                                               {"penalty.d", "0"}});
+  EXPECT_EQ(checkerboard.key, "penalty.d");
+  EXPECT_TRUE(has_text(checkerboard.message, "inf-sup"));
+}
+
+TEST(FormulationKeys, CombinationsNotYetSupportedAreRefused) {
+  const InputError axisymmetric = refusal(
+      "", {{"formulation.type", "mixed"}, {"geometry.symmetry", "axisymmetric"}});
+  EXPECT_EQ(axisymmetric.key, "geometry.symmetry");
+  const InputError exact_friction =
+      refusal("", {{"friction.regularization", "none"}, {"penalty.dN", "0"}});
+  EXPECT_EQ(exact_friction.key, "penalty.dN");
+  EXPECT_TRUE(has_text(exact_friction.hint, "regularized"));
+}
+
+TEST(FormulationKeys, RefusalInAFileNamesItsLine) {
+  const fs::path path =
+      fs::temp_directory_path() / ("formflow-formulation-" + std::to_string(getpid()) + ".toml");
+  std::ofstream(path) << "[formulation]\ntype = \"penalty\"\n\n[penalty]\nd = 0\n";
+  const InputError error = refusal(path.string(), {});
+  fs::remove(path);
+  EXPECT_EQ(error.key, "penalty.d");
+  EXPECT_EQ(error.line, 5);
+}
+
+} // namespace
+} // namespace formflow::io

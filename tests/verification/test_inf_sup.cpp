@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// Remark 4.3 made visible: which velocity/pressure pairs keep β_h bounded.
+#include "inf_sup_table.hpp"
+
+#include <gtest/gtest.h>
+
+namespace formflow::testing {
+namespace {
+
+enum Row { Q2P1disc, Q2P0, TaylorHood, Q2Q1disc, Q1P0, Q1P0Filtered, Q1Q1 };
+
+TEST(InfSup, StablePairsStayBoundedAndUnstableOnesDoNot) {
+  const auto table = inf_sup_table({4, 8});
+  // Stable pairs: only the constant pressure is in the null space, and β_h
+  // does not fall as h halves (a 10 % margin for the pre-asymptotic rungs).
+  for (Row row : {Q2P1disc, Q2P0, TaylorHood}) {
+    SCOPED_TRACE(inf_sup_pairs()[row].name);
+    for (const auto& estimate : table[row])
+      EXPECT_EQ(estimate.n_null_modes, 1);
+    EXPECT_GT(table[row][1].beta, 0.9 * table[row][0].beta);
+    EXPECT_GT(table[row][1].beta, 0.05);
+  }
+  // Q1–P0: the checkerboard is a spurious null mode, and the rest decays with h.
+  for (const auto& estimate : table[Q1P0])
+    EXPECT_GE(estimate.n_null_modes, 2);
+  EXPECT_LT(table[Q1P0][1].beta, 0.75 * table[Q1P0][0].beta);
+  // Q1–Q1 (equal order) has spurious pressure modes.
+  for (const auto& estimate : table[Q1Q1])
+    EXPECT_GE(estimate.n_null_modes, 2);
+  // The macro filter removes the checkerboard from the null space.
+  for (const auto& estimate : table[Q1P0Filtered])
+    EXPECT_EQ(estimate.n_null_modes, 1);
+}
+
+} // namespace
+} // namespace formflow::testing

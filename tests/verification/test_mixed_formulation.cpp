@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: MIT
+// The mixed formulation end to end (issue 5): Remark 5.1 on the whole solve, the
+// exact constraints (Uzawa) against the perturbed problems as d, d_N → 0, and
+// the power balance with the pressure load.
+#include "formflow/app/simulation.hpp"
+#include "support/approx.hpp"
+#include "verification/checkerboard.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace formflow {
+namespace {
+
+using testing::approx;
+
+post::Results solve(const std::function<void(io::Case&)>& edit) {
+  io::Case case_;
+  case_.process.ram = physics::RamCondition::Sticking;
+  case_.mesh_size = 2.5; // 4 + 2 cells across: seconds, not minutes
+  // The same (secant) iteration on both sides, so that equal formulations give
+  // equal iterates; the mixed and Uzawa paths run the secant method anyway.
+  case_.solver.method = solvers::NonlinearMethod::Secant;
+  edit(case_);
+  return app::simulate(case_).results;
+}
+
+void mixed(io::Case& case_, fem::PressureSpace space, Real d) {
+  case_.formulation.type = assembly::FormulationType::Mixed;
+  case_.formulation.pressure = space;
+  case_.penalty.d = d;
+}
+
+TEST(MixedFormulation, Q1OnePointPenaltyAndQ1P0GiveTheSameSolution) {
+  const post::Results penalty = solve([](io::Case& c) {
+    c.element = fem::ElementKind::Q1;
+    c.mesh_size = 1.0;
+    c.volumetric_points = 1;
+  });
+  const post::Results q1p0 = solve([](io::Case& c) {
+    c.element = fem::ElementKind::Q1;
+    c.mesh_size = 1.0;
+    mixed(c, fem::PressureSpace::P0, 1e-3);
+  });
+  ASSERT_TRUE(penalty.converged());
+  ASSERT_TRUE(q1p0.converged());
+  EXPECT_EQ(penalty.iterations, q1p0.iterations);
+  // Same matrices up to round-off, so the same iterates: agreement far below δ.
+  EXPECT_TRUE(approx(q1p0.pressure.ram_reaction, penalty.pressure.ram_reaction, 1e-10));
+  EXPECT_TRUE(approx(q1p0.pressure.mean_hydrostatic_near_ram,
+                     penalty.pressure.mean_hydrostatic_near_ram, 1e-10));
+  EXPECT_LT((q1p0.fields.cell_hydrostatic_stress - penalty.fields.cell_hydrostatic_stress).norm(),
+            1e-9 * penalty.fields.cell_hydrostatic_stress.norm());
+  EXPECT_LT((q1p0.fields.velocity - penalty.fields.velocity).norm(),
+            1e-10 * penalty.fields.velocity.norm());
+}
+
+TEST(MixedFormulation, ExactIncompressibilityIsTheLimitOfThePerturbedMixedProblem) {
+  // Two independent paths: Uzawa steps for d = 0, cell-wise condensation for d > 0.
+  // Thm 3.4: ‖u_d − u‖ ≤ C d, so d = 1e-7 must agree with d = 0 to ~1e-6.
+  const post::Results exact = solve([](io::Case& c) { mixed(c, fem::PressureSpace::P1disc, 0.0); });
+  const post::Results perturbed =
+      solve([](io::Case& c) { mixed(c, fem::PressureSpace::P1disc, 1e-7); });
+  ASSERT_TRUE(exact.converged());
+  ASSERT_TRUE(perturbed.converged());
+  EXPECT_TRUE(approx(exact.pressure.ram_reaction, perturbed.pressure.ram_reaction, 1e-4));
+  EXPECT_LT((exact.fields.velocity - perturbed.fields.velocity).norm(),
+            1e-4 * exact.fields.velocity.norm());
+  // The constraint is met: the pressure term does no work, and the ram
+  // reaction (with the pressure load) equals the total discrete power.
+  EXPECT_LT(std::abs(exact.power.volumetric_penalty), 1e-6 * exact.power.total());
+  EXPECT_TRUE(approx(exact.pressure.ram_reaction, exact.pressure.total_power, 1e-3));
+}
+
+TEST(MixedFormulation, ExactContactIsTheLimitOfTheContactPenalty) {
+  const post::Results exact = solve([](io::Case& c) {
+    c.penalty.d_n = 0.0;
+    c.friction.mu = 0.1;
+  });
+  const post::Results perturbed = solve([](io::Case& c) {
+    c.penalty.d_n = 1e-10;
+    c.friction.mu = 0.1;
+  });
+  ASSERT_TRUE(exact.converged());
+  ASSERT_TRUE(perturbed.converged());
+  EXPECT_TRUE(approx(exact.pressure.ram_reaction, perturbed.pressure.ram_reaction, 1e-4));
+  ASSERT_EQ(exact.contact.size(), perturbed.contact.size());
+  Real largest = 0.0, difference = 0.0;
+  for (std::size_t k = 0; k < exact.contact.size(); ++k) {
+    largest = std::max(largest, std::abs(perturbed.contact[k].contact_pressure));
+    difference = std::max(difference, std::abs(exact.contact[k].contact_pressure -
+                                               perturbed.contact[k].contact_pressure));
+  }
+  EXPECT_GT(largest, 1.0); // the die face carries the extrusion pressure
+  EXPECT_LT(difference, 1e-3 * largest);
+}
+
+/// Checkerboard share of the cell pressure in the container, x < 8 (away from the die).
+double container_checkerboard(fem::ElementKind element, fem::PressureSpace space, Real d,
+                              Real size) {
+  io::Case case_;
+  case_.process.ram = physics::RamCondition::Sticking;
+  case_.element = element;
+  case_.mesh_size = size;
+  mixed(case_, space, d);
+  const app::Simulation simulation = app::simulate(case_);
+  EXPECT_TRUE(simulation.results.converged());
+  const double share = testing::checkerboard_share(
+      simulation.mesh, size, simulation.results.fields.cell_hydrostatic_stress, 8.0);
+  const VectorX filtered = assembly::filter_checkerboard(
+      simulation.mesh, size, simulation.results.fields.cell_hydrostatic_stress);
+  EXPECT_LT(testing::checkerboard_share(simulation.mesh, size, filtered, 8.0), 1e-12);
+  std::printf("%s-%s h = %g: checkerboard share %.3e\n",
+              std::string(fem::element_name(element)).c_str(),
+              std::string(fem::pressure_space_name(space)).c_str(), size, share);
+  return share;
+}
+
+TEST(MixedFormulation, Q1P0PressureHasACheckerboardThatDoesNotShrinkWithTheMesh) {
+  const double q1p0_coarse =
+      container_checkerboard(fem::ElementKind::Q1, fem::PressureSpace::P0, 1e-3, 1.0);
+  const double q1p0_fine =
+      container_checkerboard(fem::ElementKind::Q1, fem::PressureSpace::P0, 1e-3, 0.5);
+  const double q2_coarse =
+      container_checkerboard(fem::ElementKind::Q2, fem::PressureSpace::P1disc, 0.0, 1.0);
+  const double q2_fine =
+      container_checkerboard(fem::ElementKind::Q2, fem::PressureSpace::P1disc, 0.0, 0.5);
+  // A smooth pressure's cell means carry a checkerboard share O(h²) (O(h) near
+  // singular points): halving h must at least halve it. Q1–P0's spurious mode
+  // is O(1): it does not shrink.
+  EXPECT_GT(q1p0_fine, 0.5 * q1p0_coarse);
+  EXPECT_LT(q2_fine, 0.5 * q2_coarse);
+}
+
+} // namespace
+} // namespace formflow
