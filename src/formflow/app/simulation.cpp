@@ -2,7 +2,7 @@
 // One case from parameters to results.
 #include "formflow/app/simulation.hpp"
 
-#include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/io/mesh_input.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
@@ -32,8 +32,7 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   const auto start = std::chrono::steady_clock::now();
   {
     ScopedTimer timer(results.timing, "mesh");
-    simulation.mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size,
-                                              fem::element_order(case_.element));
+    simulation.mesh = io::load_mesh(case_);
   }
   std::unique_ptr<assembly::FormingProblem<2>> problem;
   {

@@ -77,6 +77,13 @@ std::string format_key_value(const KeyValue& value) {
   if (const auto* real = std::get_if<Real>(&value)) return format_real(*real);
   if (const auto* integer = std::get_if<std::int64_t>(&value)) return fmt::format("{}", *integer);
   if (const auto* text = std::get_if<std::string>(&value)) return quoted(*text);
+  if (const auto* map = std::get_if<NameMap>(&value)) {
+    // A TOML inline table; keys quoted, so any physical name is valid.
+    std::string table = "{";
+    for (const auto& [entry, text] : *map)
+      table += (table.size() > 1 ? ", " : "") + quoted(entry) + " = " + quoted(text);
+    return table + "}";
+  }
   std::string text = "[";
   for (const std::string& entry : std::get<std::vector<std::string>>(value))
     text += (text.size() > 1 ? ", " : "") + quoted(entry);
@@ -89,6 +96,8 @@ std::string_view key_type_name(KeyType type) {
   case KeyType::Integer: return "integer";
   case KeyType::Enum: return "string";
   case KeyType::StringList: return "list of strings";
+  case KeyType::Text: return "string";
+  case KeyType::NameMap: return "table of strings";
   }
   return "?";
 }
@@ -112,6 +121,8 @@ std::string valid_values_text(const CaseKey& key) {
   case KeyType::StringList:
     text = "each of " + choices_text(key) + " at most once; may be empty";
     break;
+  case KeyType::Text: text = "a path"; break;
+  case KeyType::NameMap: text = "entries `name = part`, part one of " + choices_text(key); break;
   }
   if (!key.constraint.empty()) text += fmt::format("; {}", key.constraint);
   return text;
