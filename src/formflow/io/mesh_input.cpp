@@ -55,8 +55,7 @@ void check_jacobians(const Case& case_, const mesh::Mesh<2>& mesh) {
 }
 
 std::vector<mesh::PhysicalBoundary> boundary_map(const Case& case_) {
-  if (case_.mesh_boundaries.empty()) return mesh::part_names_as_physical_names();
-  std::vector<mesh::PhysicalBoundary> map;
+  std::vector<mesh::PhysicalBoundary> map;  // empty: the physical names are the part names
   for (const auto& [name, part] : case_.mesh_boundaries)
     map.push_back({name, *mesh::label_from_name(part)});  // validated by the key table
   return map;

@@ -87,7 +87,7 @@ Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry,
   GmshSession session;
   build_channel_model(session, geometry, die_face, size, order);
   try {
-    return mesh_from_gmsh_model(session, part_names_as_physical_names(), order);
+    return mesh_from_gmsh_model(session, {}, order);  // the groups carry the part names
   } catch (const MeshFileError& error) {
     // Our own geometry: a failure here is a bug, not the user's input.
     throw InternalError("Gmsh channel mesh: " + error.message);

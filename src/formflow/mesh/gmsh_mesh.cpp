@@ -228,6 +228,9 @@ void label_facets(const std::vector<PhysicalBoundary>& boundaries, Mesh<2>& mesh
   const std::map<std::string, int> curves = physical_curves(other_dimensions);
   std::map<std::string, BoundaryLabel> mapped;
   for (const PhysicalBoundary& entry : boundaries) mapped[entry.name] = entry.label;
+  if (boundaries.empty())  // no map: the curves named like a part are that part
+    for (const auto& [name, tag] : curves)
+      if (const auto label = label_from_name(name)) mapped[name] = *label;
 
   for (const auto& [name, label] : mapped) {
     if (curves.count(name)) continue;
@@ -300,15 +303,6 @@ void label_facets(const std::vector<PhysicalBoundary>& boundaries, Mesh<2>& mesh
 int lexicographic_of_gmsh_node(int order, int gmsh_node) {
   return order == 1 ? lexicographic_of_gmsh_q1.at(static_cast<std::size_t>(gmsh_node))
                     : lexicographic_of_gmsh_q2.at(static_cast<std::size_t>(gmsh_node));
-}
-
-std::vector<PhysicalBoundary> part_names_as_physical_names() {
-  std::vector<PhysicalBoundary> map;
-  for (int k = 0; k < n_boundary_labels; ++k) {
-    const auto label = static_cast<BoundaryLabel>(k);
-    map.push_back({std::string(label_name(label)), label});
-  }
-  return map;
 }
 
 Mesh<2> mesh_from_gmsh_model(const GmshSession& session,

@@ -21,9 +21,6 @@ struct PhysicalBoundary {
 /// Gmsh quad-4 (`order` 1) or quad-9 (`order` 2).
 int lexicographic_of_gmsh_node(int order, int gmsh_node);
 
-/// The physical names of generated meshes: each part under its own name ("rear", "die", ...).
-std::vector<PhysicalBoundary> part_names_as_physical_names();
-
 /// What is wrong with a Gmsh mesh, and which input is at fault, so that the
 /// caller can name the case key: the file itself, one physical group of the
 /// boundary map, the element kind, or the boundary map as a whole.
@@ -43,7 +40,9 @@ struct MeshFileError : std::runtime_error {
 /// (Gmsh quad-4 → Q1, quad-9 → Q2, reordered lexicographically; clockwise
 /// cells are mirrored to counter-clockwise), the cell faces used by one cell
 /// only are the boundary facets, labelled by the physical curve groups named
-/// in `boundaries`. Several names may map to one part. Throws MeshFileError
+/// in `boundaries`. Several names may map to one part; an empty `boundaries`
+/// maps the physical curves named like a part ("rear", "die", ...) to that
+/// part. Throws MeshFileError
 /// for: no 2D elements, elements other than quadrilaterals of `order`
 /// (triangles, 8-node serendipity quadrilaterals, mixed orders), a mapped name
 /// that is not a physical curve group, a named physical curve on the boundary
