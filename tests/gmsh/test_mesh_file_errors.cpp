@@ -90,6 +90,16 @@ TEST_F(MeshFile, AGoodMeshIsSolved) {
   EXPECT_TRUE(fs::exists(scratch_ / "out" / "summary.json"));
 }
 
+TEST_F(MeshFile, TheShippedCaseReadsItsMeshRelativeToTheCaseFile) {
+  // Run from the scratch directory: mesh.file must be found next to the case file, not in cwd.
+  const fs::path case_path = fs::path(FORMFLOW_SOURCE_DIR) / "cases" / "wedge-die-msh.toml";
+  const std::string command = "cd '" + scratch_.string() + "' && '" + FORMFLOW_BINARY +
+                              "' check '" + case_path.string() + "' > out.txt 2>&1";
+  const int status = std::system(command.c_str());
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << read_text(scratch_ / "out.txt");
+  EXPECT_TRUE(has_text(read_text(scratch_ / "out.txt"), "valid (240 cells, 1025 nodes)"));
+}
+
 TEST_F(MeshFile, MissingFile) {
   const int code = run_with(testing::two_squares(), "Q1", full_map, "meshes/absent.msh");
   expect_input_error(code, 4, "mesh.file", "no such file");
