@@ -77,6 +77,13 @@ std::string format_key_value(const KeyValue& value) {
   if (const auto* real = std::get_if<Real>(&value)) return format_real(*real);
   if (const auto* integer = std::get_if<std::int64_t>(&value)) return fmt::format("{}", *integer);
   if (const auto* text = std::get_if<std::string>(&value)) return quoted(*text);
+  if (const auto* points = std::get_if<KeyPoints>(&value)) {
+    std::string list = "[";
+    for (const auto& point : *points)
+      list += fmt::format("{}[{}, {}]", list.size() > 1 ? ", " : "", format_real(point[0]),
+                          format_real(point[1]));
+    return list + "]";
+  }
   if (const auto* map = std::get_if<NameMap>(&value)) {
     // A TOML inline table; keys quoted, so any physical name is valid.
     std::string table = "{";
@@ -96,6 +103,7 @@ std::string_view key_type_name(KeyType type) {
   case KeyType::Integer: return "integer";
   case KeyType::Enum: return "string";
   case KeyType::StringList: return "list of strings";
+  case KeyType::PointList: return "list of [x, y]";
   case KeyType::Text: return "string";
   case KeyType::NameMap: return "table of strings";
   }
@@ -121,6 +129,7 @@ std::string valid_values_text(const CaseKey& key) {
   case KeyType::StringList:
     text = "each of " + choices_text(key) + " at most once; may be empty";
     break;
+  case KeyType::PointList: text = "finite [x, y] pairs"; break;
   case KeyType::Text: text = "a path"; break;
   case KeyType::NameMap: text = "entries `name = part`, part one of " + choices_text(key); break;
   }

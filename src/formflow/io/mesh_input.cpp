@@ -5,6 +5,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/die_channel_mesh.hpp"
 #if FORMFLOW_WITH_GMSH
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_mesh.hpp"
@@ -100,11 +101,19 @@ void check_driven_part(const Case& case_, const mesh::Mesh<2>& mesh) {
 
 mesh::Mesh<2> load_mesh(const Case& case_) {
   const int order = fem::element_order(case_.element);
-  if (case_.mesh_source == mesh::MeshSource::Structured)
-    return mesh::make_channel_mesh(case_.geometry, case_.mesh_size, order);
+  const bool drawing = case_.process.type == physics::ProcessType::Drawing;
+  if (case_.mesh_source == mesh::MeshSource::Structured) {
+    mesh::Mesh<2> mesh = mesh::make_die_channel_mesh(case_.geometry, case_.mesh_size, order);
+    if (drawing) mesh::free_container_wall(mesh);
+    return mesh;
+  }
 #if FORMFLOW_WITH_GMSH
-  if (case_.mesh_source == mesh::MeshSource::Gmsh)
-    return mesh::make_gmsh_channel_mesh(case_.geometry, case_.mesh_size, order);
+  if (case_.mesh_source == mesh::MeshSource::Gmsh) {
+    mesh::Mesh<2> mesh = mesh::make_gmsh_channel_mesh(case_.geometry, case_.mesh_size, order);
+    if (drawing) mesh::free_container_wall(mesh);
+    return mesh;
+  }
+  // A file's parts are the user's map: drawing maps the wall before the die to free_entry.
   mesh::Mesh<2> mesh = read_mesh_file(case_);
   check_jacobians(case_, mesh);
   check_driven_part(case_, mesh);

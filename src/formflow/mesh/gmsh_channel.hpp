@@ -28,9 +28,15 @@ void build_channel_model(const GmshSession& session, const ChannelGeometry& geom
 Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry,
                                const std::vector<Point<2>>& die_face, Real size, int order);
 
-/// The square-die channel of the benchmark, meshed by Gmsh.
+/// The die face of any geometry.die as a polyline for build_channel_model, the
+/// die land (if any) appended: square, wedge and polyline dies exactly; the
+/// arc by chords of at most size/2 (straight cell faces keep the penalty
+/// contact free of the curved-face trouble described in docs/gmsh-meshes.md).
+std::vector<Point<2>> die_face_polyline(const ChannelGeometry& geometry, Real size);
+
+/// The channel of `geometry` (any die shape, with its land), meshed by Gmsh.
 inline Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry, Real size, int order) {
-  return make_gmsh_channel_mesh(geometry, square_die_face(geometry), size, order);
+  return make_gmsh_channel_mesh(geometry, die_face_polyline(geometry, size), size, order);
 }
 
 }  // namespace formflow::mesh
