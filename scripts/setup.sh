@@ -9,7 +9,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread
   libtoml11-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-  libcairo2-dev fonts-dejavu-core
+  libcairo2-dev fonts-dejavu-core libgmsh-dev
   libgtest-dev libgmock-dev libbenchmark-dev numdiff python3-vtk9
 )
 missing=()

@@ -6,6 +6,7 @@
 #include "formflow/app/simulation.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "formflow/io/mesh_input.hpp"
 #include "formflow/io/results_writer.hpp"
 
 #include <CLI/CLI.hpp>
@@ -41,9 +42,12 @@ int run_case(const Options& options) {
   Monitor monitor(stdout, case_.solver.tolerance);
   const bool show = !options.quiet && !options.json;
   if (show) {
-    fmt::print("formflow {}: {} {} mesh h = {:.6g}, volumetric rule {}x{}, mu = {:.6g}\n",
-               FORMFLOW_VERSION, case_.source, fem::element_name(case_.element), case_.mesh_size,
-               case_.volumetric_points, case_.volumetric_points, case_.friction.mu);
+    const std::string mesh_text = case_.mesh_source == mesh::MeshSource::File
+                                 ? "mesh " + case_.mesh_file
+                                 : fmt::format("mesh h = {:.6g}", case_.mesh_size);
+    fmt::print("formflow {}: {} {} {}, volumetric rule {}x{}, mu = {:.6g}\n", FORMFLOW_VERSION,
+               case_.source, fem::element_name(case_.element), mesh_text, case_.volumetric_points,
+               case_.volumetric_points, case_.friction.mu);
     monitor.header();
   }
   IterationCallback callback;
@@ -106,7 +110,9 @@ int run_cli(int argc, char** argv) {
     if (*run) return run_case(options);
     if (*check) {
       const io::Case case_ = io::load_case(options.case_path, parse_assignments(options.assignments));
-      fmt::print("{}: valid\n", case_.source);
+      // Meshing (or reading mesh.file) is part of the check: its errors are input errors too.
+      const mesh::Mesh<2> mesh = io::load_mesh(case_);
+      fmt::print("{}: valid ({} cells, {} nodes)\n", case_.source, mesh.n_cells(), mesh.n_nodes());
       return Ok;
     }
     if (*reference) {

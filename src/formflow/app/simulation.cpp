@@ -2,8 +2,7 @@
 // One case from parameters to results.
 #include "formflow/app/simulation.hpp"
 
-#include "formflow/mesh/channel_mesh.hpp"
-#include "formflow/mesh/die_channel_mesh.hpp"
+#include "formflow/io/mesh_input.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
@@ -37,9 +36,7 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   const auto start = std::chrono::steady_clock::now();
   {
     ScopedTimer timer(results.timing, "mesh");
-    simulation.mesh = mesh::make_die_channel_mesh(case_.geometry, case_.mesh_size,
-                                                  fem::element_order(case_.element));
-    if (case_.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(simulation.mesh);
+    simulation.mesh = io::load_mesh(case_);
   }
   std::unique_ptr<assembly::FormingProblem<2>> problem;
   {

@@ -5,10 +5,12 @@
 #include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/fem/lagrange.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/mesh_source.hpp"
 #include "formflow/physics/flow_law.hpp"
 #include "formflow/physics/process.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +36,21 @@ struct Case {
   solvers::IterationControl solver;
 
   std::string source;  ///< the case file path, or "<default>" for the embedded benchmark
+
+  mesh::MeshSource mesh_source = mesh::MeshSource::Structured;
+  std::string mesh_file;  ///< .msh path as written (relative: to the case file's directory)
+  /// Physical group name in mesh_file → boundary part name (mesh::label_name);
+  /// empty: the physical names are the part names themselves.
+  std::map<std::string, std::string> mesh_boundaries;
+
+  /// Where a key got its value, for errors found after loading (e.g. in the mesh file).
+  struct KeyLocation {
+    std::string file;  ///< case file path or "--set"
+    int line = 0;
+  };
+  /// By dotted key name; entries of a table key as "key.entry" ("mesh.boundaries.ram").
+  /// Keys left at their defaults are absent.
+  std::map<std::string, KeyLocation> key_locations;
 };
 
 /// One `--set key=value` override, in command-line order.

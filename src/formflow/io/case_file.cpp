@@ -55,6 +55,8 @@ std::string expected_type(const CaseKey& key) {
   case KeyType::Enum: return "a string";
   case KeyType::StringList: return "a list of strings";
   case KeyType::PointList: return "a list of [x, y] pairs";
+  case KeyType::Text: return "a string";
+  case KeyType::NameMap: return "a table of strings";
   }
   return "?";
 }
@@ -96,6 +98,18 @@ std::optional<KeyValue> convert(const CaseKey& key, const toml::value& value) {
       points.push_back(point);
     }
     return KeyValue{std::move(points)};
+  }
+  case KeyType::Text:
+    if (value.is_string()) return KeyValue{value.as_string().str};
+    return std::nullopt;
+  case KeyType::NameMap: {
+    if (!value.is_table()) return std::nullopt;
+    NameMap map;
+    for (const auto& [entry, text] : value.as_table()) {
+      if (!text.is_string()) return std::nullopt;
+      map[entry] = text.as_string().str;
+    }
+    return KeyValue{std::move(map)};
   }
   }
   return std::nullopt;
@@ -160,19 +174,26 @@ class CaseBuilder {
       throw InputError(file, line, name, problem->message, problem->hint);
     key.set(case_, *converted);
     origins_[name] = Origin{file, line, ++n_set_};
+    if (value.is_table())  // entries of a table key, so later errors can name their line
+      for (const auto& [entry, entry_value] : value.as_table())
+        origins_[name + "." + entry] =
+            Origin{file, file == "--set" ? line : line_of(entry_value), n_set_};
   }
 
   void check_cross_keys() const {
     check_order("geometry.exit_half_height", "geometry.entry_half_height");
     check_order("material.rate1", "material.rate2");
     check_die();
-    check_mesh_fits();
+    if (case_.mesh_source == mesh::MeshSource::Structured) check_mesh_fits();
+    check_mesh_source();
     check_flow_law();
     check_formulation();
   }
 
   Case finish(std::string source) {
     case_.source = std::move(source);
+    for (const auto& [name, where] : origins_)
+      case_.key_locations[name] = Case::KeyLocation{where.file, where.line};
     return case_;
   }
 
@@ -269,6 +290,27 @@ class CaseBuilder {
                      fmt::format("value {}: {}",
                                  format_key_value(find_case_key(blamed)->get(case_)), message),
                      hint);
+  }
+
+  /// mesh.file is needed by, and only by, mesh.source = "file"; so is mesh.boundaries.
+  void check_mesh_source() const {
+    const bool from_file = case_.mesh_source == mesh::MeshSource::File;
+    if (from_file && case_.mesh_file.empty()) {
+      const Origin where = origin("mesh.source");
+      throw InputError(where.file, where.line, "mesh.source",
+                       "value \"file\" needs mesh.file, which is not set",
+                       "e.g. file = \"meshes/die.msh\" in [mesh]");
+    }
+    for (const std::string name : {"mesh.file", "mesh.boundaries"}) {
+      const bool set = name == "mesh.file" ? !case_.mesh_file.empty()
+                                           : !case_.mesh_boundaries.empty();
+      if (from_file || !set) continue;
+      const Origin where = origin(name);
+      throw InputError(where.file, where.line, name,
+                       fmt::format("is set but mesh.source = {} does not read a file",
+                                   format_key_value(find_case_key("mesh.source")->get(case_))),
+                       "set mesh.source = \"file\" to use it");
+    }
   }
 
   [[noreturn]] void die_error(const std::string& name, const std::string& message,

@@ -131,6 +131,31 @@ KeySpec die_profile_key() {
       .doc("polyline die face as [x, y] points, x measured from the die entry x = L_c");
 }
 
+KeySpec mesh_file_key() {
+  KeySpec spec("mesh.file", KeyType::Text, std::string());
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.mesh_file = std::get<std::string>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh_file; };
+  return spec.constraint("required when mesh.source = \"file\"; only then")
+      .doc("the Gmsh mesh (.msh 4.1 or 2.2, ASCII or binary) of quad-4 (Q1) or quad-9 (Q2) "
+           "cells; a relative path is taken from the case file's directory");
+}
+
+KeySpec mesh_boundaries_key() {
+  KeySpec spec("mesh.boundaries", KeyType::NameMap, NameMap{});
+  for (int k = 0; k < mesh::n_boundary_labels; ++k)
+    spec.key.choices.push_back(mesh::label_name(static_cast<mesh::BoundaryLabel>(k)));
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.mesh_boundaries = std::get<NameMap>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh_boundaries; };
+  return spec.constraint("only with mesh.source = \"file\"")
+      .doc("physical curve name in mesh.file → boundary part, as a table `[mesh.boundaries]` "
+           "with lines `ram = \"rear\"`; several names may share a part; every boundary "
+           "facet needs one; {} = the physical names are the part names");
+}
+
 std::vector<CaseKey> process_and_geometry_keys() {
   return {
       enum_key("process.type", "extrusion",
@@ -207,9 +232,19 @@ std::vector<CaseKey> discretisation_keys() {
           .doc("velocity element: Q1 (4-node bilinear) or Q2 (9-node biquadratic)"),
       real_key("mesh.size", 1.0, [](auto& c) -> auto& { return c.mesh_size; })
           .above(0)
-          .constraint("divides every geometry length")
+          .constraint("divides every geometry length when mesh.source = \"structured\"")
           .unit("length")
-          .doc("side of the uniform square cells (mesh I: 10/6, mesh II: 1)"),
+          .doc("side of the uniform square cells (mesh I: 10/6, mesh II: 1); the target "
+               "element size for mesh.source = \"gmsh\"; unused for \"file\""),
+      enum_key("mesh.source", "structured",
+               {{"structured", mesh::MeshSource::Structured},
+                {"gmsh", mesh::MeshSource::Gmsh},
+                {"file", mesh::MeshSource::File}},
+               [](auto& c) -> auto& { return c.mesh_source; })
+          .doc("structured: uniform square cells; gmsh: the same geometry meshed by Gmsh with "
+               "recombined quadrilaterals of size mesh.size; file: the mesh in mesh.file"),
+      mesh_file_key(),
+      mesh_boundaries_key(),
       integer_key("integration.volumetric", 2,
                   [](auto& c) -> auto& { return c.volumetric_points; })
           .at_least(1)
@@ -474,7 +509,8 @@ const std::vector<CaseSection>& case_sections() {
   static const std::vector<CaseSection> sections = {
       {"process", "What drives the flow (SPEC §1)."},
       {"geometry", "The half model of the die channel (SPEC §4); lengths are dimensionless."},
-      {"mesh", "Uniform square cells of one element kind."},
+      {"mesh", "Where the cells come from (a uniform grid, Gmsh, or a .msh file) and their "
+               "element kind."},
       {"integration", "Quadrature of the volumetric penalty term (selective integration, SPEC §3)."},
       {"formulation", "Which form of the a-term is assembled, and penalty or mixed (pressure) form of the constraints (SPEC §2, docs/mixed.md)."},
       {"material", "Flow law σ_p(ε̄̇) on [rate1, rate2], linear through the origin outside "
@@ -559,6 +595,13 @@ std::optional<KeyProblem> check_key_value(const CaseKey& key, const KeyValue& va
       for (const auto& point : std::get<KeyPoints>(value))
         if (!std::isfinite(point[0]) || !std::isfinite(point[1]))
           return KeyProblem{"a point is not finite", "give finite [x, y] pairs"};
+      return std::nullopt;
+    case KeyType::Text: return std::nullopt;
+    case KeyType::NameMap:
+      for (const auto& [entry, text] : std::get<NameMap>(value))
+        if (std::find(key.choices.begin(), key.choices.end(), text) == key.choices.end())
+          return KeyProblem{"invalid value \"" + text + "\" for \"" + entry + "\"",
+                            "valid values: " + quoted_choices(key)};
       return std::nullopt;
   }
   return std::nullopt;

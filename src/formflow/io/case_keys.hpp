@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,13 +17,20 @@
 namespace formflow::io {
 
 /// The value types a case key can hold. Real keys also accept TOML integers.
-enum class KeyType { Real, Integer, Enum, StringList, PointList };
+/// Text is any string (a path); NameMap is a TOML table of strings whose
+/// values are among the key's choices (`[mesh.boundaries]`).
+enum class KeyType { Real, Integer, Enum, StringList, PointList, Text, NameMap };
+
+/// Entries of a NameMap key: TOML key → string value.
+using NameMap = std::map<std::string, std::string>;
 
 /// A key's value as read from the case file, before it is stored in a Case:
-/// Real → double, Integer → std::int64_t, Enum → std::string,
-/// StringList → std::vector<std::string>, PointList → a list of [x, y].
+/// Real → double, Integer → std::int64_t, Enum and Text → std::string,
+/// StringList → std::vector<std::string>, PointList → a list of [x, y],
+/// NameMap → NameMap.
 using KeyPoints = std::vector<std::array<Real, 2>>;
-using KeyValue = std::variant<Real, std::int64_t, std::string, std::vector<std::string>, KeyPoints>;
+using KeyValue =
+    std::variant<Real, std::int64_t, std::string, std::vector<std::string>, KeyPoints, NameMap>;
 
 /// A closed or open numeric bound; `std::nullopt` value means unbounded.
 struct Bound {

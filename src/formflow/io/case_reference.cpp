@@ -84,6 +84,13 @@ std::string format_key_value(const KeyValue& value) {
                           format_real(point[1]));
     return list + "]";
   }
+  if (const auto* map = std::get_if<NameMap>(&value)) {
+    // A TOML inline table; keys quoted, so any physical name is valid.
+    std::string table = "{";
+    for (const auto& [entry, text] : *map)
+      table += (table.size() > 1 ? ", " : "") + quoted(entry) + " = " + quoted(text);
+    return table + "}";
+  }
   std::string text = "[";
   for (const std::string& entry : std::get<std::vector<std::string>>(value))
     text += (text.size() > 1 ? ", " : "") + quoted(entry);
@@ -97,6 +104,8 @@ std::string_view key_type_name(KeyType type) {
   case KeyType::Enum: return "string";
   case KeyType::StringList: return "list of strings";
   case KeyType::PointList: return "list of [x, y]";
+  case KeyType::Text: return "string";
+  case KeyType::NameMap: return "table of strings";
   }
   return "?";
 }
@@ -121,6 +130,8 @@ std::string valid_values_text(const CaseKey& key) {
     text = "each of " + choices_text(key) + " at most once; may be empty";
     break;
   case KeyType::PointList: text = "finite [x, y] pairs"; break;
+  case KeyType::Text: text = "a path"; break;
+  case KeyType::NameMap: text = "entries `name = part`, part one of " + choices_text(key); break;
   }
   if (!key.constraint.empty()) text += fmt::format("; {}", key.constraint);
   return text;

@@ -17,6 +17,12 @@ std::string_view label_name(BoundaryLabel label) {
   return "unknown";
 }
 
+std::optional<BoundaryLabel> label_from_name(std::string_view name) {
+  for (int k = 0; k < n_boundary_labels; ++k)
+    if (label_name(static_cast<BoundaryLabel>(k)) == name) return static_cast<BoundaryLabel>(k);
+  return std::nullopt;
+}
+
 template <int dim>
 std::vector<int> face_local_nodes(int n_side, int local_face) {
   const int axis = local_face / 2;

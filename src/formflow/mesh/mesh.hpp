@@ -6,6 +6,7 @@
 #include "formflow/core/types.hpp"
 
 #include <array>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -25,6 +26,8 @@ inline constexpr int n_boundary_labels = 7;
 
 /// Lower-case label name as used in case files and outputs ("rear", "container", ...).
 std::string_view label_name(BoundaryLabel label);
+/// The label named `name` (the inverse of label_name), or std::nullopt.
+std::optional<BoundaryLabel> label_from_name(std::string_view name);
 /// True for the parts of the contact boundary Γ3.
 inline bool is_contact(BoundaryLabel label) {
   return label == BoundaryLabel::Container || label == BoundaryLabel::Die;

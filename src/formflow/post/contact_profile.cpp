@@ -3,7 +3,9 @@
 #include "formflow/post/post_process.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <map>
+#include <optional>
 
 namespace formflow::post {
 
@@ -28,47 +30,71 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
   }
   if (segments.empty()) return {};
   const std::vector<Index> rear = assembly::nodes_on(mesh, mesh::BoundaryLabel::Rear);
-  Index start = segments.front().from;
-  Real best = std::numeric_limits<Real>::max();
-  for (const auto& [node, segment] : by_node) {
-    if (by_node.count(node) != 1) continue;  // interior joint, not a chain end
-    const bool on_rear = std::binary_search(rear.begin(), rear.end(), node);
-    const Real key = on_rear ? -1.0 : mesh.nodes(0, node);
-    if (key < best) best = key, start = node;
-  }
+  std::vector<bool> used(segments.size(), false);
+  // Where the next chain starts: an end of a chain not walked yet, the one on
+  // the rear first, else the one with the smallest x; a closed loop of unused
+  // segments starts anywhere on it. Γ3 of a general mesh may have several chains
+  // (a die apart from the container): they follow each other along the arc length.
+  auto chain_start = [&]() -> std::optional<Index> {
+    std::optional<Index> start;
+    Real best = std::numeric_limits<Real>::max();
+    for (const auto& [node, segment] : by_node) {
+      if (used[segment]) continue;
+      const auto range = by_node.equal_range(node);
+      const auto unused = std::count_if(range.first, range.second,
+                                        [&](const auto& entry) { return !used[entry.second]; });
+      if (unused != 1) continue;  // interior joint, not a chain end
+      const bool on_rear = std::binary_search(rear.begin(), rear.end(), node);
+      const Real key = on_rear ? -1.0 : mesh.nodes(0, node);
+      if (key < best) best = key, start = node;
+    }
+    if (start) return start;
+    for (std::size_t k = 0; k < segments.size(); ++k)
+      if (!used[k]) return segments[k].from;
+    return std::nullopt;
+  };
 
   std::vector<ContactSample> samples;
-  std::vector<bool> used(segments.size(), false);
   Real arc_length = 0.0;
-  for (Index node = start;;) {
-    auto range = by_node.equal_range(node);
-    auto next = std::find_if(range.first, range.second, [&](const auto& entry) { return !used[entry.second]; });
-    if (next == range.second) break;
-    const Segment& segment = segments[next->second];
-    used[next->second] = true;
-    const Point<2> origin = mesh.nodes.col(node);
-    std::vector<ContactSample> along;
-    for (int q = 0; q < n_q; ++q) {
-      const auto& point = contact[segment.first_point + q];
-      ContactSample sample;
-      sample.arc_length = arc_length + (point.position - origin).norm();
-      sample.x = point.position[0];
-      sample.y = point.position[1];
-      sample.contact_pressure = point.contact_pressure;
-      sample.slip_velocity = point.tangential_velocity.norm();
-      sample.friction_stress = point.friction_traction.norm();
-      sample.sticking = point.sticking;
-      sample.part = mesh.facets[point.facet].label == mesh::BoundaryLabel::Die ? 1 : 0;
-      along.push_back(sample);
+  for (std::optional<Index> start = chain_start(); start; start = chain_start()) {
+    for (Index node = *start;;) {
+      auto range = by_node.equal_range(node);
+      auto next = std::find_if(range.first, range.second, [&](const auto& entry) { return !used[entry.second]; });
+      if (next == range.second) break;
+      const Segment& segment = segments[next->second];
+      used[next->second] = true;
+      // Face points run from `from` to `to`; walk them from `node`, measuring the
+      // arc length along the polyline through them (exact on straight faces,
+      // a chord error of O(h³/R²) on curved ones).
+      const bool forward = segment.from == node;
+      Point<2> previous = mesh.nodes.col(node);
+      Real along_face = 0.0;
+      std::vector<ContactSample> along;
+      for (int step = 0; step < n_q; ++step) {
+        const int q = forward ? step : n_q - 1 - step;
+        const auto& point = contact[segment.first_point + q];
+        along_face += (point.position - previous).norm();
+        previous = point.position;
+        ContactSample sample;
+        sample.arc_length = arc_length + along_face;
+        sample.x = point.position[0];
+        sample.y = point.position[1];
+        sample.contact_pressure = point.contact_pressure;
+        sample.slip_velocity = point.tangential_velocity.norm();
+        sample.friction_stress = point.friction_traction.norm();
+        sample.sticking = point.sticking;
+        sample.part = mesh.facets[point.facet].label == mesh::BoundaryLabel::Die ? 1 : 0;
+        along.push_back(sample);
+      }
+      std::sort(along.begin(), along.end(), [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
+      samples.insert(samples.end(), along.begin(), along.end());
+      for (int q = 0; q < n_q; ++q) {
+        const auto& point = contact[segment.first_point + q];
+        // Axisymmetric weights are r dΓ (per radian): the arc length wants dΓ.
+        arc_length += problem.axisymmetric() ? point.weight / point.position[1] : point.weight;
+      }
+      node = segment.from == node ? segment.to : segment.from;
     }
-    std::sort(along.begin(), along.end(), [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
-    samples.insert(samples.end(), along.begin(), along.end());
-    for (int q = 0; q < n_q; ++q) {
-      const auto& point = contact[segment.first_point + q];
-      // Axisymmetric weights are r dΓ (per radian): the arc length wants dΓ.
-      arc_length += problem.axisymmetric() ? point.weight / point.position[1] : point.weight;
-    }
-    node = segment.from == node ? segment.to : segment.from;
   }
   return samples;
 }

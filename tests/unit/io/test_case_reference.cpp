@@ -35,7 +35,8 @@ TEST(CaseKeys, TableIsConsistent) {
     EXPECT_FALSE(key.doc.empty()) << key.name;
     EXPECT_FALSE(key.unit.empty()) << key.name;
     EXPECT_TRUE(key.set && key.get) << key.name;
-    const bool has_choices = key.type == KeyType::Enum || key.type == KeyType::StringList;
+    const bool has_choices = key.type == KeyType::Enum || key.type == KeyType::StringList ||
+                             key.type == KeyType::NameMap;
     EXPECT_EQ(!key.choices.empty(), has_choices) << key.name;
     EXPECT_FALSE(check_key_value(key, key.default_value)) << key.name << ": default invalid";
     EXPECT_EQ(find_case_key(key.name), &key);

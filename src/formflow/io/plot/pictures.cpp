@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <utility>
 
 namespace formflow::io::plot {
@@ -17,9 +18,15 @@ std::string run_description(const Case& case_, const post::Results& results) {
           ? fmt::format("converged in {} iterations", results.iterations)
           : fmt::format("NOT converged ({}, {} iterations)",
                         solvers::stop_reason_name(results.stop_reason), results.iterations);
-  return fmt::format("{} · {}, h = {:g} · μ_{{f}} = {:g} · {} · {} {:.4g}",
+  // A mesh read from a file has no single cell size: name the file instead.
+  const std::string cells =
+      case_.mesh_source == mesh::MeshSource::File
+          ? fmt::format("{} cells from {}", results.n_cells,
+                        std::filesystem::path(case_.mesh_file).filename().string())
+          : fmt::format("h = {:g}", case_.mesh_size);
+  return fmt::format("{} · {}, {} · μ_{{f}} = {:g} · {} · {} {:.4g}",
                      drawing ? "drawing" : "extrusion", fem::element_name(case_.element),
-                     case_.mesh_size, case_.friction.mu, outcome,
+                     cells, case_.friction.mu, outcome,
                      drawing ? "drawing stress" : "ram pressure", results.pressure.ram_reaction);
 }
 

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+// Turning mesh.source / mesh.file / mesh.boundaries into a checked Mesh<2>.
+#include "formflow/io/mesh_input.hpp"
+
+#include "formflow/core/error.hpp"
+#include "formflow/fem/cell_values.hpp"
+#include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/die_channel_mesh.hpp"
+#if FORMFLOW_WITH_GMSH
+#include "formflow/mesh/gmsh_channel.hpp"
+#include "formflow/mesh/gmsh_mesh.hpp"
+#endif
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+namespace formflow::io {
+
+namespace {
+
+#if FORMFLOW_WITH_GMSH
+/// Where `name` was set; for a key left at its default, where `fallback` was.
+Case::KeyLocation location_of(const Case& case_, const std::string& name,
+                              const std::string& fallback = "mesh.file") {
+  for (const std::string& key : {name, fallback})
+    if (const auto found = case_.key_locations.find(key); found != case_.key_locations.end())
+      return found->second;
+  return {case_.source, 0};
+}
+
+/// mesh.file as Gmsh should open it: relative paths start at the case file's directory.
+std::string resolved_mesh_path(const Case& case_) {
+  const std::filesystem::path path(case_.mesh_file);
+  const std::string set_in = location_of(case_, "mesh.file").file;
+  if (path.is_absolute() || set_in == "--set" || set_in == "<default>") return path.string();
+  return (std::filesystem::path(set_in).parent_path() / path).string();
+}
+
+/// Checks the Jacobian at the Gauss points of the full rule, where the solver evaluates it.
+void check_jacobians(const Case& case_, const mesh::Mesh<2>& mesh) {
+  fem::CellValues<2> values(mesh.order, fem::gauss_rule<2>(mesh.order + 1));
+  fem::CellValues<2>::Gradients coordinates(2, mesh.nodes_per_cell());
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a) coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
+    if (values.reinit(coordinates)) continue;
+    const Point<2> centre = coordinates.rowwise().mean();
+    const Case::KeyLocation where = location_of(case_, "mesh.file");
+    throw InputError(where.file, where.line, "mesh.file",
+                     fmt::format("cell {} (centre ({:.6g}, {:.6g})) is inverted or tangled: its "
+                                 "Jacobian is not positive at a Gauss point",
+                                 cell, centre.x(), centre.y()),
+                     "fix the mesh: every quadrilateral must be convex enough that its "
+                     "isoparametric map is one-to-one");
+  }
+}
+
+std::vector<mesh::PhysicalBoundary> boundary_map(const Case& case_) {
+  std::vector<mesh::PhysicalBoundary> map;  // empty: the physical names are the part names
+  for (const auto& [name, part] : case_.mesh_boundaries)
+    map.push_back({name, *mesh::label_from_name(part)});  // validated by the key table
+  return map;
+}
+
+mesh::Mesh<2> read_mesh_file(const Case& case_) {
+  using Subject = mesh::MeshFileError::Subject;
+  try {
+    return mesh::read_gmsh_mesh(resolved_mesh_path(case_), boundary_map(case_),
+                                fem::element_order(case_.element));
+  } catch (const mesh::MeshFileError& error) {
+    std::string key = "mesh.file";
+    if (error.subject == Subject::Element) key = "mesh.element";
+    if (error.subject == Subject::Boundaries) key = "mesh.boundaries";
+    if (error.subject == Subject::Group) key = "mesh.boundaries." + error.group;
+    // A key at its default has no line: blame the line of mesh.file (or of the map).
+    const Case::KeyLocation where =
+        location_of(case_, key, key.rfind("mesh.boundaries.", 0) == 0 ? "mesh.boundaries" : "mesh.file");
+    const std::string message =
+        error.subject == Subject::File ? error.message
+                                       : fmt::format("{}: {}", case_.mesh_file, error.message);
+    throw InputError(where.file, where.line, key, message, error.hint);
+  }
+}
+
+/// The part that carries the process speed must exist, or nothing drives the flow.
+void check_driven_part(const Case& case_, const mesh::Mesh<2>& mesh) {
+  const bool extrusion = case_.process.type == physics::ProcessType::Extrusion;
+  const mesh::BoundaryLabel driven = extrusion ? mesh::BoundaryLabel::Rear : mesh::BoundaryLabel::Front;
+  for (const mesh::BoundaryFacet& facet : mesh.facets)
+    if (facet.label == driven) return;
+  const Case::KeyLocation where = location_of(case_, "mesh.boundaries");
+  throw InputError(where.file, where.line, "mesh.boundaries",
+                   fmt::format("{}: no boundary facet is \"{}\", where {} drives the flow",
+                               case_.mesh_file, mesh::label_name(driven),
+                               extrusion ? "the ram of the extrusion" : "the pull of the drawing"),
+                   fmt::format("map the physical curve of that end to \"{}\"", mesh::label_name(driven)));
+}
+#endif
+
+}  // namespace
+
+mesh::Mesh<2> load_mesh(const Case& case_) {
+  const int order = fem::element_order(case_.element);
+  const bool drawing = case_.process.type == physics::ProcessType::Drawing;
+  if (case_.mesh_source == mesh::MeshSource::Structured) {
+    mesh::Mesh<2> mesh = mesh::make_die_channel_mesh(case_.geometry, case_.mesh_size, order);
+    if (drawing) mesh::free_container_wall(mesh);
+    return mesh;
+  }
+#if FORMFLOW_WITH_GMSH
+  if (case_.mesh_source == mesh::MeshSource::Gmsh) {
+    mesh::Mesh<2> mesh = mesh::make_gmsh_channel_mesh(case_.geometry, case_.mesh_size, order);
+    if (drawing) mesh::free_container_wall(mesh);
+    return mesh;
+  }
+  // A file's parts are the user's map: drawing maps the wall before the die to free_entry.
+  mesh::Mesh<2> mesh = read_mesh_file(case_);
+  check_jacobians(case_, mesh);
+  check_driven_part(case_, mesh);
+  return mesh;
+#else
+  const auto found = case_.key_locations.find("mesh.source");
+  const Case::KeyLocation where =
+      found == case_.key_locations.end() ? Case::KeyLocation{case_.source, 0} : found->second;
+  throw InputError(where.file, where.line, "mesh.source",
+                   "this formflow was built without Gmsh (FORMFLOW_WITH_GMSH=OFF)",
+                   "use mesh.source = \"structured\", or rebuild with libgmsh-dev installed");
+#endif
+}
+
+}  // namespace formflow::io

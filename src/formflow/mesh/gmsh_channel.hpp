@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// The extrusion channel built and meshed with the Gmsh API (unstructured quadrilaterals).
+#pragma once
+
+#include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/gmsh_session.hpp"
+
+#include <vector>
+
+namespace formflow::mesh {
+
+/// The die face of the square die: from the top of the die (L_c, H_in) straight
+/// down to the start of the exit (L_c, H_out).
+std::vector<Point<2>> square_die_face(const ChannelGeometry& geometry);
+
+/// Adds the half channel to the current model of `session` and meshes it with
+/// recombined quadrilaterals (Gmsh's Frontal-Delaunay, then blossom full-quad
+/// recombination) of target size `size`, of `order` 1 (quad-4) or 2 (quad-9).
+/// `die_face` is a polyline from (L_c, H_in) down to (x_d, H_out), the start of
+/// the exit; the exit runs to x_d + L_e. Any die profile enters only here,
+/// so a wedge or curved die is another `die_face`. Physical curve groups carry
+/// the part names (label_name); the surface is the physical group "domain",
+/// so that a written .msh keeps its elements.
+void build_channel_model(const GmshSession& session, const ChannelGeometry& geometry,
+                         const std::vector<Point<2>>& die_face, Real size, int order);
+
+/// The channel with `die_face`, meshed by Gmsh, as a formflow mesh.
+Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry,
+                               const std::vector<Point<2>>& die_face, Real size, int order);
+
+/// The die face of any geometry.die as a polyline for build_channel_model, the
+/// die land (if any) appended: square, wedge and polyline dies exactly; the
+/// arc by chords of at most size/2 (straight cell faces keep the penalty
+/// contact free of the curved-face trouble described in docs/gmsh-meshes.md).
+std::vector<Point<2>> die_face_polyline(const ChannelGeometry& geometry, Real size);
+
+/// The channel of `geometry` (any die shape, with its land), meshed by Gmsh.
+inline Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry, Real size, int order) {
+  return make_gmsh_channel_mesh(geometry, die_face_polyline(geometry, size), size, order);
+}
+
+}  // namespace formflow::mesh

@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: MIT
+// Where the mesh of a case comes from.
+#pragma once
+
+namespace formflow::mesh {
+
+/// structured: the uniform square-cell generator (channel_mesh.hpp);
+/// gmsh: the same channel geometry meshed by Gmsh with recombined quadrilaterals
+/// (gmsh_channel.hpp); file: a user's .msh read through Gmsh (gmsh_mesh.hpp).
+enum class MeshSource { Structured, Gmsh, File };
+
+}  // namespace formflow::mesh

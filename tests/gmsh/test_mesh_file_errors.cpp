@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+// mesh.source = "file" through the binary: a good .msh is accepted; each defect
+// is exit 2 with file:line, key and a hint, and nothing is written.
+#include "gmsh/gmsh_test_mesh.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace formflow {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream stream(path, std::ios::binary);
+  std::ostringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
+}
+
+/// The boundary map of two_squares(), as lines 6–10 of the case file.
+const std::string full_map =
+    "[mesh.boundaries]\n"
+    "ram = \"rear\"\n"
+    "axis = \"symmetry\"\n"
+    "front = \"front\"\n"
+    "wall = \"container\"\n";
+
+class MeshFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    scratch_ = fs::temp_directory_path() /
+               ("formflow-meshfile-" + std::string(info->name()) + "-" + std::to_string(getpid()));
+    fs::remove_all(scratch_);
+    fs::create_directories(scratch_ / "meshes");
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  /// Writes `mesh` to meshes/m.msh and a case that reads it (mesh.file relative
+  /// to the case file: line 4; [mesh.boundaries] from line 6); runs `formflow
+  /// run` into out/; returns the exit code and keeps stderr.
+  int run_with(const testing::TestMesh& mesh, const std::string& element = "Q1",
+               const std::string& boundaries = full_map, const std::string& file = "meshes/m.msh") {
+    testing::write_test_mesh(mesh, (scratch_ / "meshes" / "m.msh").string());
+    const fs::path case_path = scratch_ / "case.toml";
+    std::ofstream(case_path) << "[mesh]\n"
+                             << "source = \"file\"\n"
+                             << "element = \"" << element << "\"\n"
+                             << "file = \"" << file << "\"\n"
+                             << "\n"
+                             << boundaries;
+    const fs::path err = scratch_ / "stderr.txt";
+    const std::string command = "'" + std::string(FORMFLOW_BINARY) + "' run '" +
+                                case_path.string() + "' -q -o '" + (scratch_ / "out").string() +
+                                "' > /dev/null 2> '" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    error_ = read_text(err);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  /// Exit 2, the case file and line, the key, and no output directory.
+  void expect_input_error(int code, int line, const std::string& key, const std::string& words) {
+    EXPECT_EQ(code, 2) << error_;
+    EXPECT_TRUE(has_text(error_, (scratch_ / "case.toml").string() + ":" + std::to_string(line) +
+                                     ": " + key + ": "));
+    EXPECT_TRUE(has_text(error_, words));
+    EXPECT_FALSE(fs::exists(scratch_ / "out")) << "nothing may be written on bad input";
+  }
+
+  fs::path scratch_;
+  std::string error_;
+};
+
+TEST_F(MeshFile, AGoodMeshIsSolved) {
+  // Two Q1 cells pushed by the ram under a frictionless wall: converges (exit 0).
+  EXPECT_EQ(run_with(testing::two_squares()), 0) << error_;
+  EXPECT_TRUE(fs::exists(scratch_ / "out" / "summary.json"));
+}
+
+TEST_F(MeshFile, TheShippedCaseReadsItsMeshRelativeToTheCaseFile) {
+  // Run from the scratch directory: mesh.file must be found next to the case file, not in cwd.
+  const fs::path case_path = fs::path(FORMFLOW_SOURCE_DIR) / "cases" / "wedge-die-msh.toml";
+  const std::string command = "cd '" + scratch_.string() + "' && '" + FORMFLOW_BINARY +
+                              "' check '" + case_path.string() + "' > out.txt 2>&1";
+  const int status = std::system(command.c_str());
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << read_text(scratch_ / "out.txt");
+  EXPECT_TRUE(has_text(read_text(scratch_ / "out.txt"), "valid (240 cells, 1025 nodes)"));
+}
+
+TEST_F(MeshFile, MissingFile) {
+  const int code = run_with(testing::two_squares(), "Q1", full_map, "meshes/absent.msh");
+  expect_input_error(code, 4, "mesh.file", "no such file");
+}
+
+TEST_F(MeshFile, MappedGroupAbsentFromTheFile) {
+  const int code = run_with(testing::two_squares(), "Q1", full_map + "die = \"die\"\n");
+  expect_input_error(code, 11, "mesh.boundaries.die", "no physical group named \"die\"");
+  EXPECT_TRUE(has_text(error_, "physical curves in the mesh: axis, front, ram, wall"));
+}
+
+TEST_F(MeshFile, UnmappedGroupOnTheBoundary) {
+  const std::string without_front =
+      "[mesh.boundaries]\nram = \"rear\"\naxis = \"symmetry\"\nwall = \"container\"\n";
+  const int code = run_with(testing::two_squares(), "Q1", without_front);
+  expect_input_error(code, 6, "mesh.boundaries", "physical curve \"front\" lies on the boundary");
+  EXPECT_TRUE(has_text(error_, "add `\"front\" = PART` to [mesh.boundaries]"));
+}
+
+TEST_F(MeshFile, BoundaryFacetWithoutLabel) {
+  testing::TestMesh mesh = testing::two_squares();
+  mesh.curves.erase(mesh.curves.begin() + 2);  // no "front" group at all
+  const std::string without_front =
+      "[mesh.boundaries]\nram = \"rear\"\naxis = \"symmetry\"\nwall = \"container\"\n";
+  const int code = run_with(mesh, "Q1", without_front);
+  expect_input_error(code, 6, "mesh.boundaries",
+                     "1 boundary facets are in no mapped physical curve, e.g. (2, 0)–(2, 1)");
+}
+
+TEST_F(MeshFile, Triangles) {
+  testing::TestMesh mesh = testing::two_squares();
+  mesh.element_type = 2;
+  mesh.elements = {{1, 2, 5}, {1, 5, 4}, {2, 3, 6}, {2, 6, 5}};
+  const int code = run_with(mesh);
+  expect_input_error(code, 3, "mesh.element", "4 elements of type \"Triangle 3\"");
+  EXPECT_TRUE(has_text(error_, "formflow needs quadrilaterals"));
+}
+
+TEST_F(MeshFile, SerendipityQuadrilaterals) {
+  testing::TestMesh mesh = testing::two_squares();
+  mesh.element_type = 16;  // quad-8: corners, then mid-edge nodes
+  mesh.nodes.insert(mesh.nodes.end(), {{0.5, 0}, {1, 0.5}, {0.5, 1}, {0, 0.5}, {1.5, 0}, {2, 0.5}, {1.5, 1}});
+  mesh.elements = {{1, 2, 5, 4, 7, 8, 9, 10}, {2, 3, 6, 5, 11, 12, 13, 8}};
+  const int code = run_with(mesh, "Q2");
+  expect_input_error(code, 3, "mesh.element", "8-node serendipity quadrilaterals are not supported");
+}
+
+TEST_F(MeshFile, OrderDifferentFromMeshElement) {
+  const int code = run_with(testing::two_squares(), "Q2");
+  expect_input_error(code, 3, "mesh.element",
+                     "mesh.element = \"Q2\" needs 9-node quadrilaterals; the mesh has 4-node ones");
+}
+
+TEST_F(MeshFile, TangledElement) {
+  testing::TestMesh mesh = testing::two_squares();
+  // Node 4 pulled across the opposite edge: the first cell crosses itself
+  // (same connectivity and boundary), so its Jacobian changes sign inside.
+  mesh.nodes[3] = {1.5, 0.3};
+  const int code = run_with(mesh);
+  expect_input_error(code, 4, "mesh.file", "cell 0 (centre (0.875, 0.325)) is inverted or tangled");
+}
+
+TEST_F(MeshFile, DrivenEndMissing) {
+  // Every facet labelled, but none is the rear that the extrusion ram pushes.
+  const std::string no_rear = "[mesh.boundaries]\nram = \"symmetry\"\naxis = \"symmetry\"\n"
+                              "front = \"front\"\nwall = \"container\"\n";
+  const int code = run_with(testing::two_squares(), "Q1", no_rear);
+  expect_input_error(code, 6, "mesh.boundaries", "no boundary facet is \"rear\"");
+}
+
+TEST_F(MeshFile, InvalidPartName) {
+  const int code = run_with(testing::two_squares(), "Q1", full_map + "extra = \"wall\"\n");
+  EXPECT_EQ(code, 2);
+  EXPECT_TRUE(has_text(error_, ": mesh.boundaries: invalid value \"wall\" for \"extra\""));
+  EXPECT_TRUE(has_text(error_, "\"rear\", \"free_entry\", \"container\""));
+}
+
+}  // namespace
+}  // namespace formflow
