@@ -21,9 +21,15 @@ bool friction_acts_on(const physics::Friction& friction, mesh::BoundaryLabel lab
 
 template <int dim>
 FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings)
+    : FormingProblem(mesh, settings, make_process_constraints(mesh, settings.process), {}) {}
+
+template <int dim>
+FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings,
+                                    DirichletConstraints constraints, BodyForce<dim> body_force)
     : mesh_(mesh),
       settings_(settings),
-      constraints_(make_process_constraints(mesh, settings.process)),
+      constraints_(std::move(constraints)),
+      body_force_(std::move(body_force)),
       full_rule_(fem::gauss_rule<dim>(mesh.order + 1)),
       volumetric_rule_(fem::gauss_rule<dim>(settings.volumetric_points)),
       facet_rule_(fem::gauss_rule<dim - 1>(mesh.order + 1)) {
@@ -132,6 +138,7 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system) const
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   const int n_local = mesh_.nodes_per_cell() * dim;
   MatrixX local_matrix(n_local, n_local);
+  VectorX local_load;
   std::vector<Real> viscosity(full_rule_.size());
   const Real initial_viscosity = settings_.law.secant_viscosity(settings_.initial_rate);
 
@@ -153,6 +160,21 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system) const
     add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
     assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_matrix);
     plan_->scatter(cell, local_matrix, constraints_.values, system);
+    if (body_force_) {
+      add_body_force(full_values, local_load);
+      plan_->scatter_load(cell, local_load, system);
+    }
+  }
+}
+
+template <int dim>
+void FormingProblem<dim>::add_body_force(const fem::CellValues<dim>& values,
+                                         VectorX& local_load) const {
+  local_load.setZero(values.n_nodes() * dim);
+  for (int q = 0; q < values.n_points(); ++q) {
+    const Point<dim> force = body_force_(values.point(q));
+    for (int a = 0; a < values.n_nodes(); ++a)  // ∫ f·φ_a e_i dx
+      local_load.template segment<dim>(a * dim) += values.shape(q)[a] * values.JxW(q) * force;
   }
 }
 

@@ -149,6 +149,7 @@ class CaseBuilder {
     check_order("geometry.exit_half_height", "geometry.entry_half_height");
     check_order("material.rate1", "material.rate2");
     check_mesh_fits();
+    check_verification();
   }
 
   Case finish(std::string source) {
@@ -179,6 +180,26 @@ class CaseBuilder {
                                  blame_small ? "less than" : "greater than", other,
                                  format_key_value(real_value(other))),
                      fmt::format("{} must be {} {}", blamed, blame_small ? "<" : ">", other));
+  }
+
+  /// A manufactured solution lives on the unit square; the smooth map must stay one-to-one.
+  void check_verification() const {
+    if (case_.manufactured == physics::ManufacturedSolution::None) return;
+    if (mesh::cells_along(1.0, case_.mesh_size) <= 0) {
+      const Origin where = origin("mesh.size");
+      throw InputError(where.file, where.line, "mesh.size",
+                       fmt::format("value {} does not divide the unit square of "
+                                   "verification.solution",
+                                   format_key_value(case_.mesh_size)),
+                       "use 1/n, e.g. 0.25 or 0.125");
+    }
+    if (case_.distortion.kind == mesh::Distortion::Smooth && case_.distortion.amplitude > 0.1) {
+      const Origin where = origin("verification.amplitude");
+      throw InputError(where.file, where.line, "verification.amplitude",
+                       fmt::format("value {} folds the smooth distortion map",
+                                   format_key_value(case_.distortion.amplitude)),
+                       "must be ≤ 0.1 with verification.distortion = \"smooth\"");
+    }
   }
 
   void check_mesh_fits() const {

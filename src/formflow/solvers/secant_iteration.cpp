@@ -2,6 +2,8 @@
 // The secant-modulus loop with its stop reasons.
 #include "formflow/solvers/secant_iteration.hpp"
 
+#include "formflow/core/error.hpp"
+
 #include <chrono>
 #include <cmath>
 
@@ -46,28 +48,38 @@ template <int dim>
 SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times) {
+                               PhaseTimes& times, const VectorX* start) {
   SecantOutcome outcome;
   assembly::LinearSystem system = problem.plan().make_system();
   outcome.velocity = problem.constraints().values;  // u = 0 except prescribed values
-  if (auto stop = solve_linearised(problem, solver, nullptr, system, true, outcome.velocity, times)) {
-    outcome.stop_reason = *stop;
-    return outcome;
-  }
-  for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
-    const auto start = std::chrono::steady_clock::now();
-    VectorX next;
-    if (auto stop = solve_linearised(problem, solver, &outcome.velocity, system, false, next, times)) {
+  bool analysed = false;
+  if (start) {
+    FF_ASSERT(start->size() == problem.n_dofs(), "start vector size");
+    const auto& prescribed = problem.constraints().prescribed;
+    for (Index dof = 0; dof < problem.n_dofs(); ++dof)
+      if (!prescribed[dof]) outcome.velocity[dof] = (*start)[dof];
+  } else {
+    if (auto stop = solve_linearised(problem, solver, nullptr, system, true, outcome.velocity, times)) {
       outcome.stop_reason = *stop;
       return outcome;
     }
+    analysed = true;
+  }
+  for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
+    const auto start_time = std::chrono::steady_clock::now();
+    VectorX next;
+    if (auto stop = solve_linearised(problem, solver, &outcome.velocity, system, !analysed, next, times)) {
+      outcome.stop_reason = *stop;
+      return outcome;
+    }
+    analysed = true;
     const Real change = (next - outcome.velocity).norm() / next.norm();
     IterationRecord record;
     record.iteration = iteration;
     record.relative_change = change;
     // The reaction of the linear system just solved: K_c·(uⁿ) uⁿ⁺¹.
     record.pressure = problem.driven_force(system, next) / problem.driven_height();
-    record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
     outcome.velocity = std::move(next);
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
@@ -91,10 +103,10 @@ SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, Lin
 template SecantOutcome secant_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&);
+                                           PhaseTimes&, const VectorX*);
 template SecantOutcome secant_iteration<3>(const assembly::FormingProblem<3>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&);
+                                           PhaseTimes&, const VectorX*);
 
 }  // namespace formflow::solvers

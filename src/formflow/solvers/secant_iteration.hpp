@@ -21,10 +21,12 @@ struct SecantOutcome {
 /// From the constant-viscosity solution u⁰, solves K(uⁿ) uⁿ⁺¹ = F(uⁿ) until
 /// ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < δ. The pattern is analysed once; each iteration
 /// refactorises. Phases "assembly", "analysis", "factorization", "solve" are timed.
+/// A `start` (full dof vector; its prescribed entries are replaced by the
+/// Dirichlet values) replaces the constant-viscosity u⁰.
 template <int dim>
 SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times);
+                               PhaseTimes& times, const VectorX* start = nullptr);
 
 }  // namespace formflow::solvers
