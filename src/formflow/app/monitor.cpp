@@ -16,14 +16,20 @@ void Monitor::header() const {
 
 void Monitor::operator()(const solvers::IterationRecord& record) {
   elapsed_ += record.seconds;
-  // Linear convergence: change_n ≈ ρⁿ; iterations left ≈ log(δ/change)/log ρ.
+  constexpr std::size_t window = 5;
+  recent_changes_.push_back(record.relative_change);
+  if (recent_changes_.size() > window) recent_changes_.pop_front();
+  // Linear convergence: change_n ≈ ρⁿ, with ρ the geometric mean contraction
+  // over the window; iterations left ≈ log(δ/change)/log ρ.
   std::string left = "-";
-  const Real rate = previous_change_ > 0 ? record.relative_change / previous_change_ : 0.0;
+  const auto steps = static_cast<Real>(recent_changes_.size() - 1);
+  const Real rate = steps > 0 && recent_changes_.front() > 0
+                        ? std::pow(record.relative_change / recent_changes_.front(), 1.0 / steps)
+                        : 0.0;
   if (rate > 0 && rate < 1 && record.relative_change > tolerance_) {
     const Real remaining = std::log(tolerance_ / record.relative_change) / std::log(rate);
     left = fmt::format("{:.2f}", remaining * record.seconds);
   }
-  previous_change_ = record.relative_change;
   fmt::print(out_, "{:>5}  {:>12.4e}  {:>12.6f}  {:>9.3f}  {:>9}\n", record.iteration,
              record.relative_change, record.pressure, elapsed_, left);
   std::fflush(out_);

@@ -5,11 +5,13 @@
 #include "formflow/solvers/stop_reason.hpp"
 
 #include <cstdio>
+#include <deque>
 
 namespace formflow::app {
 
 /// Prints `iter  rel.change  pressure  time  left` lines to `out`; the time left
-/// is estimated from the observed linear contraction of the relative change.
+/// is estimated from the observed contraction of the relative change over the
+/// last few iterations (one step's ratio is too noisy to extrapolate).
 class Monitor {
  public:
   Monitor(std::FILE* out, Real tolerance) : out_(out), tolerance_(tolerance) {}
@@ -19,7 +21,7 @@ class Monitor {
  private:
   std::FILE* out_;
   Real tolerance_;
-  Real previous_change_ = 0.0;
+  std::deque<Real> recent_changes_;  ///< the last few relative changes, oldest first
   Real elapsed_ = 0.0;
 };
 
