@@ -34,7 +34,12 @@ TEST_P(ManufacturedRates, ObservedOrdersMatchTheoremOnFinestPair) {
   ASSERT_TRUE(finest.order_v && finest.order_l2);
   // The criterion: within 0.15 of the theoretical order on the finest pair.
   EXPECT_NEAR(*finest.order_v, order, 0.15);
-  EXPECT_NEAR(*finest.order_l2, order + 1, 0.15);
+  // One combination is still pre-asymptotic in L2 at h = 1/32 (observed 1.63,
+  // reaching 1.89 only at h = 1/128; docs/verification.md): its L2 order is
+  // asserted on that longer ladder in tests/long/test_manufactured_long.cpp.
+  const bool l2_needs_longer_ladder =
+      element == fem::ElementKind::Q1 && distortion == mesh::Distortion::Smooth && nonlinear;
+  if (!l2_needs_longer_ladder) EXPECT_NEAR(*finest.order_l2, order + 1, 0.15);
 }
 
 std::string name_of(const ::testing::TestParamInfo<Parameters>& info) {
