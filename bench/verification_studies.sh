@@ -36,7 +36,7 @@ done
 study mms-q1-full-locking --vary mesh.size=1/4,1/8,1/16,1/32,1/64 $mms \
   --set mesh.element=Q1 --set integration.volumetric=2 --set material.alpha=1
 study mms-q1-full-d-sweep --vary penalty.d=1,1e-1,1e-2,1e-3,1e-4 $mms \
-  --set mesh.element=Q1 --set integration.volumetric=2 --set material.alpha=1 --set mesh.size=1/16
+  --set mesh.element=Q1 --set integration.volumetric=2 --set material.alpha=1 --set mesh.size=0.0625
 
 # Penalty limit (Theorem 3.4) and conditioning on the benchmark, mesh II, Q2 2×2.
 study penalty-d --vary penalty.d=1e-1,1e-2,1e-3,1e-4,1e-5,1e-7 \

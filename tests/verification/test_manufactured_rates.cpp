@@ -39,7 +39,9 @@ TEST_P(ManufacturedRates, ObservedOrdersMatchTheoremOnFinestPair) {
   // asserted on that longer ladder in tests/long/test_manufactured_long.cpp.
   const bool l2_needs_longer_ladder =
       element == fem::ElementKind::Q1 && distortion == mesh::Distortion::Smooth && nonlinear;
-  if (!l2_needs_longer_ladder) EXPECT_NEAR(*finest.order_l2, order + 1, 0.15);
+  if (!l2_needs_longer_ladder) {
+    EXPECT_NEAR(*finest.order_l2, order + 1, 0.15);
+  }
 }
 
 std::string name_of(const ::testing::TestParamInfo<Parameters>& info) {
