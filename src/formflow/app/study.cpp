@@ -138,6 +138,16 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
           problem, simulations[k].results.fields.velocity, last.results.fields.velocity);
   }
   post::compute_orders(table);
+  const io::Case& first = plan.cases.front();
+  if (plan.key == "mesh.size" && first.manufactured != physics::ManufacturedSolution::None) {
+    const int order = fem::element_order(first.element);  // Theorem 4.1, smooth solution
+    table.theory_order_v = order;
+    table.theory_order_l2 = order + 1;
+  } else if (plan.key == "penalty.d") {  // Theorem 3.4
+    table.theory_order_v = table.theory_order_l2 = 1.0;
+  } else if (plan.key == "penalty.dT") {  // Theorem 3.3 (a bound)
+    table.theory_order_v = table.theory_order_l2 = 0.5;
+  }
   return table;
 }
 

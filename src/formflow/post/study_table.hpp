@@ -40,6 +40,10 @@ struct StudyTable {
   std::string key;          ///< the varied case key ("mesh.size")
   std::string description;  ///< one line: which case, which fixed overrides
   std::vector<StudyRung> rungs;
+  /// The order theory predicts for the V and L2 norms of this ladder (drawn
+  /// as reference slopes), when known: Theorem 4.1 for a manufactured
+  /// solution on a mesh ladder, 3.4 for penalty.d, the bound of 3.3 for penalty.dT.
+  std::optional<Real> theory_order_v, theory_order_l2;
 
   bool all_converged() const;
   bool has_errors() const { return !rungs.empty() && rungs.front().error.has_value(); }

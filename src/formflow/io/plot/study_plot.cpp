@@ -14,11 +14,15 @@ namespace formflow::io::plot {
 
 namespace {
 
+/// Which norm a series shows (the theory order differs between V and L2).
+enum class SeriesKind { V, L2, Other };
+
 struct Series {
   std::string label;
   Rgb colour;
   std::vector<double> x, y;
   std::vector<bool> converged;
+  SeriesKind kind = SeriesKind::Other;
 };
 
 const Rgb palette[] = {{0.12, 0.31, 0.61}, {0.85, 0.37, 0.01}, {0.2, 0.55, 0.2}, {0.5, 0.3, 0.6}};
@@ -28,8 +32,8 @@ const Rgb slope_colour{0.45, 0.45, 0.45};
 /// Adds a series of the positive, finite values `value(rung)` returns.
 template <class Value>
 void add_series(std::vector<Series>& all, const post::StudyTable& table, std::string label,
-                Value value) {
-  Series series{std::move(label), palette[all.size() % 4], {}, {}, {}};
+                Value value, SeriesKind kind = SeriesKind::Other) {
+  Series series{std::move(label), palette[all.size() % 4], {}, {}, {}, kind};
   for (const post::StudyRung& rung : table.rungs)
     if (const std::optional<double> y = value(rung); y && std::isfinite(*y) && *y > 0) {
       series.x.push_back(rung.parameter);
@@ -45,18 +49,18 @@ std::vector<Series> norm_series(const post::StudyTable& table, bool* log_y) {
   if (table.has_errors()) {
     add_series(all, table, "‖u − u_{h}‖_{V}", [](const auto& r) -> std::optional<double> {
       return r.error ? std::optional<double>(r.error->v_norm) : std::nullopt;
-    });
+    }, SeriesKind::V);
     add_series(all, table, "‖u − u_{h}‖_{L2}", [](const auto& r) -> std::optional<double> {
       return r.error ? std::optional<double>(r.error->l2) : std::nullopt;
-    });
+    }, SeriesKind::L2);
   } else if (table.has_differences()) {
     add_series(all, table, "‖u − u_{ref}‖_{V} (u_{ref}: last rung)",
                [](const auto& r) -> std::optional<double> {
                  return r.difference ? std::optional<double>(r.difference->v_norm) : std::nullopt;
-               });
+               }, SeriesKind::V);
     add_series(all, table, "‖u − u_{ref}‖_{L2}", [](const auto& r) -> std::optional<double> {
       return r.difference ? std::optional<double>(r.difference->l2) : std::nullopt;
-    });
+    }, SeriesKind::L2);
   }
   add_series(all, table, "rcond of K (CHOLMOD)",
              [](const auto& r) { return r.reciprocal_condition; });
@@ -69,14 +73,34 @@ std::vector<Series> norm_series(const post::StudyTable& table, bool* log_y) {
   return all;
 }
 
-/// The order of the finest pair rounded to a half-integer (a reference slope).
-std::optional<double> reference_slope(const Series& series) {
+/// A reference slope and the point it passes through.
+struct Slope {
+  double order = 0.0;
+  std::size_t anchor = 0;  ///< index into the series
+  bool from_theory = false;
+};
+
+/// Without a theoretical order: the most frequent pair order rounded to a
+/// half-integer (ties to the finer pairs), through the finer point of the
+/// finest pair that has it, so that one polluted end pair does not set it.
+/// With one: that order, through the finest point.
+std::optional<Slope> reference_slope(const Series& series, std::optional<double> theory) {
   const std::size_t n = series.x.size();
   if (n < 2) return std::nullopt;
-  const double order = std::log(series.y[n - 1] / series.y[n - 2]) /
-                       std::log(series.x[n - 1] / series.x[n - 2]);
-  if (!std::isfinite(order) || std::abs(order) < 0.25) return std::nullopt;
-  return std::round(order * 2.0) / 2.0;
+  if (theory) return Slope{*theory, n - 1, true};
+  std::vector<double> rounded(n, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t k = 1; k < n; ++k) {
+    const double order = std::log(series.y[k] / series.y[k - 1]) / std::log(series.x[k] / series.x[k - 1]);
+    if (std::isfinite(order) && std::abs(order) >= 0.25) rounded[k] = std::round(order * 2.0) / 2.0;
+  }
+  std::optional<Slope> best;
+  int best_count = 0;
+  for (std::size_t k = n - 1; k >= 1; --k) {
+    if (!std::isfinite(rounded[k])) continue;
+    const int count = static_cast<int>(std::count(rounded.begin(), rounded.end(), rounded[k]));
+    if (count > best_count) best = Slope{rounded[k], k, false}, best_count = count;
+  }
+  return best;
 }
 
 Axis range_axis(const std::vector<Series>& all, bool x, bool log, std::string label) {
@@ -133,14 +157,19 @@ void draw_study(const Canvas& canvas, const post::StudyTable& table) {
                     series.converged[k] ? series.colour : failed_colour);
     legend.push_back({series.label, {2.0, series.colour}});
     if (!log_y) continue;
-    if (const std::optional<double> slope = reference_slope(series)) {
-      // y = y_last (x/x_last)^slope across the whole x range, dashed.
-      const double x_last = series.x.back(), y_last = series.y.back();
+    const std::optional<double> theory =
+        series.kind == SeriesKind::V ? table.theory_order_v
+        : series.kind == SeriesKind::L2 ? table.theory_order_l2 : std::nullopt;
+    if (const std::optional<Slope> slope = reference_slope(series, theory)) {
+      // y = y_a (x/x_a)^order across the whole x range, dashed.
+      const double x_a = series.x[slope->anchor], y_a = series.y[slope->anchor];
       const double x0 = axes.x_axis().lo, x1 = axes.x_axis().hi;
-      canvas.line(axes.at(x0, y_last * std::pow(x0 / x_last, *slope)),
-                  axes.at(x1, y_last * std::pow(x1 / x_last, *slope)),
+      canvas.line(axes.at(x0, y_a * std::pow(x0 / x_a, slope->order)),
+                  axes.at(x1, y_a * std::pow(x1 / x_a, slope->order)),
                   {1.2, series.colour, 0.6, 7.0});
-      legend.push_back({fmt::format("reference slope {:g}", *slope), {1.2, series.colour, 0.6, 7.0}});
+      legend.push_back({fmt::format("{} slope {:g}", slope->from_theory ? "theory" : "observed",
+                                    slope->order),
+                        {1.2, series.colour, 0.6, 7.0}});
     }
   }
   if (!log_y && !table.rungs.empty() && table.rungs.back().pressure_extrapolated) {
@@ -167,7 +196,7 @@ void draw_corner(const Canvas& canvas, const post::StudyTable& table) {
   std::vector<Series> all;
   for (const post::StudyRung& rung : table.rungs) {
     if (!rung.corner || rung.corner->radius.empty()) continue;
-    Series series{fmt::format("{} = {}", table.key, rung.value_text), palette[all.size() % 4], {}, {}, {}};
+    Series series{fmt::format("{} = {}", table.key, rung.value_text), palette[all.size() % 4], {}, {}, {}, SeriesKind::Other};
     series.x = rung.corner->radius;
     series.y = rung.corner->mean_rate;
     series.converged.assign(series.x.size(), rung.converged());

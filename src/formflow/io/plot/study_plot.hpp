@@ -9,9 +9,10 @@ namespace formflow::io::plot {
 
 /// Log-log plot of the error norms against the parameter (or, without an exact
 /// solution, of the differences to the last rung; without either, the
-/// pressures on a log parameter axis with the Richardson limit), with dashed
-/// reference slopes through each series' last point at its rounded observed
-/// order; rcond when present. Non-converged rungs are drawn as hollow red rings.
+/// pressures on a log parameter axis with the Richardson limit). Dashed
+/// reference slopes: the theory order when the table knows it, else the most
+/// frequent observed pair order (rounded to ½). rcond when present.
+/// Non-converged rungs are drawn as larger red dots.
 void draw_study(const Canvas& canvas, const post::StudyTable& table);
 
 /// draw_study rendered as study.png / study.svg (name "study").
