@@ -67,6 +67,9 @@ int run_case(const Options& options) {
                case_.solver.tolerance, results.iterations, results.pressure.ram_reaction,
                results.pressure.power_balance, results.pressure.total_power,
                results.pressure.mean_hydrostatic_near_ram, options.output_directory);
+  if (show && simulation.errors)
+    fmt::print("manufactured solution: error V-norm {:.6e}  L2 {:.6e}  hydrostatic L2 {:.6e}\n",
+               simulation.errors->v_norm, simulation.errors->l2, simulation.errors->hydrostatic_l2);
   return Ok;
 }
 
