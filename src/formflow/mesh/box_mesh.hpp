@@ -21,7 +21,7 @@ enum class Distortion {
 /// (cell side) per direction, drawn from `seed`; cells stay convex for amplitude < 0.25.
 struct BoxDistortion {
   Distortion kind = Distortion::None;
-  Real amplitude = 0.0;
+  Real amplitude = 0.1;
   int seed = 1;  ///< ≥ 0
 };
 

@@ -320,7 +320,11 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
                                         {"penalty.dT", "1e-07"},
                                         {"solver.tolerance", "1e-06"},
                                         {"solver.max_iterations", "42"},
-                                        {"solver.initial_rate", "0.5"}};
+                                        {"solver.initial_rate", "0.5"},
+                                        {"verification.solution", "\"smooth\""},
+                                        {"verification.distortion", "\"random\""},
+                                        {"verification.amplitude", "0.2"},
+                                        {"verification.seed", "7"}};
   ASSERT_EQ(values.size(), case_keys().size()) << "a key was added: give it a value here";
   const nlohmann::json json = case_to_json(load_case("", values));
   std::size_t n_keys = 0;
