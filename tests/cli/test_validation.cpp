@@ -89,6 +89,9 @@ const BadCase bad_cases[] = {
     {"syntax-error.toml", 4, "syntax", "radius = 0.5 0.5"},
     {"exit-above-entry.toml", 4, "geometry.exit_half_height", "< geometry.entry_half_height"},
     {"rate-order.toml", 4, "material.rate2", "> material.rate1"},
+    {"bad-friction-regularization.toml", 4, "friction.regularization",
+     "valid values: \"regularized\", \"none\""},
+    {"zero-augmentation.toml", 5, "friction.augmentation", "must be"},
 };
 
 TEST_F(Validation, RunOnBadInputExitsTwoAndWritesNothing) {

@@ -25,7 +25,9 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
                                           fem::element_order(case_.element), case_.distortion);
   }
   const physics::StreamFunctionField field = physics::StreamFunctionField::of(case_.manufactured);
-  const assembly::ProblemSettings settings = problem_settings(case_);
+  assembly::ProblemSettings settings = problem_settings(case_);
+  // The manufactured fields are plane (physics/manufactured.hpp); the box has no axis.
+  settings.symmetry = physics::Symmetry::Plane;
   auto velocity = [field](const Point<2>& x) { return field.velocity(x); };
   auto body_force = [field, law = settings.law](const Point<2>& x) {
     return physics::manufactured_body_force(law, field, x);

@@ -3,7 +3,9 @@
 #include "formflow/app/simulation.hpp"
 
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/post/post_process.hpp"
+#include "formflow/solvers/augmented_lagrangian.hpp"
 #include "formflow/solvers/condition_estimate.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
@@ -22,6 +24,7 @@ assembly::ProblemSettings settings_of(const io::Case& case_) {
   settings.friction = case_.friction;
   settings.volumetric_points = case_.volumetric_points;
   settings.initial_rate = case_.solver.initial_rate;
+  settings.symmetry = case_.symmetry;
   return settings;
 }
 
@@ -44,8 +47,9 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   const auto start = std::chrono::steady_clock::now();
   {
     ScopedTimer timer(results.timing, "mesh");
-    simulation.mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size,
-                                              fem::element_order(case_.element));
+    simulation.mesh = mesh::make_die_channel_mesh(case_.geometry, case_.mesh_size,
+                                                  fem::element_order(case_.element));
+    if (case_.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(simulation.mesh);
   }
   std::unique_ptr<assembly::FormingProblem<2>> problem;
   {
@@ -53,12 +57,23 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     problem = std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, settings_of(case_));
   }
   auto solver = solvers::make_cholmod_solver();
-  solvers::SecantOutcome outcome =
-      solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+  solvers::SecantOutcome outcome;
+  assembly::FrictionMultipliers<2> multipliers;
+  if (problem->has_exact_friction()) {
+    auto augmented = solvers::augmented_lagrangian(
+        *problem, solvers::secant_inner_solve(*problem, *solver, results.timing), case_.solver,
+        on_iteration);
+    outcome = std::move(augmented.solve);
+    multipliers = std::move(augmented.multipliers);
+    results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+  } else {
+    outcome =
+        solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+  }
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());
-  post::evaluate_results(*problem, outcome.velocity, results);
+  post::evaluate_results(*problem, outcome.velocity, results, &multipliers);
   if (estimate_condition) simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
   results.timing.add("total",
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

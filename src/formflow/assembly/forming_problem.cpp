@@ -17,6 +17,21 @@ bool friction_acts_on(const physics::Friction& friction, mesh::BoundaryLabel lab
          (label == mesh::BoundaryLabel::Die && friction.on_die);
 }
 
+/// Alart–Curnier friction at one point, λ_new = proj(λ + r u_T) = s (λ + r u_T), written
+/// for the secant system as the penalty s·r on u_T and the load s·λ, both frozen at the
+/// current iterate. Only the tangential part of λ counts (the normal is fixed, but a
+/// multiplier handed in from elsewhere need not be tangential).
+template <int dim>
+void exact_friction_point(const Point<dim>& multiplier, Real augmentation, ContactPoint<dim>& point) {
+  const Point<dim> lambda = multiplier - multiplier.dot(point.normal) * point.normal;
+  const Point<dim> trial = lambda + augmentation * point.tangential_velocity;
+  const Real s = physics::coulomb_projection_factor(point.friction_threshold, trial.norm());
+  point.friction_weight = s * augmentation;
+  point.friction_load = s * lambda;
+  point.friction_traction = s * trial;
+  point.sticking = point.friction_threshold > 0 && trial.norm() <= point.friction_threshold;
+}
+
 }  // namespace
 
 template <int dim>
@@ -33,6 +48,7 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
       full_rule_(fem::gauss_rule<dim>(mesh.order + 1)),
       volumetric_rule_(fem::gauss_rule<dim>(settings.volumetric_points)),
       facet_rule_(fem::gauss_rule<dim - 1>(mesh.order + 1)) {
+  FF_ASSERT(dim == 2 || !axisymmetric(), "axisymmetry is a two-dimensional formulation");
   BlockDofs blocks;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell)
     blocks.add(fem::dofs_of_nodes<dim>(mesh.cells.col(cell)));
@@ -67,7 +83,7 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
     if (facet.label != constraints_.driven_label) continue;
     gather(facet.cell, nullptr, coordinates, unused);
-    facet_values.reinit(coordinates, facet.local_face);
+    reinit(facet_values, coordinates, facet.local_face);
     for (int q = 0; q < facet_values.n_points(); ++q) driven_height_ += facet_values.JxW(q);
   }
 }
@@ -87,7 +103,8 @@ void FormingProblem<dim>::gather(Index cell, const VectorX* u,
 }
 
 template <int dim>
-std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(const VectorX& u) const {
+std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(
+    const VectorX& u, const FrictionMultipliers<dim>* multipliers) const {
   fem::FacetValues<dim> facet_values(mesh_.order, facet_rule_);
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<ContactPoint<dim>> state;
@@ -95,7 +112,7 @@ std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(const VectorX&
   for (Index f : contact_facets_) {
     const mesh::BoundaryFacet& facet = mesh_.facets[f];
     gather(facet.cell, &u, coordinates, velocities);
-    facet_values.reinit(coordinates, facet.local_face);
+    reinit(facet_values, coordinates, facet.local_face);
     for (int q = 0; q < facet_values.n_points(); ++q) {
       ContactPoint<dim> point;
       point.facet = f;
@@ -119,18 +136,28 @@ std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(const VectorX&
     point.mean_contact_pressure = mean[k];
     if (!friction_acts_on(settings_.friction, mesh_.facets[point.facet].label)) continue;
     point.friction_threshold = physics::friction_threshold(settings_.friction.mu, mean[k]);
-    point.friction_weight = physics::friction_weight(
-        point.friction_threshold, point.tangential_velocity.norm(), settings_.friction.d_t);
+    const Real slip = point.tangential_velocity.norm();
+    if (has_exact_friction()) {
+      const bool given = multipliers && !multipliers->traction.empty();
+      FF_ASSERT(!given || multipliers->traction.size() == state.size(), "one multiplier per point");
+      const Point<dim> lambda = given ? multipliers->traction[k] : Point<dim>::Zero();
+      exact_friction_point(lambda, augmentation(), point);
+      continue;
+    }
+    point.friction_weight = physics::friction_weight(point.friction_threshold, slip, settings_.friction.d_t);
+    point.friction_traction = point.friction_weight * point.tangential_velocity;
+    point.sticking = physics::is_sticking_regularized(point.friction_threshold, slip, settings_.friction.d_t);
   }
   return state;
 }
 
 template <int dim>
-void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system) const {
+void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
+                                   const FrictionMultipliers<dim>* multipliers) const {
   ScatterPlan::clear(system);
   const bool with_friction = w && settings_.friction.mu > 0;
   std::vector<ContactPoint<dim>> state;
-  if (with_friction) state = contact_state(*w);
+  if (with_friction) state = contact_state(*w, multipliers);
 
   fem::CellValues<dim> full_values(mesh_.order, full_rule_);
   fem::CellValues<dim> volumetric_values(mesh_.order, volumetric_rule_);
@@ -144,22 +171,29 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system) const
 
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
     gather(cell, w, coordinates, velocities);
-    full_values.reinit(coordinates);
-    volumetric_values.reinit(coordinates);
+    reinit(full_values, coordinates);
+    reinit(volumetric_values, coordinates);
     for (int q = 0; q < full_values.n_points(); ++q) {
       if (!w) {
         viscosity[q] = initial_viscosity;
         continue;
       }
-      const Tensor3 rate = physics::strain_rate<dim>(
-          physics::velocity_gradient<dim>(velocities, full_values.gradients(q)));
+      const Tensor3 rate = strain_rate_at(full_values, velocities, q);
       viscosity[q] = settings_.law.secant_viscosity(physics::equivalent_strain_rate(rate));
     }
     local_matrix.setZero();
     add_viscous_term<dim>(full_values, viscosity, settings_.viscous_strain, local_matrix);
-    add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
+    if constexpr (dim == 2) {
+      if (axisymmetric()) {
+        add_hoop_viscous_term(full_values, viscosity, settings_.viscous_strain, local_matrix);
+        add_volumetric_penalty_axisymmetric(volumetric_values, settings_.penalty.d, local_matrix);
+      }
+    }
+    if (!axisymmetric()) add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
     assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_matrix);
     plan_->scatter(cell, local_matrix, constraints_.values, system);
+    if (with_friction && has_exact_friction())
+      add_friction_loads(cell, state, coordinates, facet_values, system);
     if (body_force_) {
       add_body_force(full_values, local_load);
       plan_->scatter_load(cell, local_load, system);
@@ -179,6 +213,33 @@ void FormingProblem<dim>::add_body_force(const fem::CellValues<dim>& values,
 }
 
 template <int dim>
+void FormingProblem<dim>::add_friction_loads(Index cell, const std::vector<ContactPoint<dim>>& state,
+                                             const typename fem::CellValues<dim>::Gradients& coordinates,
+                                             fem::FacetValues<dim>& facet_values,
+                                             LinearSystem& system) const {
+  // The friction load moves to the right-hand side: F −= ∫_Γ3 s λ_T·v dΓ. On
+  // prescribed dofs (the ram corner of the container wall) it is part of the reaction.
+  const int n_q = facet_rule_.size();
+  for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
+    const Index position = cell_contact_[k];
+    facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+    for (int q = 0; q < n_q; ++q) {
+      const ContactPoint<dim>& point = state[position * n_q + q];
+      if (point.friction_load.isZero(0.0)) continue;
+      for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
+        for (int i = 0; i < dim; ++i) {
+          const Real load = point.friction_load[i] * facet_values.shape(q)[a] * facet_values.JxW(q);
+          const Index dof = fem::dof_of<dim>(mesh_.cells(a, cell), i);
+          if (const Index row = plan_->free_index(dof); row >= 0)
+            system.rhs[row] -= load;
+          else
+            system.prescribed_loads[plan_->prescribed_index(dof)] -= load;
+        }
+    }
+  }
+}
+
+template <int dim>
 void FormingProblem<dim>::assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
                                            const typename fem::CellValues<dim>::Gradients& coordinates,
                                            fem::FacetValues<dim>& facet_values,
@@ -187,7 +248,7 @@ void FormingProblem<dim>::assemble_contact(Index cell, const std::vector<Contact
   std::vector<Real> weight(n_q, 0.0);
   for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
     const Index position = cell_contact_[k];
-    facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+    reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
     add_contact_penalty<dim>(facet_values, settings_.penalty.d_n, local_matrix);
     if (!state) continue;
     for (int q = 0; q < n_q; ++q) weight[q] = (*state)[position * n_q + q].friction_weight;
@@ -196,10 +257,33 @@ void FormingProblem<dim>::assemble_contact(Index cell, const std::vector<Contact
 }
 
 template <int dim>
+Tensor3 FormingProblem<dim>::strain_rate_at(const fem::CellValues<dim>& values,
+                                            const typename fem::CellValues<dim>::Gradients& velocities,
+                                            int q) const {
+  const Tensor2<dim> gradient = physics::velocity_gradient<dim>(velocities, values.gradients(q));
+  Tensor3 rate = physics::strain_rate<dim>(gradient);
+  if constexpr (dim == 2)
+    if (axisymmetric())
+      physics::add_hoop_rate<dim>(rate, gradient, (velocities * values.shape(q))[1], values.point(q)[1]);
+  return rate;
+}
+
+template <int dim>
+Real FormingProblem<dim>::hoop_rate_at(const fem::CellValues<dim>& values,
+                                       const typename fem::CellValues<dim>::Gradients& velocities,
+                                       int q) const {
+  if (!axisymmetric()) return 0.0;
+  return strain_rate_at(values, velocities, q)(2, 2);
+}
+
+template <int dim>
 Real FormingProblem<dim>::driven_force(const LinearSystem& system, const VectorX& u) const {
   const VectorX reactions = system.reaction_rows * u;
   Real force = 0.0;
-  for (Index dof : constraints_.driven_dofs) force += reactions[plan_->prescribed_index(dof)];
+  for (Index dof : constraints_.driven_dofs) {
+    const Index row = plan_->prescribed_index(dof);
+    force += reactions[row] - system.prescribed_loads[row];
+  }
   return force;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "formflow/assembly/constraints.hpp"
+#include "formflow/assembly/friction_multipliers.hpp"
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/physics/flow_law.hpp"
@@ -24,6 +25,7 @@ struct ProblemSettings {
   physics::Friction friction;
   int volumetric_points = 2;  ///< Gauss points per direction of the (1/d) term
   Real initial_rate = 1.0;    ///< ε̄̇ of the constant viscosity that starts the iteration
+  physics::Symmetry symmetry = physics::Symmetry::Plane;  ///< axisymmetric: dim = 2 only
 };
 
 /// State of the contact boundary Γ3 at one face quadrature point for a velocity w.
@@ -38,7 +40,15 @@ struct ContactPoint {
   Real contact_pressure = 0;       ///< −σ_N = u_N/d_N
   Real mean_contact_pressure = 0;  ///< σ̄_N, mollified over radius h
   Real friction_threshold = 0;     ///< τ_f = μ_f max(σ̄_N, 0); 0 where friction is off
-  Real friction_weight = 0;        ///< τ_f/√(|u_T|² + d_T²)
+  Real friction_weight = 0;        ///< τ_f/√(|u_T|² + d_T²); exact friction: s·r (see below)
+  /// Exact friction only: the lagged part s·λ_T of the traction, a load in K u = F.
+  Point<dim> friction_load = Point<dim>::Zero();
+  /// λ_T = friction_weight·u_T + friction_load: the friction traction resisting the
+  /// slip (σ_T = −λ_T). Regularised: τ_f u_T/√(|u_T|² + d_T²); exact: proj(λ + r u_T).
+  Point<dim> friction_traction = Point<dim>::Zero();
+  /// Regularised: |λ_T| < 0.99 τ_f (|u_T| < 7 d_T); exact: |λ + r u_T| ≤ τ_f. Never
+  /// where τ_f = 0.
+  bool sticking = false;
 };
 
 /// A volume load f(x) per unit volume (manufactured solutions): adds ∫ f·v dx to F.
@@ -56,12 +66,23 @@ class FormingProblem {
 
   /// Assembles K(w) and F into `system`. Without `w` the viscosity is the
   /// constant σ_p(initial_rate)/initial_rate and there is no friction (τ_f(0) = 0).
-  void assemble(const VectorX* w, LinearSystem& system) const;
+  /// With exact friction the `multipliers` λ_T enter as the load s·λ_T and the
+  /// penalty s·r, s = proj factor at w (null: λ_T = 0); ignored when regularised.
+  void assemble(const VectorX* w, LinearSystem& system,
+                const FrictionMultipliers<dim>* multipliers = nullptr) const;
 
-  /// Γ3 quadrature-point state for the velocity `u` (full dof vector).
-  std::vector<ContactPoint<dim>> contact_state(const VectorX& u) const;
+  /// Γ3 quadrature-point state for the velocity `u` (full dof vector); with exact
+  /// friction the traction is proj(λ_T + r u_T) for the given (or zero) multipliers.
+  std::vector<ContactPoint<dim>> contact_state(
+      const VectorX& u, const FrictionMultipliers<dim>* multipliers = nullptr) const;
 
-  /// Process force: the summed reaction K_c· u on the driven dofs.
+  /// Augmentation r of exact friction, friction.augmentation / d_N (stress·time/length).
+  Real augmentation() const { return settings_.friction.augmentation / settings_.penalty.d_n; }
+  bool has_exact_friction() const {
+    return settings_.friction.regularization == physics::FrictionRegularization::None;
+  }
+
+  /// Process force: the summed reaction K_c· u − F_c on the driven dofs.
   Real driven_force(const LinearSystem& system, const VectorX& u) const;
   /// Measure of the driven end (ram height, or exit half height for drawing).
   Real driven_height() const { return driven_height_; }
@@ -75,6 +96,23 @@ class FormingProblem {
   const fem::QuadratureRule<dim>& full_rule() const { return full_rule_; }
   const fem::QuadratureRule<dim>& volumetric_rule() const { return volumetric_rule_; }
   const fem::QuadratureRule<dim - 1>& facet_rule() const { return facet_rule_; }
+  /// Maps `values` to a cell or face and, in axisymmetry, weights them by r
+  /// (all integrals are per radian: forces per radian, "heights" ∫ r dr).
+  template <class Values, class... Face>
+  void reinit(Values& values, const typename fem::CellValues<dim>::Gradients& coordinates,
+              Face... local_face) const {
+    values.reinit(coordinates, local_face...);
+    if (axisymmetric()) values.weight_by_radius();
+  }
+  bool axisymmetric() const { return settings_.symmetry == physics::Symmetry::Axisymmetric; }
+  /// ε̇ at point q of `values` for the cell's nodal `velocities`; in
+  /// axisymmetry with the hoop rate u_r/r in the θθ (third) slot.
+  Tensor3 strain_rate_at(const fem::CellValues<dim>& values,
+                         const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
+  /// The hoop rate u_r/r at point q (exactly 0 in plane strain), the part of
+  /// ε̇_V = tr ε̇ beyond the in-plane divergence.
+  Real hoop_rate_at(const fem::CellValues<dim>& values,
+                    const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
   /// Node coordinates (dim × n) and nodal velocities (dim × n) of one cell.
   void gather(Index cell, const VectorX* u, typename fem::CellValues<dim>::Gradients& coordinates,
               typename fem::CellValues<dim>::Gradients& velocities) const;
@@ -83,6 +121,9 @@ class FormingProblem {
   void assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
                         const typename fem::CellValues<dim>::Gradients& coordinates,
                         fem::FacetValues<dim>& facet_values, MatrixX& local_matrix) const;
+  void add_friction_loads(Index cell, const std::vector<ContactPoint<dim>>& state,
+                          const typename fem::CellValues<dim>::Gradients& coordinates,
+                          fem::FacetValues<dim>& facet_values, LinearSystem& system) const;
 
   void add_body_force(const fem::CellValues<dim>& values, VectorX& local_load) const;
 

@@ -70,7 +70,8 @@ ScatterPlan::ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, cons
 }
 
 LinearSystem ScatterPlan::make_system() const {
-  LinearSystem system{matrix_pattern_, VectorX::Zero(n_free_), reaction_pattern_};
+  LinearSystem system{matrix_pattern_, VectorX::Zero(n_free_), reaction_pattern_,
+                      VectorX::Zero(n_prescribed())};
   clear(system);
   return system;
 }
@@ -79,6 +80,7 @@ void ScatterPlan::clear(LinearSystem& system) {
   std::fill_n(system.matrix.valuePtr(), system.matrix.nonZeros(), 0.0);
   std::fill_n(system.reaction_rows.valuePtr(), system.reaction_rows.nonZeros(), 0.0);
   system.rhs.setZero();
+  system.prescribed_loads.setZero();
 }
 
 void ScatterPlan::scatter(Index block, const MatrixX& local_matrix, const VectorX& prescribed_values,

@@ -30,6 +30,8 @@ struct LinearSystem {
   SparseMatrix matrix;         ///< K_ff, lower triangle only (symmetric)
   VectorX rhs;                 ///< F_f = −K_fc u_c (+ loads)
   SparseMatrix reaction_rows;  ///< K_c·, n_constrained × n_dofs
+  /// F_c, loads on the prescribed rows (n_constrained): reactions are K_c· u − F_c.
+  VectorX prescribed_loads;
 };
 
 /// Precomputed scatter of symmetric local matrices into a LinearSystem. Since

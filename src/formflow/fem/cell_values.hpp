@@ -31,6 +31,10 @@ class CellValues {
   Real JxW(int q) const { return jxw_[q]; }
   /// Physical coordinates of point q after reinit.
   const Point<dim>& point(int q) const { return points_[q]; }
+  /// Axisymmetry (y = r): multiplies each JxW by r, the measure per radian. Call after reinit.
+  void weight_by_radius() {
+    for (int q = 0; q < n_points(); ++q) jxw_[q] *= points_[q][1];
+  }
 
  private:
   int n_nodes_ = 0;
@@ -61,6 +65,10 @@ class FacetValues {
   Real JxW(int q) const { return jxw_[q]; }
   const Point<dim>& normal(int q) const { return normals_[q]; }
   const Point<dim>& point(int q) const { return points_[q]; }
+  /// Axisymmetry (y = r): multiplies each JxW by r, the measure per radian. Call after reinit.
+  void weight_by_radius() {
+    for (int q = 0; q < n_points(); ++q) jxw_[q] *= points_[q][1];
+  }
 
  private:
   int order_;

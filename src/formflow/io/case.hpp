@@ -23,6 +23,7 @@ namespace formflow::io {
 struct Case {
   physics::Process process;
   mesh::ChannelGeometry geometry;
+  physics::Symmetry symmetry = physics::Symmetry::Plane;
   fem::ElementKind element = fem::ElementKind::Q2;
   Real mesh_size = 1.0;
   int volumetric_points = 2;  ///< Gauss points per direction of the volumetric (penalty) term

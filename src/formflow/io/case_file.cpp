@@ -54,6 +54,7 @@ std::string expected_type(const CaseKey& key) {
   case KeyType::Integer: return "an integer";
   case KeyType::Enum: return "a string";
   case KeyType::StringList: return "a list of strings";
+  case KeyType::PointList: return "a list of [x, y] pairs";
   }
   return "?";
 }
@@ -79,6 +80,22 @@ std::optional<KeyValue> convert(const CaseKey& key, const toml::value& value) {
       list.push_back(entry.as_string().str);
     }
     return KeyValue{std::move(list)};
+  }
+  case KeyType::PointList: {
+    if (!value.is_array()) return std::nullopt;
+    KeyPoints points;
+    for (const toml::value& entry : value.as_array()) {
+      if (!entry.is_array() || entry.as_array().size() != 2) return std::nullopt;
+      std::array<Real, 2> point{};
+      for (std::size_t k = 0; k < 2; ++k) {
+        const toml::value& number = entry.as_array()[k];
+        if (number.is_floating()) point[k] = number.as_floating();
+        else if (number.is_integer()) point[k] = static_cast<Real>(number.as_integer());
+        else return std::nullopt;
+      }
+      points.push_back(point);
+    }
+    return KeyValue{std::move(points)};
   }
   }
   return std::nullopt;
@@ -148,6 +165,7 @@ class CaseBuilder {
   void check_cross_keys() const {
     check_order("geometry.exit_half_height", "geometry.entry_half_height");
     check_order("material.rate1", "material.rate2");
+    check_die();
     check_mesh_fits();
     check_verification();
   }
@@ -202,11 +220,70 @@ class CaseBuilder {
     }
   }
 
+  [[noreturn]] void die_error(const std::string& name, const std::string& message,
+                              const std::string& hint) const {
+    const Origin where = origin(name);
+    throw InputError(where.file, where.line, name, message, hint);
+  }
+
+  /// The die face must join the entry and exit heights monotonically.
+  void check_die() const {
+    const mesh::ChannelGeometry& geometry = case_.geometry;
+    const Real drop = geometry.entry_half_height - geometry.exit_half_height;
+    if (geometry.die == mesh::DieShape::Square && geometry.land_length > 0 &&
+        !(geometry.land_length < geometry.exit_length))
+      die_error("geometry.land_length",
+                fmt::format("value {} does not leave a free exit: geometry.exit_length = {}",
+                            format_key_value(geometry.land_length),
+                            format_key_value(geometry.exit_length)),
+                "the square die's land is part of the exit: make it shorter than exit_length");
+    if (geometry.die == mesh::DieShape::Arc && geometry.die_radius < drop)
+      die_error("geometry.die_radius",
+                fmt::format("value {} cannot reach from the exit half height {} to the entry "
+                            "half height {}",
+                            format_key_value(geometry.die_radius),
+                            format_key_value(geometry.exit_half_height),
+                            format_key_value(geometry.entry_half_height)),
+                fmt::format("die_radius must be ≥ entry_half_height − exit_half_height = {}",
+                            format_key_value(drop)));
+    if (geometry.die != mesh::DieShape::Polyline) return;
+    const std::string name = "geometry.die_profile";
+    const auto& points = geometry.die_profile;
+    const std::string shape = "[[0, H_in], ..., [x_n, H_out]] with x increasing, y non-increasing";
+    if (points.size() < 2)
+      die_error(name, "a polyline die needs at least two points", shape);
+    if (points.front()[0] != 0 || points.front()[1] != geometry.entry_half_height)
+      die_error(name,
+                fmt::format("the first point [{}, {}] is not the die entry [0, {}]",
+                            points.front()[0], points.front()[1], geometry.entry_half_height),
+                "start the profile at x = 0 (the die entry) and y = geometry.entry_half_height");
+    if (points.back()[1] != geometry.exit_half_height)
+      die_error(name,
+                fmt::format("the last point ends at y = {}, not at the exit half height {}",
+                            points.back()[1], geometry.exit_half_height),
+                "end the profile at y = geometry.exit_half_height");
+    for (std::size_t k = 1; k < points.size(); ++k) {
+      if (!(points[k][0] > points[k - 1][0]))
+        die_error(name, fmt::format("x is not increasing at point {} ([{}, {}])", k + 1,
+                                    points[k][0], points[k][1]),
+                  shape);
+      if (points[k][1] > points[k - 1][1])
+        die_error(name, fmt::format("y increases at point {} ([{}, {}]): the die must not "
+                                    "widen", k + 1, points[k][0], points[k][1]),
+                  shape);
+    }
+  }
+
   void check_mesh_fits() const {
     const std::string size_name = "mesh.size";
     const Real size = case_.mesh_size;
-    for (const std::string length_name : {"geometry.container_length", "geometry.entry_half_height",
-                                          "geometry.exit_half_height", "geometry.exit_length"}) {
+    // The square die is two blocks of square cells; the mapped dies need only
+    // the lengths the user sets to fit (the die face gets ⌈length/size⌉ columns).
+    std::vector<std::string> names = {"geometry.container_length", "geometry.entry_half_height",
+                                      "geometry.exit_length"};
+    if (case_.geometry.die == mesh::DieShape::Square) names.push_back("geometry.exit_half_height");
+    if (case_.geometry.land_length > 0) names.push_back("geometry.land_length");
+    for (const std::string& length_name : names) {
       const Real length = real_value(length_name);
       if (mesh::cells_along(length, size) > 0) continue;
       const std::string hint = fitting_sizes_hint(case_.geometry, size);

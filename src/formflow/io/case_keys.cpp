@@ -104,7 +104,31 @@ KeySpec friction_parts_key() {
     return parts;
   };
   return spec.doc("parts of the contact boundary Γ3 with friction: the container wall y = H_in "
-                  "and/or the die face x = L_c; [] = frictionless everywhere");
+                  "and/or the die (its face and its land); [] = frictionless everywhere");
+}
+
+KeySpec die_shape_key() {
+  using mesh::DieShape;
+  return enum_key("geometry.die", "square",
+                  {{"square", DieShape::Square},
+                   {"wedge", DieShape::Wedge},
+                   {"arc", DieShape::Arc},
+                   {"polyline", DieShape::Polyline}},
+                  [](auto& c) -> auto& { return c.geometry.die; })
+      .doc("die shape: square (a step at x = L_c, the benchmark), wedge (geometry.die_angle), "
+           "arc (geometry.die_radius) or polyline (geometry.die_profile)");
+}
+
+KeySpec die_profile_key() {
+  KeySpec spec("geometry.die_profile", KeyType::PointList, KeyPoints{});
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.geometry.die_profile = std::get<KeyPoints>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.geometry.die_profile; };
+  return spec.unit("length")
+      .constraint("polyline die: starts at [0, H_in], ends at y = H_out, x increasing, y "
+                  "non-increasing")
+      .doc("polyline die face as [x, y] points, x measured from the die entry x = L_c");
 }
 
 std::vector<CaseKey> process_and_geometry_keys() {
@@ -147,6 +171,32 @@ std::vector<CaseKey> process_and_geometry_keys() {
           .constraint("a multiple of mesh.size")
           .unit("length")
           .doc("L_e: the exit part is x ∈ [L_c, L_c + L_e]"),
+      die_shape_key(),
+      real_key("geometry.die_angle", 15.0, [](auto& c) -> auto& { return c.geometry.die_angle; })
+          .above(0)
+          .below(90)
+          .unit("degrees")
+          .doc("wedge (conical) die semi-angle α; the face runs from (L_c, H_in) to "
+               "(L_c + (H_in − H_out)/tan α, H_out)"),
+      real_key("geometry.die_radius", 10.0, [](auto& c) -> auto& { return c.geometry.die_radius; })
+          .above(0)
+          .constraint("≥ geometry.entry_half_height − geometry.exit_half_height")
+          .unit("length")
+          .doc("arc die: radius of the circular face, tangent to the exit direction at the die "
+               "exit"),
+      die_profile_key(),
+      real_key("geometry.land_length", 0.0, [](auto& c) -> auto& { return c.geometry.land_length; })
+          .at_least(0)
+          .constraint("a multiple of mesh.size; < geometry.exit_length for the square die")
+          .unit("length")
+          .doc("die land: a straight contact part y = H_out after the die face (Γ3; it counts "
+               "as \"die\" for friction.on)"),
+      enum_key("geometry.symmetry", "plane",
+               {{"plane", physics::Symmetry::Plane},
+                {"axisymmetric", physics::Symmetry::Axisymmetric}},
+               [](auto& c) -> auto& { return c.symmetry; })
+          .doc("plane strain, or axial symmetry about y = 0 (y = r; rod and wire): pressures "
+               "are forces over πR²"),
   };
 }
 
@@ -209,6 +259,20 @@ std::vector<CaseKey> contact_keys() {
           .unit("length")
           .doc("mollifier radius h of the mean contact pressure σ̄_N; 0 = local pressure"),
       friction_parts_key(),
+      enum_key("friction.regularization", "regularized",
+               {{"regularized", physics::FrictionRegularization::Regularized},
+                {"none", physics::FrictionRegularization::None}},
+               [](auto& c) -> auto& { return c.friction.regularization; })
+          .doc("regularized: the paper's |u_T| → √(|u_T|² + d_T²) with penalty.dT (eq. 3.14); "
+               "none: exact Coulomb law by an augmented Lagrangian on the friction traction "
+               "(docs/friction.md)"),
+      real_key("friction.augmentation", 1.0,
+               [](auto& c) -> auto& { return c.friction.augmentation; })
+          .above(0)
+          .at_most(1e6)
+          .unit("1/penalty.dN")
+          .doc("exact friction only: augmentation r = value/d_N of λ_T = proj(λ_T + r u_T); "
+               "any value converges, larger takes fewer multiplier updates"),
       real_key("penalty.d", 1e-3, [](auto& c) -> auto& { return c.penalty.d; })
           .above(0)
           .unit("1/(stress·time)")
@@ -253,7 +317,8 @@ std::vector<CaseKey> verification_keys() {
                [](auto& c) -> auto& { return c.manufactured; })
           .constraint("not none: mesh.size divides 1")
           .doc("manufactured solution on the unit square with all-Dirichlet boundary and a body "
-               "force (process and geometry are then ignored): smooth = extension + vortex, "
+               "force (process and geometry, also geometry.symmetry, are then ignored): smooth = "
+               "extension + vortex, "
                "extension = u = (x, −y) (patch test); none = the forming case"),
       enum_key("verification.distortion", "none",
                {{"none", mesh::Distortion::None},
@@ -347,7 +412,8 @@ const std::vector<CaseSection>& case_sections() {
       {"formulation", "Which form of the a-term is assembled (SPEC §2)."},
       {"material", "Flow law σ_p = A ε̄̇^α on [rate1, rate2], linear through the origin outside "
                    "(paper eq. 5.4)."},
-      {"friction", "Regularised nonlocal Coulomb friction on Γ3 (paper eq. 3.14–3.15)."},
+      {"friction", "Nonlocal Coulomb friction on Γ3: regularised (paper eq. 3.14–3.15) or "
+                   "exact."},
       {"penalty", "Penalty and regularisation parameters (paper eq. 3.8, 3.14)."},
       {"solver", "The secant-modulus (Kachanov) iteration (paper eq. 5.2–5.3)."},
       {"verification", "Manufactured solutions for the convergence studies (docs/verification.md)."},
@@ -422,6 +488,11 @@ std::optional<KeyProblem> check_key_value(const CaseKey& key, const KeyValue& va
       return std::nullopt;
     }
     case KeyType::StringList: return check_list(key, std::get<std::vector<std::string>>(value));
+    case KeyType::PointList:
+      for (const auto& point : std::get<KeyPoints>(value))
+        if (!std::isfinite(point[0]) || !std::isfinite(point[1]))
+          return KeyProblem{"a point is not finite", "give finite [x, y] pairs"};
+      return std::nullopt;
   }
   return std::nullopt;
 }

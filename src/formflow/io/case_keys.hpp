@@ -4,6 +4,7 @@
 
 #include "formflow/io/case.hpp"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -15,12 +16,13 @@
 namespace formflow::io {
 
 /// The value types a case key can hold. Real keys also accept TOML integers.
-enum class KeyType { Real, Integer, Enum, StringList };
+enum class KeyType { Real, Integer, Enum, StringList, PointList };
 
 /// A key's value as read from the case file, before it is stored in a Case:
 /// Real → double, Integer → std::int64_t, Enum → std::string,
-/// StringList → std::vector<std::string>.
-using KeyValue = std::variant<Real, std::int64_t, std::string, std::vector<std::string>>;
+/// StringList → std::vector<std::string>, PointList → a list of [x, y].
+using KeyPoints = std::vector<std::array<Real, 2>>;
+using KeyValue = std::variant<Real, std::int64_t, std::string, std::vector<std::string>, KeyPoints>;
 
 /// A closed or open numeric bound; `std::nullopt` value means unbounded.
 struct Bound {

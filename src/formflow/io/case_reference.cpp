@@ -77,6 +77,13 @@ std::string format_key_value(const KeyValue& value) {
   if (const auto* real = std::get_if<Real>(&value)) return format_real(*real);
   if (const auto* integer = std::get_if<std::int64_t>(&value)) return fmt::format("{}", *integer);
   if (const auto* text = std::get_if<std::string>(&value)) return quoted(*text);
+  if (const auto* points = std::get_if<KeyPoints>(&value)) {
+    std::string list = "[";
+    for (const auto& point : *points)
+      list += fmt::format("{}[{}, {}]", list.size() > 1 ? ", " : "", format_real(point[0]),
+                          format_real(point[1]));
+    return list + "]";
+  }
   std::string text = "[";
   for (const std::string& entry : std::get<std::vector<std::string>>(value))
     text += (text.size() > 1 ? ", " : "") + quoted(entry);
@@ -89,6 +96,7 @@ std::string_view key_type_name(KeyType type) {
   case KeyType::Integer: return "integer";
   case KeyType::Enum: return "string";
   case KeyType::StringList: return "list of strings";
+  case KeyType::PointList: return "list of [x, y]";
   }
   return "?";
 }
@@ -112,6 +120,7 @@ std::string valid_values_text(const CaseKey& key) {
   case KeyType::StringList:
     text = "each of " + choices_text(key) + " at most once; may be empty";
     break;
+  case KeyType::PointList: text = "finite [x, y] pairs"; break;
   }
   if (!key.constraint.empty()) text += fmt::format("; {}", key.constraint);
   return text;

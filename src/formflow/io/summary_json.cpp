@@ -55,6 +55,29 @@ json power_json(const post::PowerTerms& power) {
           {"total", power.total()}};
 }
 
+json zones_json(const post::ContactZones& zones) {
+  return {{"length", zones.length},
+          {"stick_length", zones.stick_length},
+          {"slip_length", zones.slip_length()},
+          {"stick_fraction", zones.length > 0 ? zones.stick_length / zones.length : 0.0}};
+}
+
+/// Stick and slip per contact part, and how the friction law was solved.
+json contact_json(const Case& case_, const post::Results& results) {
+  const bool exact = case_.friction.regularization == physics::FrictionRegularization::None;
+  json out = json::object();
+  out["regularization"] = exact ? "none" : "regularized";
+  out["stick_criterion"] = exact ? "|lambda_T + r u_T| <= tau_f (Alart-Curnier active set)"
+                                 : "|sigma_T| < 0.99 tau_f, i.e. |u_T| < 7.02 d_T";
+  out["container"] = zones_json(results.container_zones);
+  out["die"] = zones_json(results.die_zones);
+  if (exact)
+    out["augmented_lagrangian"] = {
+        {"outer_iterations", results.augmentation.outer_iterations},
+        {"multiplier_change", results.augmentation.multiplier_change}};
+  return out;
+}
+
 json timing_json(const PhaseTimes& timing) {
   json out = json::object();
   // The phases every run has are always present, so readers need no defaults.
@@ -87,6 +110,7 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["pressure"] = pressure_json(case_, results);
   out["power"] = power_json(results.power);
   out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;
+  out["contact"] = contact_json(case_, results);
   out["mesh"] = {{"elements", results.n_cells},
                  {"nodes", results.n_nodes},
                  {"dofs", results.n_dofs},

@@ -4,7 +4,15 @@
 
 #include "formflow/mesh/mesh.hpp"
 
+#include <array>
+#include <vector>
+
 namespace formflow::mesh {
+
+/// Shape of the die face between the entry height H_in and the exit height
+/// H_out (mesh/die_profile.hpp): a step (the benchmark), a straight cone of
+/// given semi-angle, a circular arc tangent to the exit, or a polyline.
+enum class DieShape { Square, Wedge, Arc, Polyline };
 
 /// Half model of the die channel: a container [0, Lc] × [0, H_in] followed by
 /// an exit [Lc, Lc + Le] × [0, H_out], symmetry plane y = 0. Lengths are
@@ -14,6 +22,13 @@ struct ChannelGeometry {
   Real entry_half_height = 10.0;
   Real exit_half_height = 5.0;
   Real exit_length = 10.0;
+  DieShape die = DieShape::Square;
+  Real die_angle = 15.0;   ///< wedge semi-angle in degrees, 0 < α < 90
+  Real die_radius = 10.0;  ///< arc radius, ≥ H_in − H_out
+  /// Polyline die face as (x, y) with x measured from the die entry x = L_c:
+  /// starts at (0, H_in), ends at y = H_out, x increasing, y non-increasing.
+  std::vector<std::array<Real, 2>> die_profile{};
+  Real land_length = 0.0;  ///< straight die land y = H_out after the die face (contact)
 };
 
 /// Number of cells that `size` fits into `length`, or -1 when it does not fit

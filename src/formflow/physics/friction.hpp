@@ -4,6 +4,7 @@
 
 #include "formflow/core/types.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace formflow::physics {
@@ -37,6 +38,21 @@ inline Real friction_threshold(Real mu, Real mean_contact_pressure) {
 /// τ_f / √(|u_T|² + d_T²), so that σ_T = −weight · u_T.
 inline Real friction_weight(Real threshold, Real slip_speed, Real d_t) {
   return threshold / std::sqrt(slip_speed * slip_speed + d_t * d_t);
+}
+
+/// Regularised friction has no exact stick zone; a point counts as sticking when
+/// its traction stays clearly below the Coulomb limit, |σ_T| < 0.99 τ_f, which is
+/// |u_T| < 7.02 d_T (0.99/√(1 − 0.99²)): a slip far below the process speed.
+inline bool is_sticking_regularized(Real threshold, Real slip_speed, Real d_t) {
+  return threshold > 0 && friction_weight(threshold, slip_speed, d_t) * slip_speed < 0.99 * threshold;
+}
+
+/// Exact Coulomb law in Alart–Curnier form: λ_T = proj_{|λ| ≤ τ_f}(t) with the trial
+/// traction t = λ_T + r u_T. Returns the factor s ∈ [0, 1] with proj(t) = s t:
+/// s = 1 inside the disc (stick), τ_f/|t| outside (slip), 0 when τ_f = 0.
+inline Real coulomb_projection_factor(Real threshold, Real trial_norm) {
+  if (threshold <= 0) return 0.0;
+  return trial_norm <= threshold ? 1.0 : threshold / trial_norm;
 }
 
 }  // namespace formflow::physics

@@ -25,6 +25,14 @@ Tensor2<dim> velocity_gradient(const Velocities& nodal_velocity, const Gradients
   return nodal_velocity * gradients.transpose();
 }
 
+/// Axisymmetric hoop rate ε̇_θθ = u_r/r at radius r = y; on the axis (r → 0,
+/// where u_r = 0) its limit ∂u_r/∂r.
+template <int dim>
+void add_hoop_rate(Tensor3& rate, const Tensor2<dim>& velocity_gradient, Real radial_velocity,
+                   Real radius) {
+  rate(2, 2) = radius > 1e-12 ? radial_velocity / radius : velocity_gradient(1, 1);
+}
+
 /// Volumetric rate ε̇_V = tr ε̇.
 inline Real volumetric_rate(const Tensor3& rate) { return rate.trace(); }
 

@@ -12,6 +12,9 @@ enum class ProcessType { Extrusion, Drawing };
 enum class RamCondition { Sliding, Sticking };
 /// Strain rate used in the a-form: the full ε̇ (paper eq. 3.3, default) or its deviator ė.
 enum class ViscousStrain { Full, Deviatoric };
+/// Plane strain, or axial symmetry about the x axis (y = r): hoop rate u_r/r and
+/// r-weighted integrals (per radian, so forces are per radian and areas ∫ r dr).
+enum class Symmetry { Plane, Axisymmetric };
 
 struct Process {
   ProcessType type = ProcessType::Extrusion;
@@ -25,13 +28,21 @@ struct Penalty {
   Real d_n = 1e-6;
 };
 
-/// Regularised nonlocal Coulomb friction (eq. 3.14–3.15) on the chosen parts of Γ3.
+/// How the Coulomb law is imposed: the paper's regularisation |u_T| → √(|u_T|² + d_T²)
+/// (eq. 3.14), or exactly, by an augmented Lagrangian on the friction traction.
+enum class FrictionRegularization { Regularized, None };
+
+/// Nonlocal Coulomb friction (eq. 3.14–3.15) on the chosen parts of Γ3.
 struct Friction {
   Real mu = 0.0;        ///< Coulomb coefficient μ_f ≥ 0
   Real radius = 0.0;    ///< mollifier radius h of σ̄_N; 0 = local pressure
   Real d_t = 1e-6;      ///< regularisation d_T > 0
   bool on_container = true;
   bool on_die = true;
+  FrictionRegularization regularization = FrictionRegularization::Regularized;
+  /// Exact friction only: augmentation r of λ_T = proj(λ_T + r u_T), in units of
+  /// 1/d_N (r = augmentation / d_N), so the stick penalty is as stiff as the normal one.
+  Real augmentation = 1.0;
 };
 
 }  // namespace formflow::physics

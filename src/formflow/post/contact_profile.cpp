@@ -7,15 +7,6 @@
 
 namespace formflow::post {
 
-namespace {
-
-/// A converged regularised solution sticks where the friction traction stays
-/// clearly below the Coulomb limit; 1 % separates the two zones robustly
-/// (|σ_T| = 0.99 τ_f at |u_T| ≈ 7 d_T).
-constexpr Real stick_fraction = 0.99;
-
-}  // namespace
-
 std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& problem,
                                            const std::vector<assembly::ContactPoint<2>>& contact) {
   const auto& mesh = problem.mesh();
@@ -65,15 +56,18 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
       sample.y = point.position[1];
       sample.contact_pressure = point.contact_pressure;
       sample.slip_velocity = point.tangential_velocity.norm();
-      sample.friction_stress = point.friction_weight * sample.slip_velocity;
-      sample.sticking = point.friction_threshold > 0 &&
-                        sample.friction_stress < stick_fraction * point.friction_threshold;
+      sample.friction_stress = point.friction_traction.norm();
+      sample.sticking = point.sticking;
       sample.part = mesh.facets[point.facet].label == mesh::BoundaryLabel::Die ? 1 : 0;
       along.push_back(sample);
     }
     std::sort(along.begin(), along.end(), [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
     samples.insert(samples.end(), along.begin(), along.end());
-    for (int q = 0; q < n_q; ++q) arc_length += contact[segment.first_point + q].weight;
+    for (int q = 0; q < n_q; ++q) {
+      const auto& point = contact[segment.first_point + q];
+      // Axisymmetric weights are r dΓ (per radian): the arc length wants dΓ.
+      arc_length += problem.axisymmetric() ? point.weight / point.position[1] : point.weight;
+    }
     node = segment.from == node ? segment.to : segment.from;
   }
   return samples;

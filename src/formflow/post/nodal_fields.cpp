@@ -48,14 +48,13 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   VectorX count = VectorX::Zero(mesh.n_nodes());
   VectorX stress_at_points(volumetric_values.n_points());
   auto rate_at = [&](const fem::CellValues<dim>& values, int q) {
-    return physics::equivalent_strain_rate(
-        physics::strain_rate<dim>(physics::velocity_gradient<dim>(velocities, values.gradients(q))));
+    return physics::equivalent_strain_rate(problem.strain_rate_at(values, velocities, q));
   };
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     problem.gather(cell, &u, coordinates, velocities);
     at_nodes.reinit(coordinates);
-    full_values.reinit(coordinates);
-    volumetric_values.reinit(coordinates);
+    problem.reinit(full_values, coordinates);
+    problem.reinit(volumetric_values, coordinates);
     Real area = 0.0;
     for (int q = 0; q < full_values.n_points(); ++q) {
       fields.cell_equivalent_strain_rate[cell] += rate_at(full_values, q) * full_values.JxW(q);
@@ -64,7 +63,8 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
     fields.cell_equivalent_strain_rate[cell] /= area;
     for (int q = 0; q < volumetric_values.n_points(); ++q) {
       // σ_H = ε̇_V/d (eq. 3.6), the Lagrange multiplier of incompressibility.
-      stress_at_points[q] = velocities.cwiseProduct(volumetric_values.gradients(q)).sum() / d;
+      stress_at_points[q] = (velocities.cwiseProduct(volumetric_values.gradients(q)).sum() +
+                             problem.hoop_rate_at(volumetric_values, velocities, q)) / d;
       fields.cell_hydrostatic_stress[cell] += stress_at_points[q] * volumetric_values.JxW(q) / area;
     }
     const VectorX nodal_stress = pressure_to_nodes * stress_at_points;
@@ -90,7 +90,7 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
     for (int q = 0; q < n_q; ++q) {
       const auto& point = contact[first + q];
       pressure_at[q] = point.contact_pressure;
-      friction_at[q] = point.friction_weight * point.tangential_velocity.norm();
+      friction_at[q] = point.friction_traction.norm();
     }
     const VectorX nodal_pressure = facet_to_nodes * pressure_at;
     const VectorX nodal_friction = facet_to_nodes * friction_at;

@@ -6,14 +6,14 @@ namespace formflow::post {
 
 template <int dim>
 void evaluate_results(const assembly::FormingProblem<dim>& problem, const VectorX& u,
-                      Results& results) {
+                      Results& results, const assembly::FrictionMultipliers<dim>* multipliers) {
   ScopedTimer timer(results.timing, "post");
   const Real speed = problem.settings().process.speed;
   const Real height = problem.driven_height();
 
   assembly::LinearSystem system = problem.plan().make_system();
-  problem.assemble(&u, system);
-  const auto contact = problem.contact_state(u);
+  problem.assemble(&u, system, multipliers);
+  const auto contact = problem.contact_state(u, multipliers);
 
   results.n_cells = problem.mesh().n_cells();
   results.n_nodes = problem.mesh().n_nodes();
@@ -30,9 +30,12 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
   results.max_equivalent_strain_rate =
       std::max(results.max_equivalent_strain_rate, results.fields.equivalent_strain_rate.maxCoeff());
   if constexpr (dim == 2) results.contact = contact_profile(problem, contact);
+  contact_zones(problem, contact, results.container_zones, results.die_zones);
 }
 
-template void evaluate_results<2>(const assembly::FormingProblem<2>&, const VectorX&, Results&);
-template void evaluate_results<3>(const assembly::FormingProblem<3>&, const VectorX&, Results&);
+template void evaluate_results<2>(const assembly::FormingProblem<2>&, const VectorX&, Results&,
+                                  const assembly::FrictionMultipliers<2>*);
+template void evaluate_results<3>(const assembly::FormingProblem<3>&, const VectorX&, Results&,
+                                  const assembly::FrictionMultipliers<3>*);
 
 }  // namespace formflow::post

@@ -26,15 +26,22 @@ template <int dim>
 Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX& u,
                     const std::vector<assembly::ContactPoint<dim>>& contact);
 
+/// Stick/slip lengths of the container wall and the die face.
+template <int dim>
+void contact_zones(const assembly::FormingProblem<dim>& problem,
+                   const std::vector<assembly::ContactPoint<dim>>& contact, ContactZones& container,
+                   ContactZones& die);
+
 /// Γ3 samples ordered by arc length from the end nearest the rear (plane problems).
 std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& problem,
                                            const std::vector<assembly::ContactPoint<2>>& contact);
 
 /// Everything above plus the reaction force from one more assembly K(u): the
 /// consistent reaction K_c·(u) u, which equals the total discrete power at a
-/// fixed point of the iteration.
+/// fixed point of the iteration. Exact friction is evaluated with its final `multipliers`.
 template <int dim>
 void evaluate_results(const assembly::FormingProblem<dim>& problem, const VectorX& u,
-                      Results& results);
+                      Results& results,
+                      const assembly::FrictionMultipliers<dim>* multipliers = nullptr);
 
 }  // namespace formflow::post

@@ -17,11 +17,10 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
   PowerTerms power;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     problem.gather(cell, &u, coordinates, velocities);
-    full_values.reinit(coordinates);
-    volumetric_values.reinit(coordinates);
+    problem.reinit(full_values, coordinates);
+    problem.reinit(volumetric_values, coordinates);
     for (int q = 0; q < full_values.n_points(); ++q) {
-      const Tensor3 rate = physics::strain_rate<dim>(
-          physics::velocity_gradient<dim>(velocities, full_values.gradients(q)));
+      const Tensor3 rate = problem.strain_rate_at(full_values, velocities, q);
       const Real equivalent = physics::equivalent_strain_rate(rate);
       const Tensor3 measured = deviatoric ? physics::deviator(rate) : rate;
       power.plastic_dissipation += settings.law.dissipation(equivalent) * full_values.JxW(q);
@@ -29,13 +28,15 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
                             measured.cwiseProduct(measured).sum() * full_values.JxW(q);
     }
     for (int q = 0; q < volumetric_values.n_points(); ++q) {
-      const Real volumetric = physics::velocity_gradient<dim>(velocities, volumetric_values.gradients(q)).trace();
+      const Real volumetric =
+          physics::velocity_gradient<dim>(velocities, volumetric_values.gradients(q)).trace() +
+          problem.hoop_rate_at(volumetric_values, velocities, q);
       power.volumetric_penalty += volumetric * volumetric / settings.penalty.d * volumetric_values.JxW(q);
     }
   }
   for (const auto& point : contact) {
     power.contact_penalty += point.normal_velocity * point.normal_velocity / settings.penalty.d_n * point.weight;
-    power.friction += point.friction_weight * point.tangential_velocity.squaredNorm() * point.weight;
+    power.friction += point.friction_traction.dot(point.tangential_velocity) * point.weight;
   }
   return power;
 }
@@ -52,9 +53,10 @@ Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, con
     if (facet.label != label || counted[facet.cell]) continue;
     counted[facet.cell] = true;
     problem.gather(facet.cell, &u, coordinates, velocities);
-    values.reinit(coordinates);
+    problem.reinit(values, coordinates);
     for (int q = 0; q < values.n_points(); ++q) {
-      const Real volumetric = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace();
+      const Real volumetric = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() +
+                              problem.hoop_rate_at(values, velocities, q);
       integral += -volumetric / problem.settings().penalty.d * values.JxW(q);  // −σ_H dx
       area += values.JxW(q);
     }

@@ -28,7 +28,7 @@ struct PowerTerms {
   Real viscous_form = 0.0;         ///< a(u; u, u) (≥ dissipation when the full ε̇ is used)
   Real volumetric_penalty = 0.0;   ///< ∫ ε̇_V²/d dx
   Real contact_penalty = 0.0;      ///< ∫_Γ3 u_N²/d_N dΓ
-  Real friction = 0.0;             ///< ∫_Γ3 τ_f |u_T|²/√(|u_T|² + d_T²) dΓ
+  Real friction = 0.0;             ///< ∫_Γ3 λ_T·u_T dΓ (regularised: τ_f |u_T|²/√(|u_T|² + d_T²))
   Real total() const { return viscous_form + volumetric_penalty + contact_penalty + friction; }
 };
 
@@ -37,10 +37,24 @@ struct ContactSample {
   Real arc_length = 0.0;        ///< s, measured along Γ3 from the ram end of the container wall
   Real x = 0.0, y = 0.0;
   Real contact_pressure = 0.0;  ///< −σ_N = u_N/d_N (local, not mollified)
-  Real friction_stress = 0.0;   ///< |σ_T|, the regularised friction traction magnitude
+  Real friction_stress = 0.0;   ///< |σ_T| = |λ_T|, the friction traction magnitude
   Real slip_velocity = 0.0;     ///< |u_T|
-  bool sticking = false;        ///< |u_T| below the stick threshold (a few d_T)
+  bool sticking = false;        ///< ContactPoint::sticking (regularised: |u_T| < 7 d_T)
   int part = 0;                 ///< 0 container, 1 die (mesh::BoundaryLabel order)
+};
+
+/// Stick and slip zones of one contact part, measured with the Γ3 quadrature weights
+/// (each point stands for its share JxW of the boundary).
+struct ContactZones {
+  Real length = 0.0;        ///< measure of the part
+  Real stick_length = 0.0;  ///< where ContactPoint::sticking
+  Real slip_length() const { return length - stick_length; }
+};
+
+/// Outcome of the augmented-Lagrangian loop of exact friction (zero when regularised).
+struct Augmentation {
+  int outer_iterations = 0;      ///< multiplier updates
+  Real multiplier_change = 0.0;  ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
 };
 
 /// Fields on the mesh nodes (averaged from integration points) and cell means.
@@ -67,6 +81,8 @@ struct Results {
   Real max_equivalent_strain_rate = 0.0;
   Fields fields;
   std::vector<ContactSample> contact;
+  ContactZones container_zones, die_zones;
+  Augmentation augmentation;
   PhaseTimes timing;  ///< seconds per phase: total, mesh, assembly, factorization, solve, post
 };
 

@@ -2,8 +2,6 @@
 // The secant-modulus loop with its stop reasons.
 #include "formflow/solvers/secant_iteration.hpp"
 
-#include "formflow/core/error.hpp"
-
 #include <chrono>
 #include <cmath>
 
@@ -19,10 +17,11 @@ template <int dim>
 std::optional<StopReason> solve_linearised(const assembly::FormingProblem<dim>& problem,
                                            LinearSolver& solver, const VectorX* w,
                                            assembly::LinearSystem& system, bool analyse,
-                                           VectorX& velocity, PhaseTimes& times) {
+                                           VectorX& velocity, PhaseTimes& times,
+                                           const assembly::FrictionMultipliers<dim>* multipliers) {
   {
     ScopedTimer timer(times, "assembly");
-    problem.assemble(w, system);
+    problem.assemble(w, system, multipliers);
   }
   if (analyse) {
     ScopedTimer timer(times, "analysis");
@@ -48,18 +47,18 @@ template <int dim>
 SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times, const VectorX* start) {
+                               PhaseTimes& times,
+                               const assembly::FrictionMultipliers<dim>* multipliers,
+                               const VectorX* start) {
   SecantOutcome outcome;
   assembly::LinearSystem system = problem.plan().make_system();
   outcome.velocity = problem.constraints().values;  // u = 0 except prescribed values
   bool analysed = false;
   if (start) {
-    FF_ASSERT(start->size() == problem.n_dofs(), "start vector size");
-    const auto& prescribed = problem.constraints().prescribed;
-    for (Index dof = 0; dof < problem.n_dofs(); ++dof)
-      if (!prescribed[dof]) outcome.velocity[dof] = (*start)[dof];
+    outcome.velocity = *start;
   } else {
-    if (auto stop = solve_linearised(problem, solver, nullptr, system, true, outcome.velocity, times)) {
+    if (auto stop = solve_linearised(problem, solver, nullptr, system, true, outcome.velocity,
+                                     times, multipliers)) {
       outcome.stop_reason = *stop;
       return outcome;
     }
@@ -68,7 +67,8 @@ SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, Lin
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start_time = std::chrono::steady_clock::now();
     VectorX next;
-    if (auto stop = solve_linearised(problem, solver, &outcome.velocity, system, !analysed, next, times)) {
+    if (auto stop = solve_linearised(problem, solver, &outcome.velocity, system, !analysed, next,
+                                     times, multipliers)) {
       outcome.stop_reason = *stop;
       return outcome;
     }
@@ -103,10 +103,12 @@ SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, Lin
 template SecantOutcome secant_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&, const VectorX*);
+                                           PhaseTimes&, const assembly::FrictionMultipliers<2>*,
+                                           const VectorX*);
 template SecantOutcome secant_iteration<3>(const assembly::FormingProblem<3>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&, const VectorX*);
+                                           PhaseTimes&, const assembly::FrictionMultipliers<3>*,
+                                           const VectorX*);
 
 }  // namespace formflow::solvers

@@ -21,12 +21,14 @@ struct SecantOutcome {
 /// From the constant-viscosity solution u⁰, solves K(uⁿ) uⁿ⁺¹ = F(uⁿ) until
 /// ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < δ. The pattern is analysed once; each iteration
 /// refactorises. Phases "assembly", "analysis", "factorization", "solve" are timed.
-/// A `start` (full dof vector; its prescribed entries are replaced by the
-/// Dirichlet values) replaces the constant-viscosity u⁰.
+/// `multipliers` (exact friction) are held fixed and passed to every assembly;
+/// `start` replaces the constant-viscosity first iterate (a warm start).
 template <int dim>
 SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times, const VectorX* start = nullptr);
+                               PhaseTimes& times,
+                               const assembly::FrictionMultipliers<dim>* multipliers = nullptr,
+                               const VectorX* start = nullptr);
 
 }  // namespace formflow::solvers

@@ -215,6 +215,26 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   EXPECT_EQ(summary.at("formflow_version"), FORMFLOW_VERSION);
 }
 
+TEST_F(ResultsFiles, SummaryReportsStickAndSlipPerContactPart) {
+  results_.container_zones = {10.0, 0.0};
+  results_.die_zones = {5.0, 2.0};
+  auto contact = nlohmann::json::parse(io::summary_json(case_, results_)).at("contact");
+  EXPECT_EQ(contact.at("regularization"), "regularized");
+  EXPECT_EQ(contact.at("die").at("length"), 5.0);
+  EXPECT_EQ(contact.at("die").at("stick_length"), 2.0);
+  EXPECT_EQ(contact.at("die").at("slip_length"), 3.0);
+  EXPECT_EQ(contact.at("die").at("stick_fraction"), 0.4);
+  EXPECT_EQ(contact.at("container").at("stick_fraction"), 0.0);
+  EXPECT_FALSE(contact.contains("augmented_lagrangian"));  // only for exact friction
+
+  case_.friction.regularization = physics::FrictionRegularization::None;
+  results_.augmentation = {12, 3e-5};
+  contact = nlohmann::json::parse(io::summary_json(case_, results_)).at("contact");
+  EXPECT_EQ(contact.at("regularization"), "none");
+  EXPECT_EQ(contact.at("augmented_lagrangian").at("outer_iterations"), 12);
+  EXPECT_EQ(contact.at("augmented_lagrangian").at("multiplier_change"), 3e-5);
+}
+
 TEST_F(ResultsFiles, SummaryOfAnUnconvergedDrawingRun) {
   case_.process.type = physics::ProcessType::Drawing;
   case_.element = fem::ElementKind::Q1;

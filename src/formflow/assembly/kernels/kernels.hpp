@@ -29,4 +29,13 @@ template <int dim>
 void add_friction_term(const fem::FacetValues<dim>& values, std::span<const Real> weight,
                        MatrixX& local_matrix);
 
+/// Axisymmetry (y = r, `values` r-weighted): the hoop part of (1) that
+/// add_viscous_term leaves out, ε̇_θθ(φ_a e_r) = φ_a/r (kernels/axisymmetric.cpp).
+void add_hoop_viscous_term(const fem::CellValues<2>& values, std::span<const Real> viscosity,
+                           physics::ViscousStrain strain, MatrixX& local_matrix);
+
+/// Axisymmetry: (2) with ε̇_V = ∂_x u_x + ∂_r u_r + u_r/r, replacing add_volumetric_penalty.
+void add_volumetric_penalty_axisymmetric(const fem::CellValues<2>& values, Real d,
+                                         MatrixX& local_matrix);
+
 }  // namespace formflow::assembly

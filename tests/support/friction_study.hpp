@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// Solves the benchmark with exact or regularised friction and keeps what the
+// friction tests inspect: velocity, multipliers, the Γ3 state and the results.
+#pragma once
+
+#include "formflow/app/simulation.hpp"
+#include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/post/post_process.hpp"
+#include "formflow/solvers/augmented_lagrangian.hpp"
+
+#include <cmath>
+#include <memory>
+
+namespace formflow::testing {
+
+/// One solved case. The mesh is owned here because the problem refers to it.
+struct FrictionSolve {
+  std::unique_ptr<mesh::Mesh<2>> mesh;
+  std::unique_ptr<assembly::FormingProblem<2>> problem;
+  VectorX velocity;
+  assembly::FrictionMultipliers<2> multipliers;
+  solvers::StopReason stop_reason = solvers::StopReason::MaxIterations;
+  int iterations = 0;
+  int augmentations = 0;
+  Real multiplier_change = 0.0;
+  post::Results results;
+
+  bool converged() const { return stop_reason == solvers::StopReason::Converged; }
+  /// Γ3 state at the final velocity, with the final multipliers (exact friction).
+  std::vector<assembly::ContactPoint<2>> contact() const {
+    return problem->contact_state(velocity, &multipliers);
+  }
+};
+
+/// The paper's benchmark from a Case (SPEC §4 defaults plus the caller's edits),
+/// solved by the same path as `formflow run`: augmented Lagrangian around the
+/// secant iteration when friction.regularization = "none", plain secant otherwise.
+inline FrictionSolve solve_friction_case(const io::Case& case_) {
+  FrictionSolve solve;
+  solve.mesh = std::make_unique<mesh::Mesh<2>>(
+      mesh::make_channel_mesh(case_.geometry, case_.mesh_size, fem::element_order(case_.element)));
+  assembly::ProblemSettings settings;
+  settings.process = case_.process;
+  settings.law = case_.material;
+  settings.viscous_strain = case_.viscous_strain;
+  settings.penalty = case_.penalty;
+  settings.friction = case_.friction;
+  settings.volumetric_points = case_.volumetric_points;
+  settings.initial_rate = case_.solver.initial_rate;
+  solve.problem = std::make_unique<assembly::FormingProblem<2>>(*solve.mesh, settings);
+  auto solver = solvers::make_cholmod_solver();
+  PhaseTimes times;
+  if (solve.problem->has_exact_friction()) {
+    auto outcome = solvers::augmented_lagrangian<2>(
+        *solve.problem, solvers::secant_inner_solve<2>(*solve.problem, *solver, times),
+        case_.solver, {});
+    solve.velocity = outcome.solve.velocity;
+    solve.stop_reason = outcome.solve.stop_reason;
+    solve.iterations = static_cast<int>(outcome.solve.history.size());
+    solve.multipliers = outcome.multipliers;
+    solve.augmentations = outcome.augmentations;
+    solve.multiplier_change = outcome.multiplier_change;
+  } else {
+    auto outcome = solvers::secant_iteration<2>(*solve.problem, *solver, case_.solver, {}, times);
+    solve.velocity = outcome.velocity;
+    solve.stop_reason = outcome.stop_reason;
+    solve.iterations = static_cast<int>(outcome.history.size());
+  }
+  post::evaluate_results<2>(*solve.problem, solve.velocity, solve.results, &solve.multipliers);
+  return solve;
+}
+
+/// ‖a − b‖/‖b‖ of two full nodal velocity vectors (the relative l² norm of the
+/// friction study; every node weighs the same on the uniform meshes used).
+inline double relative_velocity_difference(const VectorX& a, const VectorX& b) {
+  return (a - b).norm() / b.norm();
+}
+
+} // namespace formflow::testing
