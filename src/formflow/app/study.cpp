@@ -120,7 +120,9 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
     rung.pressure = simulation.results.pressure;
     rung.error = simulation.errors;
     rung.reciprocal_condition = simulation.reciprocal_condition;
-    if (plan.key == "mesh.size" && plan.cases[k].manufactured == physics::ManufacturedSolution::None)
+    // The re-entrant corner (L_c, H_out) exists only for the square die of SPEC §4.
+    if (plan.key == "mesh.size" && plan.cases[k].manufactured == physics::ManufacturedSolution::None &&
+        plan.cases[k].geometry.die == mesh::DieShape::Square)
       rung.corner = die_corner_profile(plan.cases[k], simulation);
     table.rungs.push_back(rung);
     if (on_rung) on_rung(table.rungs.back());

@@ -179,7 +179,7 @@ void draw_study(const Canvas& canvas, const post::StudyTable& table) {
     legend.push_back({fmt::format("Richardson limit {:.4f}", limit), {1.4, slope_colour, 1.0, 8.0}});
   }
   canvas.unclip();
-  if (!all_converged) legend.push_back({"large red ring: rung not converged", {2.0, failed_colour}});
+  if (!all_converged) legend.push_back({"large red dot: rung not converged", {2.0, failed_colour}});
   // Rising data leave the top-left corner free, falling data the top-right one.
   const Series& first = all.front();
   const bool rising = first.y.size() >= 2 && (first.y.back() - first.y.front()) *
