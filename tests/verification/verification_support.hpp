@@ -64,7 +64,7 @@ inline Solved solve_on(const mesh::Mesh<2>& mesh, const io::Case& case_,
   auto solver = solvers::make_cholmod_solver();
   PhaseTimes times;
   solvers::SecantOutcome outcome =
-      solvers::secant_iteration(problem, *solver, case_.solver, {}, times, nullptr, start);
+      solvers::secant_iteration<2>(problem, *solver, case_.solver, {}, times, nullptr, start);
   Solved solved{outcome.velocity, {}};
   solved.results.stop_reason = outcome.stop_reason;
   solved.results.iterations = static_cast<int>(outcome.history.size());
