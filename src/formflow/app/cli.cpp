@@ -4,6 +4,7 @@
 
 #include "formflow/app/monitor.hpp"
 #include "formflow/app/simulation.hpp"
+#include "formflow/app/study.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/mesh_input.hpp"
@@ -70,6 +71,9 @@ int run_case(const Options& options) {
                case_.solver.tolerance, results.iterations, results.pressure.ram_reaction,
                results.pressure.power_balance, results.pressure.total_power,
                results.pressure.mean_hydrostatic_near_ram, options.output_directory);
+  if (show && simulation.errors)
+    fmt::print("manufactured solution: error V-norm {:.6e}  L2 {:.6e}  hydrostatic L2 {:.6e}\n",
+               simulation.errors->v_norm, simulation.errors->l2, simulation.errors->hydrostatic_l2);
   return Ok;
 }
 
@@ -97,6 +101,28 @@ int run_cli(int argc, char** argv) {
   check->add_option("case", options.case_path, "Case file (TOML)")->required();
   check->add_option("--set", options.assignments, "Override a key")->allow_extra_args(false);
 
+  StudyCommand study_options;
+  std::vector<std::string> study_assignments;
+  CLI::App* study =
+      app.add_subcommand("study", "Run a ladder over one key: study.csv (norms, observed orders) "
+                                  "and a log-log study.png")
+          ->footer("Examples:\n  formflow study --vary mesh.size=1,0.5,0.25,0.125 --set "
+                   "process.ram=sticking -o results/ladder\n  formflow study --vary "
+                   "mesh.size=1/4,1/8,1/16 --set verification.solution=smooth --set "
+                   "integration.volumetric=1 --set mesh.element=Q1 -o results/mms\n"
+                   "The last rung of a ladder that keeps the mesh (penalty.d, penalty.dT, "
+                   "friction.radius, ...) is the reference u_ref of the difference norms.\n"
+                   "Exit codes: 0 ok, 2 bad input (nothing written), 3 a rung did not converge.");
+  study->add_option("case", study_options.case_path, "Case file (TOML); omitted: the paper's benchmark");
+  study->add_option("--vary", study_options.vary, "key=v1,v2,... (values may be fractions n/m)")
+      ->required();
+  study->add_option("--set", study_assignments, "Override a key in every rung")->allow_extra_args(false);
+  study->add_option("-o,--output", study_options.output_directory, "Output directory")
+      ->capture_default_str();
+  study->add_flag("--rcond", study_options.estimate_condition,
+                  "Also estimate CHOLMOD's rcond of K(u) per rung (one extra factorisation)");
+  study->add_flag("-q,--quiet", study_options.quiet, "No progress lines");
+
   CLI::App* reference = app.add_subcommand(
       "case-reference", "Print the Markdown reference of every case key (docs/case-reference.md)");
 
@@ -114,6 +140,10 @@ int run_cli(int argc, char** argv) {
       const mesh::Mesh<2> mesh = io::load_mesh(case_);
       fmt::print("{}: valid ({} cells, {} nodes)\n", case_.source, mesh.n_cells(), mesh.n_nodes());
       return Ok;
+    }
+    if (*study) {
+      study_options.overrides = parse_assignments(study_assignments);
+      return study_command(study_options);
     }
     if (*reference) {
       fmt::print("{}", io::case_reference_markdown());

@@ -5,6 +5,7 @@
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
+#include "formflow/solvers/condition_estimate.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 #include "formflow/solvers/uzawa_iteration.hpp"
@@ -30,7 +31,18 @@ assembly::ProblemSettings settings_of(const io::Case& case_) {
 
 }  // namespace
 
-Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration) {
+assembly::ProblemSettings problem_settings(const io::Case& case_) { return settings_of(case_); }
+
+Real condition_at(const assembly::FormingProblem<2>& problem, const VectorX& u) {
+  assembly::LinearSystem system = problem.plan().make_system();
+  problem.assemble(&u, system);
+  return solvers::reciprocal_condition_estimate(system.matrix);
+}
+
+Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration,
+                    bool estimate_condition) {
+  if (case_.manufactured != physics::ManufacturedSolution::None)
+    return simulate_manufactured(case_, on_iteration, estimate_condition);
   Simulation simulation;
   post::Results& results = simulation.results;
   const auto start = std::chrono::steady_clock::now();
@@ -83,6 +95,7 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());
   post::evaluate_results(*problem, outcome.velocity, results, &multipliers);
+  if (estimate_condition) simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
   results.timing.add("total",
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return simulation;

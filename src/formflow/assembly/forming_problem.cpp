@@ -36,9 +36,15 @@ void exact_friction_point(const Point<dim>& multiplier, Real augmentation, Conta
 
 template <int dim>
 FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings)
+    : FormingProblem(mesh, settings, make_process_constraints(mesh, settings.process), {}) {}
+
+template <int dim>
+FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings,
+                                    DirichletConstraints constraints, BodyForce<dim> body_force)
     : mesh_(mesh),
       settings_(settings),
-      constraints_(make_process_constraints(mesh, settings.process)),
+      constraints_(std::move(constraints)),
+      body_force_(std::move(body_force)),
       full_rule_(fem::gauss_rule<dim>(mesh.order + 1)),
       volumetric_rule_(fem::gauss_rule<dim>(settings.volumetric_points)),
       facet_rule_(fem::gauss_rule<dim - 1>(mesh.order + 1)) {
@@ -196,6 +202,21 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
     if (multipliers_ && multipliers_->needs_uzawa()) scatter_load(cell, local_load, system);
     if (with_friction && has_exact_friction())
       add_friction_loads(cell, state, coordinates, facet_values, system);
+    if (body_force_) {
+      add_body_force(full_values, local_load);
+      plan_->scatter_load(cell, local_load, system);
+    }
+  }
+}
+
+template <int dim>
+void FormingProblem<dim>::add_body_force(const fem::CellValues<dim>& values,
+                                         VectorX& local_load) const {
+  local_load.setZero(values.n_nodes() * dim);
+  for (int q = 0; q < values.n_points(); ++q) {
+    const Point<dim> force = body_force_(values.point(q));
+    for (int a = 0; a < values.n_nodes(); ++a)  // ∫ f·φ_a e_i dx
+      local_load.template segment<dim>(a * dim) += values.shape(q)[a] * values.JxW(q) * force;
   }
 }
 

@@ -11,6 +11,7 @@
 #include "formflow/physics/flow_law.hpp"
 #include "formflow/physics/friction.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -64,10 +65,18 @@ struct NewtonDuals {
   void clear() { stress.clear(), slip.clear(); }
 };
 
+/// A volume load f(x) per unit volume (manufactured solutions): adds ∫ f·v dx to F.
+template <int dim>
+using BodyForce = std::function<Point<dim>(const Point<dim>&)>;
+
 template <int dim>
 class FormingProblem {
  public:
+  /// The forming process: Dirichlet data from settings.process, no volume load.
   FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings);
+  /// Any Dirichlet data and an optional body force (verification problems).
+  FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings,
+                 DirichletConstraints constraints, BodyForce<dim> body_force);
 
   /// Assembles K(w) and F into `system`. Without `w` the viscosity is the
   /// constant σ_p(initial_rate)/initial_rate and there is no friction (τ_f(0) = 0).
@@ -164,9 +173,12 @@ class FormingProblem {
                           const typename fem::CellValues<dim>::Gradients& coordinates,
                           fem::FacetValues<dim>& facet_values, LinearSystem& system) const;
 
+  void add_body_force(const fem::CellValues<dim>& values, VectorX& local_load) const;
+
   const mesh::Mesh<dim>& mesh_;
   ProblemSettings settings_;
   DirichletConstraints constraints_;
+  BodyForce<dim> body_force_;
   std::unique_ptr<ScatterPlan> plan_;
   fem::QuadratureRule<dim> full_rule_, volumetric_rule_;
   fem::QuadratureRule<dim - 1> facet_rule_;

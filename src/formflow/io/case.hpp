@@ -4,9 +4,11 @@
 
 #include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/fem/lagrange.hpp"
+#include "formflow/mesh/box_mesh.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/mesh_source.hpp"
 #include "formflow/physics/flow_law.hpp"
+#include "formflow/physics/manufactured.hpp"
 #include "formflow/physics/process.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
@@ -34,6 +36,10 @@ struct Case {
   physics::Friction friction;
   physics::Penalty penalty;
   solvers::IterationControl solver;
+  /// Verification: a manufactured solution on the unit square replaces the
+  /// process (None: the forming case), on a box mesh with this distortion.
+  physics::ManufacturedSolution manufactured = physics::ManufacturedSolution::None;
+  mesh::BoxDistortion distortion;
 
   std::string source;  ///< the case file path, or "<default>" for the embedded benchmark
 

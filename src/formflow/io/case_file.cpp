@@ -188,6 +188,7 @@ class CaseBuilder {
     check_mesh_source();
     check_flow_law();
     check_formulation();
+    check_verification();
   }
 
   Case finish(std::string source) {
@@ -310,6 +311,26 @@ class CaseBuilder {
                        fmt::format("is set but mesh.source = {} does not read a file",
                                    format_key_value(find_case_key("mesh.source")->get(case_))),
                        "set mesh.source = \"file\" to use it");
+    }
+  }
+
+  /// A manufactured solution lives on the unit square; the smooth map must stay one-to-one.
+  void check_verification() const {
+    if (case_.manufactured == physics::ManufacturedSolution::None) return;
+    if (mesh::cells_along(1.0, case_.mesh_size) <= 0) {
+      const Origin where = origin("mesh.size");
+      throw InputError(where.file, where.line, "mesh.size",
+                       fmt::format("value {} does not divide the unit square of "
+                                   "verification.solution",
+                                   format_key_value(case_.mesh_size)),
+                       "use 1/n, e.g. 0.25 or 0.125");
+    }
+    if (case_.distortion.kind == mesh::Distortion::Smooth && case_.distortion.amplitude > 0.1) {
+      const Origin where = origin("verification.amplitude");
+      throw InputError(where.file, where.line, "verification.amplitude",
+                       fmt::format("value {} folds the smooth distortion map",
+                                   format_key_value(case_.distortion.amplitude)),
+                       "must be ≤ 0.1 with verification.distortion = \"smooth\"");
     }
   }
 

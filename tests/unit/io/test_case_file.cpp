@@ -354,7 +354,11 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
                                         {"solver.max_iterations", "42"},
                                         {"solver.initial_rate", "0.5"},
                                         {"solver.method", "\"secant\""},
-                                        {"solver.newton_start", "0.2"}};
+                                        {"solver.newton_start", "0.2"},
+                                        {"verification.solution", "\"smooth\""},
+                                        {"verification.distortion", "\"random\""},
+                                        {"verification.amplitude", "0.2"},
+                                        {"verification.seed", "7"}};
   ASSERT_EQ(values.size(), case_keys().size()) << "a key was added: give it a value here";
   const nlohmann::json json = case_to_json(load_case("", values));
   std::size_t n_keys = 0;

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// `formflow study`: a ladder of runs over one case key, with error norms and observed orders.
+#pragma once
+
+#include "formflow/io/case.hpp"
+#include "formflow/post/study_table.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace formflow::app {
+
+/// A validated study: the varied key, its values as given, and each rung's case.
+struct StudyPlan {
+  std::string key;
+  std::vector<std::string> values;
+  std::vector<io::Case> cases;
+  std::string description;  ///< "case, --set overrides" for the plot subtitle
+};
+
+/// Parses `vary` ("key=v1,v2,..."; a value may be a fraction "10/6") and loads
+/// the case with `overrides` and then key=value for every value, so that every
+/// input error surfaces before anything runs. The key must be a real or integer
+/// key, the values positive (they are the x axis of a log-log plot) and at least two.
+/// Throws InputError.
+StudyPlan plan_study(const std::string& case_path, const std::string& vary,
+                     const std::vector<io::Override>& overrides);
+
+/// Solves every rung in order. Rungs with the same mesh as the last one also
+/// get ‖u − u_last‖ (the last rung is the reference of a penalty or
+/// regularisation ladder). `estimate_condition` adds CHOLMOD's rcond of K(u).
+/// `on_rung` is called after each rung (for progress lines).
+post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
+                           const std::function<void(const post::StudyRung&)>& on_rung = {});
+
+}  // namespace formflow::app
+
+namespace formflow::app {
+
+/// What `formflow study` was asked to do.
+struct StudyCommand {
+  std::string case_path;
+  std::string vary;
+  std::vector<io::Override> overrides;
+  std::string output_directory = "study";
+  bool estimate_condition = false;
+  bool quiet = false;
+};
+
+/// Plans (exit 2 on bad input, nothing written), runs with one progress line
+/// per rung, writes DIR/study.csv, study.png, study.svg; returns 3 if a rung
+/// did not converge (files still written, the rung marked), else 0.
+/// InputError propagates to the caller, which turns it into exit 2.
+int study_command(const StudyCommand& command);
+
+}  // namespace formflow::app

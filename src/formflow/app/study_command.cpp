@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// The `formflow study` subcommand: progress lines, files, exit code.
+#include "formflow/app/cli.hpp"
+#include "formflow/app/study.hpp"
+#include "formflow/io/study_files.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace formflow::app {
+
+namespace {
+
+std::string cell(const std::optional<Real>& value, const char* format) {
+  if (!value || !std::isfinite(*value)) return "-";
+  return fmt::format(fmt::runtime(format), *value);
+}
+
+}  // namespace
+
+int study_command(const StudyCommand& command) {
+  const StudyPlan plan = plan_study(command.case_path, command.vary, command.overrides);
+  if (!command.quiet)
+    fmt::print("formflow study of {} over {} rungs ({})\n{:>12} {:>9} {:>5} {:>11} {:>12} {:>12} {:>10}\n",
+               plan.key, plan.values.size(), plan.description, plan.key, "dofs", "its",
+               "pressure", "error/diff V", "error/diff L2", "status");
+  auto progress = [&command](const post::StudyRung& rung) {
+    if (command.quiet) return;
+    const auto& norms = rung.error ? rung.error : rung.difference;
+    fmt::print("{:>12} {:>9} {:>5} {:>11.6f} {:>12} {:>12} {:>10}\n", rung.value_text, rung.dofs,
+               rung.iterations, rung.pressure.ram_reaction,
+               cell(norms ? std::optional<Real>(norms->v_norm) : std::nullopt, "{:.4e}"),
+               cell(norms ? std::optional<Real>(norms->l2) : std::nullopt, "{:.4e}"),
+               solvers::stop_reason_name(rung.stop_reason));
+    std::fflush(stdout);
+  };
+  const post::StudyTable table = run_study(plan, command.estimate_condition, progress);
+  io::write_study(command.output_directory, table);
+  if (!command.quiet) {
+    fmt::print("observed orders (between a rung and the one before it):\n");
+    for (const post::StudyRung& rung : table.rungs)
+      fmt::print("{:>12}  V {:>6}  L2 {:>6}  pressure {:>6}  Richardson {:>9}{}\n", rung.value_text,
+                 cell(rung.order_v, "{:.3f}"), cell(rung.order_l2, "{:.3f}"),
+                 cell(rung.pressure_order, "{:.3f}"), cell(rung.pressure_extrapolated, "{:.5f}"),
+                 rung.reciprocal_condition
+                     ? fmt::format("  rcond {:.3e}", *rung.reciprocal_condition)
+                     : "");
+    fmt::print("study written to {}/study.csv, study.png, study.svg\n", command.output_directory);
+  }
+  if (!table.all_converged()) {
+    fmt::print(stderr, "formflow: NOT CONVERGED: some rungs of the study did not converge; they "
+                       "are marked in {}/study.csv (stop_reason) and study.png\n",
+               command.output_directory);
+    return NotConverged;
+  }
+  return Ok;
+}
+
+}  // namespace formflow::app

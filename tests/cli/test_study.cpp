@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// `formflow study`: files written on success, exit 2 with nothing written on bad input,
+// exit 3 with marked files when a rung does not converge.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class StudyCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    scratch_ = fs::temp_directory_path() /
+               ("formflow-study-" + std::string(info->name()) + "-" + std::to_string(getpid()));
+    fs::remove_all(scratch_);
+    fs::create_directories(scratch_);
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  /// Runs `formflow study ARGS -o OUT`; returns the exit code, stderr in `err_`.
+  int study(const std::string& arguments) {
+    const fs::path err = scratch_ / "stderr.txt";
+    const std::string command = "'" + std::string(FORMFLOW_BINARY) + "' study " + arguments +
+                                " -q -o '" + output().string() + "' > /dev/null 2> '" +
+                                err.string() + "'";
+    const int status = std::system(command.c_str());
+    std::ifstream stream(err);
+    std::ostringstream text;
+    text << stream.rdbuf();
+    err_ = text.str();
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  fs::path output() const { return scratch_ / "out"; }
+  std::string csv() const {
+    std::ifstream stream(output() / "study.csv");
+    std::ostringstream text;
+    text << stream.rdbuf();
+    return text.str();
+  }
+
+  fs::path scratch_;
+  std::string err_;
+};
+
+const std::string manufactured = "--set verification.solution=smooth --set mesh.element=Q1 "
+                                 "--set integration.volumetric=1 --set material.alpha=1";
+
+TEST_F(StudyCommand, ManufacturedLadderWritesTableAndPictures) {
+  ASSERT_EQ(study("--vary mesh.size=1/4,1/8,1/16 " + manufactured), 0) << err_;
+  for (const char* file : {"study.csv", "study.png", "study.svg"})
+    EXPECT_TRUE(fs::exists(output() / file)) << file;
+  const std::string table = csv();
+  EXPECT_EQ(table.rfind("key,value,parameter,dofs,", 0), 0u);
+  EXPECT_NE(table.find("mesh.size,1/16,0.0625,"), std::string::npos) << table;
+  EXPECT_NE(table.find(",converged,"), std::string::npos);
+}
+
+TEST_F(StudyCommand, BadInputWritesNothing) {
+  EXPECT_EQ(study("--vary mesh.sise=1,0.5"), 2);
+  EXPECT_NE(err_.find("did you mean `mesh.size`?"), std::string::npos) << err_;
+  EXPECT_EQ(study("--vary mesh.element=1,2"), 2);
+  EXPECT_NE(err_.find("numeric key"), std::string::npos) << err_;
+  EXPECT_EQ(study("--vary mesh.size=1"), 2);
+  EXPECT_NE(err_.find("at least two values"), std::string::npos) << err_;
+  EXPECT_EQ(study("--vary mesh.size=1,0.3"), 2);  // 0.3 does not fit the geometry
+  EXPECT_NE(err_.find("mesh.size"), std::string::npos) << err_;
+  EXPECT_EQ(study("--vary penalty.d=1e-3,x/2"), 2);
+  EXPECT_EQ(study("--vary mesh.size=1,0.5 --set penalty.d=-1"), 2);
+  EXPECT_FALSE(fs::exists(output()));
+}
+
+TEST_F(StudyCommand, NonConvergedRungGivesExitThreeAndIsMarked) {
+  EXPECT_EQ(study("--vary mesh.size=2.5,5 --set solver.max_iterations=2"), 3);
+  EXPECT_NE(err_.find("NOT CONVERGED"), std::string::npos) << err_;
+  EXPECT_NE(csv().find(",max_iterations,"), std::string::npos) << csv();
+  EXPECT_TRUE(fs::exists(output() / "study.png"));
+}
+
+}  // namespace

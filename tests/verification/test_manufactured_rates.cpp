@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// Theorem 4.1 for smooth solutions: ‖u − u_h‖_V = O(h^l), ‖u − u_h‖_L2 = O(h^(l+1)) for Q_l,
+// on uniform and distorted (non-affine) meshes, constant viscosity and the law (5.4).
+#include "support/approx.hpp"
+#include "verification/verification_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <tuple>
+
+namespace formflow {
+namespace {
+
+using Parameters = std::tuple<fem::ElementKind, mesh::Distortion, bool>;
+
+class ManufacturedRates : public ::testing::TestWithParam<Parameters> {};
+
+TEST_P(ManufacturedRates, ObservedOrdersMatchTheoremOnFinestPair) {
+  const auto [element, distortion, nonlinear] = GetParam();
+  const int order = fem::element_order(element);
+  // Three rungs with ratio 2, small enough to run in about a second and fine
+  // enough to be in the asymptotic range (docs/verification.md shows longer ladders).
+  const std::vector<Real> sizes =
+      order == 1 ? std::vector<Real>{1.0 / 8, 1.0 / 16, 1.0 / 32} : std::vector<Real>{1.0 / 4, 1.0 / 8, 1.0 / 16};
+  const post::StudyTable table = testing::mesh_ladder(sizes, [&](Real size) {
+    return testing::manufactured_case(element, size, distortion, nonlinear);
+  });
+  ASSERT_TRUE(table.all_converged());
+  for (std::size_t k = 1; k < table.rungs.size(); ++k) {
+    EXPECT_LT(table.rungs[k].error->v_norm, table.rungs[k - 1].error->v_norm);
+    EXPECT_LT(table.rungs[k].error->l2, table.rungs[k - 1].error->l2);
+  }
+  const post::StudyRung& finest = table.rungs.back();
+  ASSERT_TRUE(finest.order_v && finest.order_l2);
+  // The criterion: within 0.15 of the theoretical order on the finest pair.
+  EXPECT_NEAR(*finest.order_v, order, 0.15);
+  // One combination is still pre-asymptotic in L2 at h = 1/32 (observed 1.63,
+  // reaching 1.89 only at h = 1/128; docs/verification.md): its L2 order is
+  // asserted on that longer ladder in tests/long/test_manufactured_long.cpp.
+  const bool l2_needs_longer_ladder =
+      element == fem::ElementKind::Q1 && distortion == mesh::Distortion::Smooth && nonlinear;
+  if (!l2_needs_longer_ladder) {
+    EXPECT_NEAR(*finest.order_l2, order + 1, 0.15);
+  }
+}
+
+std::string name_of(const ::testing::TestParamInfo<Parameters>& info) {
+  const auto [element, distortion, nonlinear] = info.param;
+  const char* mesh = distortion == mesh::Distortion::None     ? "Uniform"
+                     : distortion == mesh::Distortion::Smooth ? "Smooth"
+                                                              : "Random";
+  return std::string(fem::element_name(element)) + mesh + (nonlinear ? "PowerLaw" : "Constant");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Theorem41, ManufacturedRates,
+    ::testing::Combine(::testing::Values(fem::ElementKind::Q1, fem::ElementKind::Q2),
+                       ::testing::Values(mesh::Distortion::None, mesh::Distortion::Smooth,
+                                         mesh::Distortion::Random),
+                       ::testing::Bool()),
+    name_of);
+
+}  // namespace
+}  // namespace formflow
