@@ -14,11 +14,6 @@ for k in 1 2 4 8 16; do
       --benchmark_report_aggregates_only=true \
       --benchmark_out="bench/results/${name}_${k}.json" --benchmark_out_format=json
   done
-# Secant vs Newton, whole solves: method_solve/k/10μ/method (0 secant, 1 Newton).
-for k in 1 2 4 8 16; do
-  "$build/bench/formflow_bench" --benchmark_filter="^method_solve/${k}/" \
-    --benchmark_out="bench/results/method_solve_${k}.json" --benchmark_out_format=json
-done
 done
 # Secant vs Newton, whole solves: method_solve/k/10μ/method (0 secant, 1 Newton).
 for k in 1 2 4 8 16; do
