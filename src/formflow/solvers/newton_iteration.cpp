@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The Newton loop: secant start, tangent steps with a line search, secant fallback.
 #include "formflow/solvers/newton_iteration.hpp"
+#include "formflow/solvers/stop_rule.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,7 +14,6 @@ namespace formflow::solvers {
 namespace {
 
 /// A relative change this large means the iterates run away, not converge (as in secant).
-constexpr Real divergence_threshold = 1e6;
 /// The line search stops once |δ·R(u + tδ)| ≤ this × |δ·R(u)| (a Wolfe-type curvature test).
 constexpr Real line_search_slope_ratio = 0.5;
 constexpr int max_line_search_steps = 8;
@@ -182,16 +182,9 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     outcome.velocity = std::move(*next);
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
-    if (!std::isfinite(change) || !std::isfinite(record.pressure)) {
-      outcome.stop_reason = StopReason::NonFinite;
-      return outcome;
-    }
-    if (step_change > divergence_threshold) {
-      outcome.stop_reason = StopReason::Diverged;
-      return outcome;
-    }
-    if (change < control.tolerance) {
-      outcome.stop_reason = StopReason::Converged;
+    if (const auto stop = stop_after_iteration(change, step_change, record.pressure,
+                                             control.tolerance)) {
+      outcome.stop_reason = *stop;
       return outcome;
     }
   }

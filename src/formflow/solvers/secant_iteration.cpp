@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The secant-modulus loop with its stop reasons.
 #include "formflow/solvers/secant_iteration.hpp"
+#include "formflow/solvers/stop_rule.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -10,7 +11,6 @@ namespace formflow::solvers {
 namespace {
 
 /// A relative change this large means the iterates run away, not converge.
-constexpr Real divergence_threshold = 1e6;
 
 /// Assembles K(w), factorises and solves; returns the full velocity or a stop reason.
 template <int dim>
@@ -83,16 +83,9 @@ SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, Lin
     outcome.velocity = std::move(next);
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
-    if (!std::isfinite(change) || !std::isfinite(record.pressure)) {
-      outcome.stop_reason = StopReason::NonFinite;
-      return outcome;
-    }
-    if (change > divergence_threshold) {
-      outcome.stop_reason = StopReason::Diverged;
-      return outcome;
-    }
-    if (change < control.tolerance) {
-      outcome.stop_reason = StopReason::Converged;
+    if (const auto stop = stop_after_iteration(change, change, record.pressure,
+                                             control.tolerance)) {
+      outcome.stop_reason = *stop;
       return outcome;
     }
   }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Secant steps around Uzawa multiplier updates that reuse one factorisation.
 #include "formflow/solvers/uzawa_iteration.hpp"
+#include "formflow/solvers/stop_rule.hpp"
 
 #include "formflow/core/error.hpp"
 
@@ -11,7 +12,6 @@ namespace formflow::solvers {
 
 namespace {
 
-constexpr Real divergence_threshold = 1e6; // as in secant_iteration.cpp
 
 struct UzawaStep {
   std::optional<StopReason> stop;
@@ -108,16 +108,9 @@ uzawa_secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolve
     outcome.history.push_back(record);
     if (on_iteration)
       on_iteration(record);
-    if (!std::isfinite(change) || !std::isfinite(record.pressure)) {
-      outcome.stop_reason = StopReason::NonFinite;
-      return outcome;
-    }
-    if (change > divergence_threshold) {
-      outcome.stop_reason = StopReason::Diverged;
-      return outcome;
-    }
-    if (change < control.tolerance && step.constraints_converged) {
-      outcome.stop_reason = StopReason::Converged;
+    if (const auto stop = stop_after_iteration(change, change, record.pressure,
+                                             control.tolerance, step.constraints_converged)) {
+      outcome.stop_reason = *stop;
       return outcome;
     }
   }
