@@ -65,10 +65,11 @@ int run_case(const Options& options) {
     return NotConverged;
   }
   if (show)
-    fmt::print("Nonlinear solve converged due to relative change < {:g}, iterations {}\n"
+    fmt::print("Nonlinear solve ({}) converged due to relative change < {:g}, iterations {}\n"
                "pressure: ram reaction {:.6f}  power balance {:.6f}  total power {:.6f}  "
                "mean -sigma_H near ram {:.6f}\nresults written to {}\n",
-               case_.solver.tolerance, results.iterations, results.pressure.ram_reaction,
+               results.method, case_.solver.tolerance, results.iterations,
+               results.pressure.ram_reaction,
                results.pressure.power_balance, results.pressure.total_power,
                results.pressure.mean_hydrostatic_near_ram, options.output_directory);
   if (show && simulation.errors)

@@ -78,15 +78,18 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
     results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+    results.method = "augmented-lagrangian friction around secant";
   } else if (constraint_multipliers && constraint_multipliers->needs_uzawa()) {
     outcome = solvers::uzawa_secant_iteration(*problem, *solver, case_.solver, on_iteration,
                                               results.timing);
+    results.method = "uzawa around secant";
   } else if (case_.solver.method == solvers::NonlinearMethod::Newton && !problem->axisymmetric() &&
              case_.formulation.type == assembly::FormulationType::Penalty) {
     // Newton's tangent has neither hoop terms nor the condensed mixed pressure yet:
     // axisymmetric and mixed cases run the secant iteration.
     outcome =
         solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+    results.method = "newton";
   } else {
     outcome =
         solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);

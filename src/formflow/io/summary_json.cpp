@@ -107,6 +107,7 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["converged"] = results.converged();
   out["stop_reason"] = std::string(solvers::stop_reason_name(results.stop_reason));
   out["iterations"] = results.iterations;
+  out["method"] = results.method;
   out["pressure"] = pressure_json(case_, results);
   out["power"] = power_json(results.power);
   out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;
