@@ -117,14 +117,18 @@ Axes contact_axes(const std::vector<post::ContactSample>& contact) {
            contact.back().arc_length,
            false,
            {},
-           "arc length s along Γ_{3}, from the ram end of the container wall"},
+           "arc length s along Γ_{3}, from its end nearest the rear (ram side)"},
       Axis{low < 0 ? low - pad : 0.0, high + 5 * pad, false, {}, "stress [units of σ_{p}]"});
 }
 
 } // namespace
 
 void draw_contact(const Canvas& canvas, const PictureData& data) {
-  draw_title(canvas, "Contact stresses along the container and die (Γ_{3})",
+  // In drawing the container wall is free (Γ2): Γ3 is the die alone.
+  const bool drawing = data.case_.process.type == physics::ProcessType::Drawing;
+  draw_title(canvas,
+             drawing ? "Contact stresses along the die (Γ_{3})"
+                     : "Contact stresses along the container and die (Γ_{3})",
              run_description(data.case_, data.results));
   const auto& contact = data.results.contact;
   if (contact.empty()) {
