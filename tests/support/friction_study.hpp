@@ -39,15 +39,7 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
   FrictionSolve solve;
   solve.mesh = std::make_unique<mesh::Mesh<2>>(
       mesh::make_channel_mesh(case_.geometry, case_.mesh_size, fem::element_order(case_.element)));
-  assembly::ProblemSettings settings;
-  settings.process = case_.process;
-  settings.law = case_.material;
-  settings.viscous_strain = case_.viscous_strain;
-  settings.penalty = case_.penalty;
-  settings.friction = case_.friction;
-  settings.volumetric_points = case_.volumetric_points;
-  settings.initial_rate = case_.solver.initial_rate;
-  solve.problem = std::make_unique<assembly::FormingProblem<2>>(*solve.mesh, settings);
+  solve.problem = std::make_unique<assembly::FormingProblem<2>>(*solve.mesh, app::problem_settings(case_));
   auto solver = solvers::make_cholmod_solver();
   PhaseTimes times;
   if (solve.problem->has_exact_friction()) {

@@ -14,9 +14,7 @@
 
 namespace formflow::app {
 
-namespace {
-
-assembly::ProblemSettings settings_of(const io::Case& case_) {
+assembly::ProblemSettings problem_settings(const io::Case& case_) {
   assembly::ProblemSettings settings;
   settings.process = case_.process;
   settings.law = case_.material;
@@ -28,10 +26,6 @@ assembly::ProblemSettings settings_of(const io::Case& case_) {
   settings.symmetry = case_.symmetry;
   return settings;
 }
-
-}  // namespace
-
-assembly::ProblemSettings problem_settings(const io::Case& case_) { return settings_of(case_); }
 
 Real condition_at(const assembly::FormingProblem<2>& problem, const VectorX& u) {
   assembly::LinearSystem system = problem.plan().make_system();
@@ -53,7 +47,7 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   std::unique_ptr<assembly::FormingProblem<2>> problem;
   {
     ScopedTimer timer(results.timing, "setup");
-    problem = std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, settings_of(case_));
+    problem = std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, problem_settings(case_));
   }
   // Mixed formulation and exact constraints (issue 5): pressures condensed cell
   // by cell keep the velocity system SPD, so CHOLMOD serves every formulation.

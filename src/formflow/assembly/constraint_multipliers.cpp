@@ -77,7 +77,7 @@ void ConstraintMultipliers<dim>::add_contact_terms(Index first_point,
                                                    const fem::FacetValues<dim>& values,
                                                    MatrixX& local_matrix, VectorX& local_load) {
   const int n = static_cast<int>(values.shape(0).size());
-  VectorX normal_row(n * dim);
+  CellVector normal_row(n * dim);
   for (int q = 0; q < values.n_points(); ++q) {
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < dim; ++i)

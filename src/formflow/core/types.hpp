@@ -21,5 +21,8 @@ using Tensor3 = Eigen::Matrix<Real, 3, 3>;
 
 using VectorX = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
 using MatrixX = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+/// A row over one cell's local dofs: at most 27 nodes × 3 components (Q2 hexahedron),
+/// so kernels keep it on the stack instead of allocating per cell or point.
+using CellVector = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 81, 1>;
 
 }  // namespace formflow

@@ -13,7 +13,7 @@ void add_hoop_viscous_term(const fem::CellValues<2>& values, std::span<const Rea
   const Real share = strain == physics::ViscousStrain::Deviatoric ? 1.0 / 3.0 : 0.0;
   for (int q = 0; q < values.n_points(); ++q) {
     const auto& grad = values.gradients(q);
-    const VectorX hoop = values.shape(q) / values.point(q)[1];  // φ_a/r
+    const CellVector hoop = values.shape(q) / values.point(q)[1];  // φ_a/r
     const Real factor = 2.0 / 3.0 * viscosity[q] * values.JxW(q);
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b) {
@@ -28,7 +28,7 @@ void add_hoop_viscous_term(const fem::CellValues<2>& values, std::span<const Rea
 void add_volumetric_penalty_axisymmetric(const fem::CellValues<2>& values, Real d,
                                          MatrixX& local_matrix) {
   const int n_local = values.n_nodes() * 2;
-  VectorX divergence(n_local);
+  CellVector divergence(n_local);
   for (int q = 0; q < values.n_points(); ++q) {
     const auto& grad = values.gradients(q);
     const Real radius = values.point(q)[1];

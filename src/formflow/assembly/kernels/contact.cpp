@@ -7,7 +7,7 @@ namespace formflow::assembly {
 template <int dim>
 void add_contact_penalty(const fem::FacetValues<dim>& values, Real d_n, MatrixX& local_matrix) {
   const int n = static_cast<int>(values.shape(0).size());
-  VectorX normal_row(n * dim);
+  CellVector normal_row(n * dim);
   for (int q = 0; q < values.n_points(); ++q) {
     // u_N of the basis function φ_a e_i is φ_a n_i.
     for (int a = 0; a < n; ++a)

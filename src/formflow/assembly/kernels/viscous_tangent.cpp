@@ -11,7 +11,7 @@ void add_viscous_tangent(const fem::CellValues<dim>& values, std::span<const Ten
                          std::span<const Tensor3> duals, std::span<const Real> a,
                          std::span<const Real> b, MatrixX& local_matrix) {
   const int n = values.n_nodes();
-  VectorX g(n * dim), h(n * dim);
+  CellVector g(n * dim), h(n * dim);
   for (int q = 0; q < values.n_points(); ++q) {
     if (a[q] == 0.0 && b[q] == 0.0) continue;
     const Tensor2<dim> dev = deviators[q].template topLeftCorner<dim, dim>();
