@@ -65,6 +65,25 @@ struct NewtonDuals {
   void clear() { stress.clear(), slip.clear(); }
 };
 
+/// The unsymmetric part of the Newton Jacobian (assembly/newton_system.cpp), applied
+/// matrix free; the symmetric rest is the assembled tangent.
+///  * the paper's full-ε̇ a-form: ∫ c ε̇_V(v) (ė(u):ε̇(δu)) dx, kept per full-rule
+///    point where c ≠ 0 as c·JxW, the divergence row ε̇_V(φ) and the row
+///    ė(u):ε̇(φ) over the cell's local dofs (a·dim + i);
+///  * the nonlocal friction threshold: ∫_Γ3 dτ_f[δu] (u_T/s)·v_T dΓ with
+///    dτ_f = μ_f dσ̄_N where σ̄_N > 0, kept per Γ3 point as μ_f u_T/s (0 elsewhere).
+template <int dim>
+struct UnsymmetricTangent {
+  int n_local = 0;
+  std::vector<Index> cells;         ///< cell of each kept point
+  std::vector<Real> coefficients;   ///< c·JxW per kept point
+  std::vector<Real> rows;           ///< per kept point: divergence row, then ė(u) row
+  std::vector<Point<dim>> threshold_slip;  ///< per Γ3 point (contact_state() order)
+  bool has_friction = false;        ///< some threshold_slip ≠ 0
+  void clear() { cells.clear(), coefficients.clear(), rows.clear(), threshold_slip.clear(), has_friction = false; }
+  bool empty() const { return cells.empty() && !has_friction; }
+};
+
 /// A volume load f(x) per unit volume (manufactured solutions): adds ∫ f·v dx to F.
 template <int dim>
 using BodyForce = std::function<Point<dim>(const Point<dim>&)>;
@@ -89,13 +108,23 @@ class FormingProblem {
   /// in contact_state() order, to be frozen during one Newton step.
   std::vector<Real> friction_thresholds(const VectorX& w) const;
 
-  /// Newton (assembly/newton_system.cpp): the secant system K(u), F with τ_f frozen
-  /// at `thresholds`, so that K(u)u − F is the residual at `u` (full dof vector
-  /// with the prescribed values), and, when `tangent` is given, its Newton tangent
-  /// built with `duals` (same pattern; its rhs is not meaningful).
+  /// Newton (assembly/newton_system.cpp), one cell loop at `u` (full dof vector
+  /// with the prescribed values) with τ_f frozen at `thresholds`: the internal
+  /// force f(u) = K(u) u on every dof (free rows: the residual R(u) of eq. 3.19;
+  /// prescribed rows: the reactions); when `tangent` is given, the symmetric part
+  /// of the Jacobian built with `duals` (the pattern of the secant system; its rhs
+  /// is not meaningful), and when `coupling` is given, the unsymmetric rest (the
+  /// full-ε̇ term and dτ_f; empty for the deviatoric form without friction).
+  /// Without `tangent` no matrix is built: a residual costs one pass over the
+  /// quadrature points (the line search). The exact residual has thresholds = τ_f(u).
   void assemble_newton(const VectorX& u, std::span<const Real> thresholds,
-                       const NewtonDuals<dim>& duals, LinearSystem& secant,
-                       LinearSystem* tangent) const;
+                       const NewtonDuals<dim>& duals, VectorX& internal_force,
+                       LinearSystem* tangent = nullptr,
+                       UnsymmetricTangent<dim>* coupling = nullptr) const;
+
+  /// y_f += N x_f for the coupling N of assemble_newton (free dof vectors).
+  void apply_coupling(const UnsymmetricTangent<dim>& coupling, const VectorX& x_free,
+                      VectorX& y_free) const;
 
   /// Newton (assembly/newton_system.cpp): the duals after the full step `step`
   /// from `u`, the iterate being `next`: Newton's update of w = ν ė and of
@@ -103,6 +132,14 @@ class FormingProblem {
   /// tangent positive semi-definite; w = ν ė where the law is linear.
   void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
                     NewtonDuals<dim>& duals) const;
+
+  /// Newton (assembly/newton_system.cpp): the duals after a secant step from
+  /// `previous` to `next`: the stress that step balanced, w = ν(ε̄̇(previous)) ė(next),
+  /// and the slip direction u_T(next)/s(previous), with the caps of update_duals
+  /// (previous = nullptr: the constant-viscosity start, w = ν(initial_rate) ė, λ = 0).
+  /// Where the rate has collapsed (near-rigid zones) w stays far below the yield
+  /// stress and the tangent stays close to the secant matrix there.
+  void secant_duals(const VectorX* previous, const VectorX& next, NewtonDuals<dim>& duals) const;
 
   /// Γ3 quadrature-point state for the velocity `u` (full dof vector); with exact
   /// friction the traction is proj(λ_T + r u_T) for the given (or zero) multipliers.
@@ -117,6 +154,8 @@ class FormingProblem {
 
   /// Process force: the summed reaction K_c· u − F_c on the driven dofs.
   Real driven_force(const LinearSystem& system, const VectorX& u) const;
+  /// The same from the internal force f(u) of assemble_newton (no loads there).
+  Real driven_force(const VectorX& internal_force) const;
   /// Mixed formulation and exact constraints (issue 5): the pressure term and
   /// the contact term come from `multipliers` (not owned; may be null = the
   /// penalty terms of eq. 3.8). Assembly records each cell's augmentation in it.

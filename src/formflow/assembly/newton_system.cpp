@@ -17,8 +17,10 @@
 #include "formflow/assembly/forming_problem.hpp"
 
 #include "formflow/assembly/kernels/kernels.hpp"
+#include "formflow/assembly/kernels/residual_kernels.hpp"
 #include "formflow/assembly/kernels/tangent_kernels.hpp"
 #include "formflow/core/error.hpp"
+#include "formflow/fem/dof_map.hpp"
 #include "formflow/physics/kinematics.hpp"
 
 namespace formflow::assembly {
@@ -33,13 +35,19 @@ std::vector<Real> FormingProblem<dim>::friction_thresholds(const VectorX& w) con
 
 template <int dim>
 void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real> thresholds,
-                                          const NewtonDuals<dim>& duals, LinearSystem& secant,
-                                          LinearSystem* tangent) const {
-  // Plane strain with regularised friction only: no hoop terms, no multipliers here.
-  FF_ASSERT(!axisymmetric() && !has_exact_friction() && !multipliers_,
+                                          const NewtonDuals<dim>& duals, VectorX& internal_force,
+                                          LinearSystem* tangent, UnsymmetricTangent<dim>* coupling) const {
+  // Plane strain with regularised friction only: no hoop terms, no multipliers, no loads.
+  FF_ASSERT(!axisymmetric() && !has_exact_friction() && !multipliers_ && !body_force_,
             "Newton covers the plane regularised penalty problem");
-  ScatterPlan::clear(secant);
+  FF_ASSERT(!coupling || tangent, "the coupling is part of the tangent");
+  internal_force.setZero(n_dofs());
   if (tangent) ScatterPlan::clear(*tangent);
+  const bool full_strain = settings_.viscous_strain == physics::ViscousStrain::Full;
+  if (coupling) {
+    coupling->clear();
+    coupling->n_local = mesh_.nodes_per_cell() * dim;
+  }
   std::vector<ContactPoint<dim>> state = contact_state(u);
   const bool with_friction = settings_.friction.mu > 0;
   for (std::size_t k = 0; k < state.size(); ++k) {
@@ -47,17 +55,29 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
     state[k].friction_weight = physics::friction_weight(
         thresholds[k], state[k].tangential_velocity.norm(), settings_.friction.d_t);
   }
+  if (coupling && with_friction) {
+    // dτ_f = μ_f dσ̄_N where τ_f > 0 (its own σ̄_N at u, not the frozen thresholds).
+    const std::vector<ContactPoint<dim>> own = contact_state(u);
+    coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      if (own[k].friction_threshold <= 0) continue;
+      const Real s = std::sqrt(own[k].tangential_velocity.squaredNorm() +
+                               settings_.friction.d_t * settings_.friction.d_t);
+      coupling->threshold_slip[k] = settings_.friction.mu / s * own[k].tangential_velocity;
+      coupling->has_friction = true;
+    }
+  }
 
   fem::CellValues<dim> full_values(mesh_.order, full_rule_);
   fem::CellValues<dim> volumetric_values(mesh_.order, volumetric_rule_);
   fem::FacetValues<dim> facet_values(mesh_.order, facet_rule_);
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   const int n_local = mesh_.nodes_per_cell() * dim;
-  MatrixX local_secant(n_local, n_local), local_tangent(n_local, n_local);
-  VectorX unused_load = VectorX::Zero(n_local);  // loads come only from mixed multipliers
+  MatrixX local_tangent(n_local, n_local);
+  CellVector local_force(n_local), divergence_row(n_local), deviator_row(n_local);
   const int n_q = full_rule_.size(), n_face_q = facet_rule_.size();
-  std::vector<Real> viscosity(n_q), coefficient_a(n_q), coefficient_b(n_q);
-  std::vector<Tensor3> deviators(n_q), cell_duals(n_q);
+  std::vector<Real> viscosity(n_q), coefficient_a(n_q), coefficient_b(n_q), weight(n_face_q);
+  std::vector<Tensor3> rates(n_q), deviators(n_q), cell_duals(n_q);
   std::vector<Point<dim>> slip(n_face_q), dual_slip(n_face_q);
   std::vector<Real> friction_coefficient(n_face_q);
 
@@ -66,11 +86,12 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
     full_values.reinit(coordinates);
     volumetric_values.reinit(coordinates);
     for (int q = 0; q < n_q; ++q) {
-      const Tensor3 rate = physics::strain_rate<dim>(
+      rates[q] = physics::strain_rate<dim>(
           physics::velocity_gradient<dim>(velocities, full_values.gradients(q)));
-      const Real eps_bar_dot = physics::equivalent_strain_rate(rate);
+      const Real eps_bar_dot = physics::equivalent_strain_rate(rates[q]);
       viscosity[q] = settings_.law.secant_viscosity(eps_bar_dot);
-      deviators[q] = physics::deviator(rate);
+      if (!tangent) continue;
+      deviators[q] = physics::deviator(rates[q]);
       cell_duals[q] = duals.empty() ? Tensor3(viscosity[q] * deviators[q]) : duals.stress[cell * n_q + q];
       // a = (4/9) σ_p′/ε̄̇², b = −(4/9)/ε̄̇² (kernels/tangent_kernels.hpp); at ε̄̇ = 0 the
       // law is on its linear branch and the secant matrix is already the tangent.
@@ -78,34 +99,130 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       coefficient_a[q] = scale * settings_.law.yield_stress_derivative(eps_bar_dot);
       coefficient_b[q] = -scale;
     }
-    local_secant.setZero();
-    add_viscous_term<dim>(full_values, viscosity, settings_.viscous_strain, local_secant);
-    add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_secant);
-    assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_secant,
-                     unused_load);
-    plan_->scatter(cell, local_secant, constraints_.values, secant);
-    if (!tangent) continue;
-
-    local_tangent = local_secant;
-    add_viscous_tangent<dim>(full_values, deviators, cell_duals, coefficient_a, coefficient_b,
-                             local_tangent);
-    for (Index k = cell_contact_offsets_[cell]; with_friction && k < cell_contact_offsets_[cell + 1];
-         ++k) {
-      const Index position = cell_contact_[k];
-      facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
-      for (int q = 0; q < n_face_q; ++q) {
-        const Index k = position * n_face_q + q;
-        const ContactPoint<dim>& point = state[k];
-        const Real slip_speed = point.tangential_velocity.norm();
-        const Real s2 = slip_speed * slip_speed + settings_.friction.d_t * settings_.friction.d_t;
-        slip[q] = point.tangential_velocity;
-        dual_slip[q] = duals.empty() ? slip[q] : Point<dim>(std::sqrt(s2) * duals.slip[k]);
-        friction_coefficient[q] = point.friction_threshold / (s2 * std::sqrt(s2));  // τ_f/s³
+    local_force.setZero(n_local);
+    const Eigen::Map<const VectorX> local_velocity(velocities.data(), n_local);
+    if (!tangent) {
+      // Residual only (line search): from the stresses, no local matrix.
+      add_viscous_force<dim>(full_values, viscosity, rates, settings_.viscous_strain, local_force);
+      add_volumetric_force<dim>(volumetric_values, settings_.penalty.d, velocities, local_force);
+      for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
+        const Index position = cell_contact_[k];
+        facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+        for (int q = 0; q < n_face_q && with_friction; ++q)
+          weight[q] = state[position * n_face_q + q].friction_weight;
+        add_contact_force<dim>(facet_values, settings_.penalty.d_n, velocities,
+                               with_friction ? std::span<const Real>(weight) : std::span<const Real>(),
+                               local_force);
       }
-      add_friction_tangent<dim>(facet_values, slip, dual_slip, friction_coefficient, local_tangent);
+    } else {
+      // The secant matrix K_e(u) gives the residual K_e u_e; the tangent adds to it.
+      local_tangent.setZero();
+      add_viscous_term<dim>(full_values, viscosity, settings_.viscous_strain, local_tangent);
+      add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_tangent);
+      VectorX unused_load = VectorX::Zero(n_local);
+      assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
+                       local_tangent, unused_load);
+      local_force.noalias() = local_tangent * local_velocity;
+      add_viscous_tangent<dim>(full_values, deviators, cell_duals, coefficient_a, coefficient_b,
+                               local_tangent);
+      for (Index k = cell_contact_offsets_[cell]; with_friction && k < cell_contact_offsets_[cell + 1];
+           ++k) {
+        const Index position = cell_contact_[k];
+        facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+        for (int q = 0; q < n_face_q; ++q) {
+          const ContactPoint<dim>& point = state[position * n_face_q + q];
+          const Real slip_speed = point.tangential_velocity.norm();
+          const Real s2 = slip_speed * slip_speed + settings_.friction.d_t * settings_.friction.d_t;
+          slip[q] = point.tangential_velocity;
+          dual_slip[q] = duals.empty() ? slip[q]
+                                       : Point<dim>(std::sqrt(s2) * duals.slip[position * n_face_q + q]);
+          friction_coefficient[q] = point.friction_threshold / (s2 * std::sqrt(s2));  // τ_f/s³
+        }
+        add_friction_tangent<dim>(facet_values, slip, dual_slip, friction_coefficient, local_tangent);
+      }
+      plan_->scatter(cell, local_tangent, constraints_.values, *tangent);
     }
-    plan_->scatter(cell, local_tangent, constraints_.values, *tangent);
+    for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
+      internal_force.template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, cell), 0)) +=
+          local_force.template segment<dim>(a * dim);
+
+    // The full-ε̇ form's unsymmetric part (primal: exact at the solution, where the
+    // duals are ν ė): ⅔ ν′ dε̄̇[δu] · ⅓ ε̇_V(u) ε̇_V(v) = (a + b ν) ⅓ ε̇_V(u) ε̇_V(v) g(δu).
+    if (!coupling || !full_strain) continue;
+    for (int q = 0; q < n_q; ++q) {
+      const Real c = (coefficient_a[q] + coefficient_b[q] * viscosity[q]) * rates[q].trace() / 3.0;
+      if (c == 0.0) continue;
+      const auto& grad = full_values.gradients(q);
+      const Tensor2<dim> dev = deviators[q].template topLeftCorner<dim, dim>();
+      for (int node = 0; node < mesh_.nodes_per_cell(); ++node) {
+        divergence_row.template segment<dim>(node * dim) = grad.col(node);
+        deviator_row.template segment<dim>(node * dim) = dev * grad.col(node);
+      }
+      coupling->cells.push_back(cell);
+      coupling->coefficients.push_back(c * full_values.JxW(q));
+      coupling->rows.insert(coupling->rows.end(), divergence_row.data(), divergence_row.data() + n_local);
+      coupling->rows.insert(coupling->rows.end(), deviator_row.data(), deviator_row.data() + n_local);
+    }
   }
+}
+
+template <int dim>
+void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling,
+                                         const VectorX& x_free, VectorX& y_free) const {
+  const int n_local = coupling.n_local, n_nodes = mesh_.nodes_per_cell();
+  std::vector<Index> rows(n_local);
+  CellVector x_local(n_local);
+  Index last_cell = -1;
+  for (std::size_t k = 0; k < coupling.cells.size(); ++k) {
+    const Index cell = coupling.cells[k];
+    if (cell != last_cell) {  // points of one cell are stored together
+      for (int a = 0; a < n_nodes; ++a)
+        for (int i = 0; i < dim; ++i) {
+          const Index row = plan_->free_index(fem::dof_of<dim>(mesh_.cells(a, cell), i));
+          rows[a * dim + i] = row;
+          x_local[a * dim + i] = row >= 0 ? x_free[row] : 0.0;
+        }
+      last_cell = cell;
+    }
+    const Real* divergence = coupling.rows.data() + 2 * k * n_local;
+    const Real* deviator = divergence + n_local;
+    Real g = 0.0;
+    for (int l = 0; l < n_local; ++l) g += deviator[l] * x_local[l];
+    g *= coupling.coefficients[k];
+    for (int l = 0; l < n_local; ++l)
+      if (rows[l] >= 0) y_free[rows[l]] += g * divergence[l];
+  }
+  if (!coupling.has_friction) return;
+
+  // dσ̄_N[x] is the mollified u_N(x)/d_N: contact_state of x itself (it is linear in x).
+  const std::vector<ContactPoint<dim>> change =
+      contact_state(plan_->expand(x_free, VectorX::Zero(n_dofs())));
+  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule_);
+  typename fem::CellValues<dim>::Gradients coordinates, unused;
+  const int n_face_q = facet_rule_.size();
+  for (std::size_t position = 0; position < contact_facets_.size(); ++position) {
+    const mesh::BoundaryFacet& facet = mesh_.facets[contact_facets_[position]];
+    gather(facet.cell, nullptr, coordinates, unused);
+    facet_values.reinit(coordinates, facet.local_face);
+    for (int q = 0; q < n_face_q; ++q) {
+      const std::size_t k = position * n_face_q + q;
+      if (coupling.threshold_slip[k].isZero(0.0)) continue;
+      const Point<dim> traction =
+          (change[k].mean_contact_pressure * facet_values.JxW(q)) * coupling.threshold_slip[k];
+      for (int a = 0; a < n_nodes; ++a)
+        for (int i = 0; i < dim; ++i) {
+          const Index row = plan_->free_index(fem::dof_of<dim>(mesh_.cells(a, facet.cell), i));
+          if (row >= 0) y_free[row] += facet_values.shape(q)[a] * traction[i];
+        }
+    }
+  }
+}
+
+template <int dim>
+Real FormingProblem<dim>::driven_force(const VectorX& internal_force) const {
+  Real force = 0.0;
+  for (Index dof : constraints_.driven_dofs) force += internal_force[dof];
+  return force;
 }
 
 template <int dim>
@@ -175,6 +292,56 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
   }
 }
 
+template <int dim>
+void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& next,
+                                       NewtonDuals<dim>& all_duals) const {
+  const int n_q = full_rule_.size();
+  std::vector<Tensor3>& duals = all_duals.stress;
+  duals.resize(static_cast<std::size_t>(mesh_.n_cells()) * n_q);
+  fem::CellValues<dim> values(mesh_.order, full_rule_);
+  typename fem::CellValues<dim>::Gradients coordinates, previous_velocities, next_velocities;
+  const physics::FlowLaw& law = settings_.law;
+  for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
+    if (previous) gather(cell, previous, coordinates, previous_velocities);
+    gather(cell, &next, coordinates, next_velocities);
+    values.reinit(coordinates);
+    for (int q = 0; q < n_q; ++q) {
+      const auto& grad = values.gradients(q);
+      const Tensor3 next_dev = physics::deviator(
+          physics::strain_rate<dim>(physics::velocity_gradient<dim>(next_velocities, grad)));
+      const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
+      Tensor3& w = duals[cell * n_q + q];
+      if (next_eps <= law.rate1 || next_eps >= law.rate2) {  // linear law: w = ν ė exactly
+        w = law.secant_viscosity(next_eps) * next_dev;
+        continue;
+      }
+      const Real previous_eps =
+          previous ? physics::equivalent_strain_rate(physics::strain_rate<dim>(
+                         physics::velocity_gradient<dim>(previous_velocities, grad)))
+                   : settings_.initial_rate;
+      // The stress the secant solve balanced, ν(uⁿ⁻¹) ė(uⁿ), capped to the yield surface.
+      w = law.secant_viscosity(previous_eps) * next_dev;
+      const Real cap = law.yield_stress(next_eps);
+      const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
+      if (size > cap) w *= cap / size;
+    }
+  }
+  // The slip direction the secant solve used, u_T(uⁿ)/s(uⁿ⁻¹), capped to |λ| ≤ 1.
+  // The constant-viscosity solve had no friction (τ_f(0) = 0): λ = 0 there.
+  const std::vector<ContactPoint<dim>> after = contact_state(next);
+  const std::vector<ContactPoint<dim>> before = previous ? contact_state(*previous) : after;
+  const Real d_t = settings_.friction.d_t;
+  all_duals.slip.assign(after.size(), Point<dim>::Zero());
+  for (std::size_t k = 0; k < after.size() && previous; ++k) {
+    const Real s = std::sqrt(before[k].tangential_velocity.squaredNorm() + d_t * d_t);
+    Point<dim>& lambda = all_duals.slip[k];
+    lambda = after[k].tangential_velocity / s;
+    if (lambda.norm() > 1.0) lambda.normalize();
+  }
+}
+
+template void FormingProblem<2>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<2>&) const;
+template void FormingProblem<3>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<3>&) const;
 template void FormingProblem<2>::update_duals(const VectorX&, const VectorX&, const VectorX&,
                                               NewtonDuals<2>&) const;
 template void FormingProblem<3>::update_duals(const VectorX&, const VectorX&, const VectorX&,
@@ -182,10 +349,16 @@ template void FormingProblem<3>::update_duals(const VectorX&, const VectorX&, co
 template std::vector<Real> FormingProblem<2>::friction_thresholds(const VectorX&) const;
 template std::vector<Real> FormingProblem<3>::friction_thresholds(const VectorX&) const;
 template void FormingProblem<2>::assemble_newton(const VectorX&, std::span<const Real>,
-                                                 const NewtonDuals<2>&, LinearSystem&,
-                                                 LinearSystem*) const;
+                                                 const NewtonDuals<2>&, VectorX&, LinearSystem*,
+                                                 UnsymmetricTangent<2>*) const;
 template void FormingProblem<3>::assemble_newton(const VectorX&, std::span<const Real>,
-                                                 const NewtonDuals<3>&, LinearSystem&,
-                                                 LinearSystem*) const;
+                                                 const NewtonDuals<3>&, VectorX&, LinearSystem*,
+                                                 UnsymmetricTangent<3>*) const;
+template void FormingProblem<2>::apply_coupling(const UnsymmetricTangent<2>&, const VectorX&,
+                                                VectorX&) const;
+template void FormingProblem<3>::apply_coupling(const UnsymmetricTangent<3>&, const VectorX&,
+                                                VectorX&) const;
+template Real FormingProblem<2>::driven_force(const VectorX&) const;
+template Real FormingProblem<3>::driven_force(const VectorX&) const;
 
 }  // namespace formflow::assembly

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The Newton loop: secant start, tangent steps with a line search, secant fallback.
 #include "formflow/solvers/newton_iteration.hpp"
+#include "formflow/solvers/coupled_tangent_solve.hpp"
 #include "formflow/solvers/stop_rule.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -26,11 +29,11 @@ VectorX free_part(const assembly::ScatterPlan& plan, const VectorX& full) {
   return free_values;
 }
 
-/// R_f(u) = K_ff(u) u_f − F_f(u): the residual of eq. (3.19) on the free dofs,
-/// since a(u; u, v) and the friction form are K(u) applied to u itself.
-VectorX residual(const assembly::LinearSystem& secant, const VectorX& free_velocity) {
-  return secant.matrix.selfadjointView<Eigen::Lower>() * free_velocity - secant.rhs;
-}
+/// GMRES on the unsymmetric full-ε̇ Jacobian: the inexact-Newton forcing term
+/// (relative preconditioned residual) and an iteration cap; past the cap the
+/// last GMRES iterate is used (still a descent direction or rejected below).
+constexpr Real krylov_tolerance = 1e-6;
+constexpr int max_krylov_iterations = 30;
 
 /// Working state shared by the steps of one solve.
 template <int dim>
@@ -39,6 +42,8 @@ struct NewtonWork {
   LinearSolver& solver;
   PhaseTimes& times;
   assembly::LinearSystem secant, tangent;
+  assembly::UnsymmetricTangent<dim> coupling;
+  VectorX force;                     ///< internal force K(u)u at the last residual evaluation
   assembly::NewtonDuals<dim> duals;  ///< empty = primal (the exact tangent)
   int factorizations = 0;
 };
@@ -66,18 +71,19 @@ std::optional<StopReason> secant_step(NewtonWork<dim>& work, const VectorX* w, V
 }
 
 /// δ·R(u + t δ) with τ_f frozen: the slope of the potential along δ at t.
-/// Leaves the secant system of the trial point in work.secant.
+/// Leaves the internal force of the trial point in work.force (no matrix is built).
 template <int dim>
 Real slope_at(NewtonWork<dim>& work, const VectorX& velocity, const VectorX& step, Real t,
               std::span<const Real> thresholds, const VectorX& free_step) {
   const VectorX trial = velocity + t * step;
-  work.problem.assemble_newton(trial, thresholds, work.duals, work.secant, nullptr);
-  return free_step.dot(residual(work.secant, free_part(work.problem.plan(), trial)));
+  if (std::getenv("FF_FROZEN")) work.problem.assemble_newton(trial, thresholds, work.duals, work.force); else
+  work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), work.duals, work.force);
+  return free_step.dot(free_part(work.problem.plan(), work.force));
 }
 
 /// One Newton step from `velocity`; std::nullopt when the tangent is not positive
 /// definite or δ is no descent direction (the caller then takes a secant step).
-/// On success work.secant holds K(uⁿ⁺¹) for the reaction force.
+/// On success work.force holds the internal force at uⁿ⁺¹ (for the reaction).
 template <int dim>
 std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocity,
                                    Real& full_change) {
@@ -86,8 +92,10 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   VectorX gradient;
   {
     ScopedTimer timer(work.times, "assembly");
-    work.problem.assemble_newton(velocity, thresholds, work.duals, work.secant, &work.tangent);
-    gradient = residual(work.secant, free_part(plan, velocity));
+    work.problem.assemble_newton(velocity, thresholds, work.duals, work.force, &work.tangent,
+                                 &work.coupling);
+    gradient = free_part(plan, work.force);
+    if (std::getenv("FF_FROZEN")) work.coupling.threshold_slip.clear(), work.coupling.has_friction = false;
   }
   {
     ScopedTimer timer(work.times, "factorization");
@@ -95,9 +103,19 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
     if (!work.solver.factorize(work.tangent.matrix)) return std::nullopt;
   }
   VectorX free_step;
-  {
+  if (work.coupling.empty()) {
     ScopedTimer timer(work.times, "solve");
     if (!work.solver.solve(-gradient, free_step) || !free_step.allFinite()) return std::nullopt;
+  } else {
+    // The full-ε̇ form: J = T + N, N unsymmetric; T's factor preconditions GMRES.
+    ScopedTimer timer(work.times, "krylov");
+    const CouplingProduct coupling = [&](const VectorX& x, VectorX& y) {
+      work.problem.apply_coupling(work.coupling, x, y);
+    };
+    auto ko = solve_coupled_tangent(work.tangent.matrix, coupling, work.solver, -gradient, free_step,
+                          krylov_tolerance, max_krylov_iterations);
+    if (std::getenv("FF_NEWTON_DEBUG")) std::fprintf(stderr, "  gmres it=%d res=%.2e conv=%d\n", ko.iterations, ko.residual, ko.converged);
+    if (!free_step.allFinite()) return std::nullopt;
   }
   const Real slope0 = free_step.dot(gradient);  // = −δᵀJδ < 0 for an SPD tangent
   if (!(slope0 < 0)) return std::nullopt;
@@ -122,6 +140,7 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
       slope_high *= 0.5;
     }
   }
+  if (std::getenv("FF_NEWTON_DEBUG")) std::fprintf(stderr, "  t=%.3g slope0=%.3e slope=%.3e |d|/|u|=%.3e\n", t, slope0, slope, step.norm()/velocity.norm());
   VectorX next = velocity + t * step;
   {
     ScopedTimer dual_timer(work.times, "dual update");
@@ -140,7 +159,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
                                PhaseTimes& times) {
   SecantOutcome outcome;
   NewtonWork<dim> work{problem, solver, times, problem.plan().make_system(),
-                       problem.plan().make_system(), {}, 0};
+                       problem.plan().make_system(), {}, {}, {}, 0};
   outcome.velocity = problem.constraints().values;
   {
     problem.assemble(nullptr, work.secant);
@@ -158,26 +177,35 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
   // divergence); the stop test uses, for a Newton step, the larger of it and the
   // undamped Newton correction, so that a short damped step is never taken for
   // convergence.
-  Real step_change = std::numeric_limits<Real>::infinity();
+  // The first iteration is already a Newton step: from the constant-viscosity
+  // solution, with the stress that solve balanced as the dual (secant_duals), the
+  // tangent is stiff where that stress is below yield, so the step cannot blow
+  // the near-rigid zones apart as the primal tangent (α-soft along ė) does.
+  problem.secant_duals(nullptr, outcome.velocity, work.duals);
+  Real step_change = 0.0;
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start = std::chrono::steady_clock::now();
     std::optional<VectorX> next;
     Real full_change = 0.0;
     if (step_change <= control.newton_start) next = newton_step(work, outcome.velocity, full_change);
+    const bool newton = next.has_value();
     if (!next) {
       next.emplace();
       if (auto stop = secant_step(work, &outcome.velocity, *next)) {
         outcome.stop_reason = *stop;
         return outcome;
       }
-      work.duals.clear();  // after a secant step the dual restarts from w = ν ė
+      // After a secant step the duals restart from the stress it balanced (not
+      // the primal w = ν ė, whose tangent is α-soft along ė in near-rigid zones).
+      problem.secant_duals(&outcome.velocity, *next, work.duals);
     }
     step_change = (*next - outcome.velocity).norm() / next->norm();
     const Real change = std::max(step_change, full_change);
     IterationRecord record;
     record.iteration = iteration;
     record.relative_change = change;
-    record.pressure = problem.driven_force(work.secant, *next) / problem.driven_height();
+    record.pressure = (newton ? problem.driven_force(work.force) : problem.driven_force(work.secant, *next)) /
+                      problem.driven_height();
     record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.velocity = std::move(*next);
     outcome.history.push_back(record);

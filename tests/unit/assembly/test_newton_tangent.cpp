@@ -14,7 +14,9 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <functional>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -246,40 +248,112 @@ TEST(FrictionTangent, MatchesFiniteDifferencesAtFixedThreshold) {
   EXPECT_LE((exact - exact.transpose()).norm(), 1e-14 * exact.norm());
 }
 
-TEST(NewtonSystem, GlobalTangentMatchesFiniteDifferencesOfTheResidual) {
-  // Small extrusion with friction on Γ3; τ_f is frozen (the tangent's definition),
-  // the deviatoric form makes the viscous tangent exact, and d_T is raised so the
-  // friction term is smooth on the scale of the finite-difference step.
-  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
+/// A small extrusion with friction on Γ3 and a velocity that is far from the
+/// solution but keeps the prescribed values; d_T and the penalties are raised so
+/// that the residual is smooth on the scale of the finite-difference step.
+struct SmallExtrusion {
+  mesh::Mesh<2> mesh = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
   assembly::ProblemSettings settings;
-  settings.law = sensitive_law();
-  settings.viscous_strain = physics::ViscousStrain::Deviatoric;
-  settings.friction.mu = 0.2;
-  settings.friction.d_t = 0.05;
-  settings.penalty.d = 0.1;
-  settings.penalty.d_n = 0.1;
-  const assembly::FormingProblem<2> problem(mesh, settings);
-  const assembly::ScatterPlan& plan = problem.plan();
-  VectorX u = problem.constraints().values + 0.3 * random_vector(problem.n_dofs(), 5);
-  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-    if (plan.free_index(dof) < 0) u[dof] = problem.constraints().values[dof];
-  const std::vector<Real> thresholds = problem.friction_thresholds(u);
-  ASSERT_GT(*std::max_element(thresholds.begin(), thresholds.end()), 0.0);
+  std::unique_ptr<assembly::FormingProblem<2>> problem;
+  VectorX u;
 
-  auto free_residual = [&](const VectorX& free_u) {
-    const VectorX full = plan.expand(free_u, problem.constraints().values);
-    assembly::LinearSystem secant = plan.make_system();
-    problem.assemble_newton(full, thresholds, {}, secant, nullptr);
-    return VectorX(secant.matrix.selfadjointView<Eigen::Lower>() * free_u - secant.rhs);
-  };
-  VectorX free_u(plan.n_free());
-  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-    if (plan.free_index(dof) >= 0) free_u[plan.free_index(dof)] = u[dof];
-  assembly::LinearSystem secant = plan.make_system(), tangent = plan.make_system();
-  problem.assemble_newton(u, thresholds, {}, secant, &tangent);
-  const MatrixX exact = MatrixX(assembly::SparseMatrix(tangent.matrix.selfadjointView<Eigen::Lower>()));
-  const MatrixX fd = finite_difference_jacobian(free_residual, free_u, 1e-6);
+  explicit SmallExtrusion(physics::ViscousStrain strain) {
+    settings.law = sensitive_law();
+    settings.viscous_strain = strain;
+    settings.friction.mu = 0.2;
+    settings.friction.d_t = 0.05;
+    settings.penalty.d = 0.1;
+    settings.penalty.d_n = 0.1;
+    problem = std::make_unique<assembly::FormingProblem<2>>(mesh, settings);
+    const assembly::ScatterPlan& plan = problem->plan();
+    u = problem->constraints().values + 0.3 * random_vector(problem->n_dofs(), 5);
+    for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+      if (plan.free_index(dof) < 0) u[dof] = problem->constraints().values[dof];
+  }
+  VectorX free_part(const VectorX& full) const {
+    VectorX free_values(problem->plan().n_free());
+    for (Index dof = 0; dof < problem->plan().n_dofs(); ++dof)
+      if (problem->plan().free_index(dof) >= 0) free_values[problem->plan().free_index(dof)] = full[dof];
+    return free_values;
+  }
+  /// R(u_f) on the free dofs with τ_f frozen at `thresholds` (the residual-only path).
+  VectorX free_residual(const VectorX& free_u, const std::vector<Real>& thresholds) const {
+    VectorX force;
+    problem->assemble_newton(problem->plan().expand(free_u, problem->constraints().values),
+                             thresholds, {}, force);
+    return free_part(force);
+  }
+  /// T + N as a dense matrix over the free dofs.
+  MatrixX jacobian(const std::vector<Real>& thresholds, MatrixX* symmetric_part = nullptr) const {
+    assembly::LinearSystem tangent = problem->plan().make_system();
+    assembly::VolumetricCoupling coupling;
+    VectorX force;
+    problem->assemble_newton(u, thresholds, {}, force, &tangent, &coupling);
+    const MatrixX t = MatrixX(assembly::SparseMatrix(tangent.matrix.selfadjointView<Eigen::Lower>()));
+    if (symmetric_part) *symmetric_part = t;
+    MatrixX j = t;
+    for (Index k = 0; k < j.cols(); ++k) {
+      VectorX column = j.col(k);
+      problem->apply_coupling(coupling, VectorX::Unit(j.cols(), k), column);
+      j.col(k) = column;
+    }
+    return j;
+  }
+};
+
+TEST(NewtonSystem, GlobalTangentMatchesFiniteDifferencesOfTheResidual) {
+  // τ_f is frozen (the tangent's definition); the deviatoric form makes the
+  // symmetric tangent the whole Jacobian (no coupling).
+  const SmallExtrusion extrusion(physics::ViscousStrain::Deviatoric);
+  const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
+  ASSERT_GT(*std::max_element(thresholds.begin(), thresholds.end()), 0.0);
+  MatrixX symmetric;
+  const MatrixX exact = extrusion.jacobian(thresholds, &symmetric);
+  EXPECT_EQ((exact - symmetric).norm(), 0.0);
+  const MatrixX fd = finite_difference_jacobian(
+      [&](const VectorX& free_u) { return extrusion.free_residual(free_u, thresholds); },
+      extrusion.free_part(extrusion.u), 1e-6);
   EXPECT_LE((exact - fd).norm(), fd_tolerance * exact.norm());
+}
+
+TEST(NewtonSystem, FullFormJacobianWithItsUnsymmetricCouplingMatchesFiniteDifferences) {
+  // The paper's full-ε̇ a-form: the symmetric tangent alone misses ⅔ ν′ dε̄̇ ⅓ ε̇_V ε̇_V;
+  // with the coupling the Jacobian is exact, and the coupling is not negligible.
+  const SmallExtrusion extrusion(physics::ViscousStrain::Full);
+  const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
+  MatrixX symmetric;
+  const MatrixX exact = extrusion.jacobian(thresholds, &symmetric);
+  const MatrixX fd = finite_difference_jacobian(
+      [&](const VectorX& free_u) { return extrusion.free_residual(free_u, thresholds); },
+      extrusion.free_part(extrusion.u), 1e-6);
+  EXPECT_LE((exact - fd).norm(), fd_tolerance * exact.norm());
+  EXPECT_GT((symmetric - fd).norm(), 1e3 * fd_tolerance * exact.norm());
+  EXPECT_GT((exact - exact.transpose()).norm(), 1e-6 * exact.norm());
+}
+
+TEST(NewtonSystem, ResidualOnlyAssemblyEqualsTheSecantSystemAppliedToTheVelocity) {
+  // Three routes to K(u)u − F: the secant assembly with τ_f(u), assemble_newton's
+  // matrix-free residual, and its residual from the local secant matrices. The
+  // prescribed rows give the reaction, so the driven force must agree too.
+  for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
+    const SmallExtrusion extrusion(strain);
+    const assembly::FormingProblem<2>& problem = *extrusion.problem;
+    const std::vector<Real> thresholds = problem.friction_thresholds(extrusion.u);
+    assembly::LinearSystem secant = problem.plan().make_system();
+    problem.assemble(&extrusion.u, secant);
+    const VectorX free_u = extrusion.free_part(extrusion.u);
+    const VectorX expected = secant.matrix.selfadjointView<Eigen::Lower>() * free_u - secant.rhs;
+
+    VectorX vector_only, with_tangent;
+    problem.assemble_newton(extrusion.u, thresholds, {}, vector_only);
+    assembly::LinearSystem tangent = problem.plan().make_system();
+    problem.assemble_newton(extrusion.u, thresholds, {}, with_tangent, &tangent);
+    EXPECT_LE((extrusion.free_part(vector_only) - expected).norm(), 1e-12 * expected.norm());
+    EXPECT_LE((vector_only - with_tangent).norm(), 1e-12 * vector_only.norm());
+    const Real reaction = problem.driven_force(secant, extrusion.u);
+    EXPECT_NEAR(problem.driven_force(vector_only), reaction, 1e-12 * std::abs(reaction));
+    EXPECT_GT(std::abs(reaction), 0.0);
+  }
 }
 
 }  // namespace

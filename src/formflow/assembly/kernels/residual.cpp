@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// The residual K(u) u assembled from stresses, without a local matrix (Newton line search).
+#include "formflow/assembly/kernels/residual_kernels.hpp"
+
+namespace formflow::assembly {
+
+namespace {
+
+/// The local vector viewed as dim × n_nodes (column a holds node a's components).
+template <int dim>
+Eigen::Map<Eigen::Matrix<Real, dim, Eigen::Dynamic>> by_node(CellVector& local_force) {
+  return {local_force.data(), dim, local_force.size() / dim};
+}
+
+}  // namespace
+
+// Σ_b K_ab u_b of add_viscous_term is ⅔ ν (Σ_j ε̇_ij ∂_j φ_a − share ε̇_V ∂_i φ_a):
+// with share = ⅓ for the deviatoric form this is ė ∇φ_a (ė_zz meets ε̇_zz(φ) = 0).
+template <int dim>
+void add_viscous_force(const fem::CellValues<dim>& values, std::span<const Real> viscosity,
+                       std::span<const Tensor3> rates, physics::ViscousStrain strain,
+                       CellVector& local_force) {
+  const Real volumetric_share = strain == physics::ViscousStrain::Deviatoric ? 1.0 / 3.0 : 0.0;
+  auto force = by_node<dim>(local_force);
+  for (int q = 0; q < values.n_points(); ++q) {
+    Tensor2<dim> stress = rates[q].template topLeftCorner<dim, dim>();
+    stress.diagonal().array() -= volumetric_share * rates[q].trace();
+    force.noalias() += (2.0 / 3.0 * viscosity[q] * values.JxW(q)) * stress * values.gradients(q);
+  }
+}
+
+template <int dim>
+void add_volumetric_force(const fem::CellValues<dim>& values, Real d,
+                          const typename fem::CellValues<dim>::Gradients& velocities,
+                          CellVector& local_force) {
+  auto force = by_node<dim>(local_force);
+  for (int q = 0; q < values.n_points(); ++q) {
+    const auto& grad = values.gradients(q);
+    const Real divergence = velocities.cwiseProduct(grad).sum();  // Σ_a u_a·∇φ_a
+    force.noalias() += (values.JxW(q) / d * divergence) * grad;
+  }
+}
+
+template <int dim>
+void add_contact_force(const fem::FacetValues<dim>& values, Real d_n,
+                       const typename fem::CellValues<dim>::Gradients& velocities,
+                       std::span<const Real> friction_weight, CellVector& local_force) {
+  auto force = by_node<dim>(local_force);
+  for (int q = 0; q < values.n_points(); ++q) {
+    const Point<dim>& normal = values.normal(q);
+    const Point<dim> velocity = velocities * values.shape(q);
+    const Real normal_velocity = velocity.dot(normal);
+    Point<dim> traction = (normal_velocity / d_n) * normal;
+    if (!friction_weight.empty())
+      traction += friction_weight[q] * (velocity - normal_velocity * normal);
+    force.noalias() += (values.JxW(q) * traction) * values.shape(q).transpose();
+  }
+}
+
+template void add_viscous_force<2>(const fem::CellValues<2>&, std::span<const Real>,
+                                   std::span<const Tensor3>, physics::ViscousStrain, CellVector&);
+template void add_viscous_force<3>(const fem::CellValues<3>&, std::span<const Real>,
+                                   std::span<const Tensor3>, physics::ViscousStrain, CellVector&);
+template void add_volumetric_force<2>(const fem::CellValues<2>&, Real,
+                                      const fem::CellValues<2>::Gradients&, CellVector&);
+template void add_volumetric_force<3>(const fem::CellValues<3>&, Real,
+                                      const fem::CellValues<3>::Gradients&, CellVector&);
+template void add_contact_force<2>(const fem::FacetValues<2>&, Real, const fem::CellValues<2>::Gradients&,
+                                   std::span<const Real>, CellVector&);
+template void add_contact_force<3>(const fem::FacetValues<3>&, Real, const fem::CellValues<3>::Gradients&,
+                                   std::span<const Real>, CellVector&);
+
+}  // namespace formflow::assembly
