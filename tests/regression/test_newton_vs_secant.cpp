@@ -36,11 +36,10 @@ TEST_P(NewtonVsSecant, SameSolutionToDeltaAndIterationCount) {
   const post::Results reference = solve(GetParam(), solvers::NonlinearMethod::Secant, 1e-8);
   ASSERT_TRUE(newton.converged());
   ASSERT_TRUE(reference.converged());
-  // Issue 6 asks for at most 8; every case here takes 9 (the first a secant
-  // step from the constant-viscosity start; the tail is linear, ratio ≈ 0.3, with
-  // the paper's full-ε̇ form, whose exact tangent is unsymmetric). NOT MET by one
-  // iteration: this bound guards what is achieved, the target stays open.
-  EXPECT_LE(newton.iterations, 9);
+  // Issue 6's target: at most 8 iterations to δ = 1e-4 (measured: Q2 7, 8, 8 and
+  // Q1 8, 7, 7 for μ = 0, 0.1, 0.2), with the exact Jacobian (full-ε̇ coupling
+  // and dτ_f by GMRES) and the first step already Newton.
+  EXPECT_LE(newton.iterations, 8);
 
   const VectorX& u = newton.fields.velocity;
   const VectorX& u_ref = reference.fields.velocity;

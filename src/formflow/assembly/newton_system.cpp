@@ -1,19 +1,21 @@
 // SPDX-License-Identifier: MIT
 // Residual and consistent tangent of the regularised penalty problem (eq. 3.19) for Newton.
 //
-// Two deliberate simplifications keep the tangent symmetric, so that CHOLMOD
-// LLᵀ (one symbolic analysis, the pattern of the secant system) still applies:
-//  * τ_f is frozen at the start of each Newton step. Its exact derivative
-//    couples every contact point to the pressures of its neighbours within the
-//    mollifier radius h, an unsymmetric term outside the cell pattern. With it
-//    lagged, each step is an exact Newton step of a problem with a convex
-//    potential (which the line search uses), and τ_f converges at the rate of
-//    a fixed point of μ_f-weighted contact pressure, fast for μ_f ≤ 0.2.
-//  * with the paper's full-ε̇ a-form, the exact derivative of ⅔ν(ε̄̇) ε̇(u):ε̇(v)
-//    has, besides the symmetric (ė(u):ε̇(v))(ė(u):ε̇(δu)), the unsymmetric part
-//    ⅓ ε̇_V(u) ε̇_V(v) (ė(u):ε̇(δu)); ε̇_V(u) = d σ_H is O(d) and that part is
-//    dwarfed by the (1/d) ε̇_V ε̇_V penalty, so it is dropped. For the
-//    deviatoric form the tangent is exact.
+// The exact Jacobian is split as J = T + N so that CHOLMOD LLᵀ (one symbolic
+// analysis, the pattern of the secant system) still applies to T:
+//  * T: the secant matrix plus the symmetric derivative of the viscous term in
+//    primal–dual form and of the friction force at fixed τ_f; for the
+//    deviatoric a-form without friction T is the whole Jacobian.
+//  * N (UnsymmetricTangent, applied matrix free; the solver uses GMRES with T⁻¹):
+//    - with the paper's full-ε̇ a-form, the derivative of ⅔ν(ε̄̇) ε̇(u):ε̇(v)
+//      has, besides the symmetric (ė(u):ε̇(v))(ė(u):ε̇(δu)), the part
+//      ⅓ ε̇_V(u) ε̇_V(v) (ė(u):ε̇(δu)). It is not negligible: in near-rigid zones
+//      ν ≈ σ_p(ε̄̇₁)/ε̄̇₁ ≈ 1.7e3, so (2/9)ν ≈ 385 against 1/d = 1000; dropping it
+//      made the Newton tail linear (ratio ≈ 0.25 on mesh II).
+//    - the derivative of τ_f = μ_f max(σ̄_N, 0): couples each contact point to
+//      the normal velocities of its neighbours within the mollifier radius h,
+//      outside the cell pattern. Lagging τ_f instead gave a linear tail with
+//      friction (mesh II, μ = 0.2: 9 iterations to δ = 1e-4 instead of 8).
 #include "formflow/assembly/forming_problem.hpp"
 
 #include "formflow/assembly/kernels/kernels.hpp"

@@ -100,8 +100,6 @@ KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
                                     const VectorX& rhs, VectorX& delta, Real tolerance,
                                     int max_iterations) {
   KrylovOutcome outcome;
-  VectorX start;
-  if (!factorized.solve(rhs, start) || !start.allFinite()) return outcome;
   const JacobianOperator jacobian(tangent_lower, coupling);
   Eigen::GMRES<JacobianOperator, FactorPreconditioner> gmres;
   gmres.preconditioner().attach(&factorized);
@@ -109,7 +107,9 @@ KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
   gmres.setMaxIterations(max_iterations);
   gmres.set_restart(max_iterations);  // no restart: the few iterations keep their basis
   gmres.compute(jacobian);
-  delta = gmres.solveWithGuess(rhs, start);
+  // From δ = 0, so that Eigen's tolerance (relative to the initial preconditioned
+  // residual) is relative to ‖T⁻¹b‖; the first Krylov vector is the symmetric step.
+  delta = gmres.solve(rhs);
   outcome.iterations = static_cast<int>(gmres.iterations());
   outcome.residual = gmres.error();
   outcome.converged = gmres.info() == Eigen::Success && delta.allFinite();

@@ -16,14 +16,15 @@ using CouplingProduct = std::function<void(const VectorX& x, VectorX& y)>;
 struct KrylovOutcome {
   bool converged = false;
   int iterations = 0;    ///< GMRES iterations = extra triangular solves
-  Real residual = 0.0;   ///< final ‖T⁻¹(b − Jδ)‖ / ‖T⁻¹ b‖
+  Real residual = 0.0;   ///< final ‖T⁻¹(b − Jδ)‖ / ‖T⁻¹b‖
 };
 
 /// Solves (T + N) δ = b, T the symmetric matrix given by its lower triangle and
-/// already factorised in `factorized`, N applied by `coupling`. GMRES is
-/// preconditioned by T⁻¹ and starts from δ = T⁻¹ b (the symmetric step), so
-/// with N = 0 it returns at once. `delta` holds the last iterate even when
-/// GMRES did not reach `tolerance` within `max_iterations`.
+/// already factorised in `factorized`, N applied by `coupling`. GMRES (no
+/// restart) from δ = 0, left-preconditioned by T⁻¹, until ‖T⁻¹(b − Jδ)‖ ≤
+/// tolerance·‖T⁻¹b‖; its first iterate is a multiple of the symmetric step T⁻¹b,
+/// so with N = 0 one iteration solves it. `delta` holds the last iterate even
+/// when GMRES did not reach `tolerance` within `max_iterations`.
 KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
                                     const CouplingProduct& coupling, LinearSolver& factorized,
                                     const VectorX& rhs, VectorX& delta, Real tolerance,

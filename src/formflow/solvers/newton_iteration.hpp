@@ -13,28 +13,33 @@
 namespace formflow::solvers {
 
 /// Starts like secant_iteration from the constant-viscosity solution u⁰, then
-/// solves J(uⁿ) δ = −R(uⁿ) with a symmetric tangent (τ_f frozen at uⁿ; see
-/// assembly/newton_system.cpp) and sets uⁿ⁺¹ = uⁿ + t δ, t from a line search on
-/// the dissipation potential (a zero of δ·R(uⁿ + t δ), regula falsi).
+/// solves J(uⁿ) δ = −R(uⁿ) and sets uⁿ⁺¹ = uⁿ + t δ, t from a line search on the
+/// slope δ·R(uⁿ + t δ) (regula falsi). J = T + N: T symmetric (assembled,
+/// factorised by CHOLMOD), N the unsymmetric rest of the exact Jacobian (the
+/// full-ε̇ a-form's ν′ ε̇_V term and the derivative of the nonlocal τ_f, see
+/// assembly/newton_system.cpp), applied matrix free; when N ≠ 0 the step comes
+/// from GMRES preconditioned by T's factor (solvers/coupled_tangent_solve.hpp):
+/// still one factorisation per iteration, plus a few triangular solves ("krylov").
 ///
-/// The tangent is the primal–dual one (Chan, Golub & Mulet 1999 for TV; Rudi,
-/// Shih & Stadler 2017 for viscoplastic Stokes): with σ_p nearly constant (the
-/// paper's α = 1e-3) the exact tangent is 1000× softer along ė than across it
-/// and the potential is nearly |ε̇| with a kink smoothed only below ε̄̇₁, so the
-/// plain Newton step is damped to t ≈ 0.03–0.3 for many iterations. Carrying
-/// the stress w ≈ ν ė and the slip direction λ ≈ u_T/s as separate variables,
-/// updated by their own Newton step and capped to the yield surface, removes
-/// that (measured on mesh II: 20 → 9 iterations to 1e-8 with μ = 0, and with
-/// friction from no convergence in 40 to 14).
+/// T is the primal–dual tangent (Chan, Golub & Mulet 1999 for TV; Rudi, Shih &
+/// Stadler 2017 for viscoplastic Stokes): with σ_p nearly constant (the paper's
+/// α = 1e-3) the exact tangent is 1000× softer along ė than across it, so a
+/// primal Newton step blows the near-rigid zones apart. Carrying the stress w ≈ ν ė
+/// and the slip direction λ ≈ u_T/s as separate variables, updated by their own
+/// Newton step and capped to the yield surface, removes that. The first iteration
+/// is a Newton step from u⁰ with the stress the constant-viscosity solve balanced
+/// as w (FormingProblem::secant_duals): below yield in the near-rigid zones, so
+/// the tangent is stiff there (measured on mesh II, μ = 0: 9 → 7 iterations to
+/// δ = 1e-4 against a secant first step followed by the primal tangent).
 ///
-/// Safeguard: while the relative change exceeds control.newton_start (the first
-/// iteration always: it starts from the constant-viscosity solution), and
-/// whenever the tangent is not positive definite or δ is no descent direction,
-/// a secant step K(uⁿ) uⁿ⁺¹ = F is taken instead. Stop rule as in the secant
+/// Safeguard: whenever the tangent is not positive definite or δ is no descent
+/// direction, and afterwards while the relative change exceeds
+/// control.newton_start, a secant step K(uⁿ) uⁿ⁺¹ = F is taken instead (the duals
+/// then restart from the stress that step balanced). Stop rule as in the secant
 /// iteration, ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < δ, where for a Newton step the change is the
 /// larger of the step taken and the undamped correction ‖δ‖/‖uⁿ⁺¹‖, so that a
 /// short damped step is never mistaken for convergence. Times the secant
-/// phases plus "line search" and "dual update".
+/// phases plus "krylov", "line search" and "dual update".
 template <int dim>
 SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
