@@ -21,10 +21,10 @@ TEST_P(NewtonFineMesh, ConvergesWithReactionEqualToThePower) {
   });
   ASSERT_TRUE(results.converged());
   EXPECT_EQ(results.n_dofs, 77762);
-  // Issue 6 asks for ≤ 8 iterations at this size; measured: 13 for μ = 0 (the
-  // full-ε̇ tangent is not exact, so the tail is linear). NOT MET: this bound
-  // guards what is achieved.
-  EXPECT_LE(results.iterations, 16);
+  // Issue 6 asks for ≤ 8 iterations at this size; measured: 11, 13, 14 for
+  // μ = 0, 0.1, 0.2 (exact Jacobian; the primal–dual tail is linear, ratio ≈ 0.5,
+  // and the first iterations are damped). NOT MET: this bound guards what is achieved.
+  EXPECT_LE(results.iterations, 14);
   // At a converged iterate the reaction equals the total discrete power; the
   // secant referee at this size takes hundreds of iterations, so this identity
   // (exact at the fixed point, see tests/regression/test_load_consistency.cpp)
