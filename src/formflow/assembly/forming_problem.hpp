@@ -105,7 +105,7 @@ class FormingProblem {
                 const FrictionMultipliers<dim>* multipliers = nullptr) const;
 
   /// Newton (assembly/newton_system.cpp): τ_f(w) at each Γ3 quadrature point,
-  /// in contact_state() order, to be frozen during one Newton step.
+  /// in contact_state() order (the thresholds assemble_newton takes).
   std::vector<Real> friction_thresholds(const VectorX& w) const;
 
   /// Newton (assembly/newton_system.cpp), one cell loop at `u` (full dof vector
