@@ -77,10 +77,10 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     outcome = solvers::uzawa_secant_iteration(*problem, *solver, case_.solver, on_iteration,
                                               results.timing);
     results.method = "uzawa around secant";
-  } else if (case_.solver.method == solvers::NonlinearMethod::Newton && !problem->axisymmetric() &&
+  } else if (case_.solver.method == solvers::NonlinearMethod::Newton &&
              case_.formulation.type == assembly::FormulationType::Penalty) {
-    // Newton's tangent has neither hoop terms nor the condensed mixed pressure yet:
-    // axisymmetric and mixed cases run the secant iteration.
+    // Newton's tangent (plane and axisymmetric) has no condensed mixed pressure
+    // yet: mixed cases run the secant iteration.
     outcome =
         solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
     results.method = "newton";

@@ -40,8 +40,8 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
                                           const NewtonDuals<dim>& duals, VectorX& internal_force,
                                           LinearSystem* tangent, UnsymmetricTangent<dim>* coupling) const {
   // Plane strain with regularised friction only: no hoop terms, no multipliers, no loads.
-  FF_ASSERT(!axisymmetric() && !has_exact_friction() && !multipliers_ && !body_force_,
-            "Newton covers the plane regularised penalty problem");
+  FF_ASSERT(!has_exact_friction() && !multipliers_ && !body_force_,
+            "Newton covers the regularised penalty problem");
   FF_ASSERT(!coupling || tangent, "the coupling is part of the tangent");
   internal_force.setZero(n_dofs());
   if (tangent) ScatterPlan::clear(*tangent);
@@ -85,11 +85,10 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
 
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
     gather(cell, &u, coordinates, velocities);
-    full_values.reinit(coordinates);
-    volumetric_values.reinit(coordinates);
+    reinit(full_values, coordinates);
+    reinit(volumetric_values, coordinates);
     for (int q = 0; q < n_q; ++q) {
-      rates[q] = physics::strain_rate<dim>(
-          physics::velocity_gradient<dim>(velocities, full_values.gradients(q)));
+      rates[q] = strain_rate_at(full_values, velocities, q);
       const Real eps_bar_dot = physics::equivalent_strain_rate(rates[q]);
       viscosity[q] = settings_.law.secant_viscosity(eps_bar_dot);
       if (!tangent) continue;
@@ -106,10 +105,18 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
     if (!tangent) {
       // Residual only (line search): from the stresses, no local matrix.
       add_viscous_force<dim>(full_values, viscosity, rates, settings_.viscous_strain, local_force);
-      add_volumetric_force<dim>(volumetric_values, settings_.penalty.d, velocities, local_force);
+      if constexpr (dim == 2) {
+        if (axisymmetric()) {
+          add_hoop_viscous_force(full_values, viscosity, rates, settings_.viscous_strain, local_force);
+          add_volumetric_force_axisymmetric(volumetric_values, settings_.penalty.d, velocities,
+                                            local_force);
+        }
+      }
+      if (!axisymmetric())
+        add_volumetric_force<dim>(volumetric_values, settings_.penalty.d, velocities, local_force);
       for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
         const Index position = cell_contact_[k];
-        facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+        reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
         for (int q = 0; q < n_face_q && with_friction; ++q)
           weight[q] = state[position * n_face_q + q].friction_weight;
         add_contact_force<dim>(facet_values, settings_.penalty.d_n, velocities,
@@ -120,17 +127,30 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       // The secant matrix K_e(u) gives the residual K_e u_e; the tangent adds to it.
       local_tangent.setZero();
       add_viscous_term<dim>(full_values, viscosity, settings_.viscous_strain, local_tangent);
-      add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_tangent);
+      if constexpr (dim == 2) {
+        if (axisymmetric()) {
+          add_hoop_viscous_term(full_values, viscosity, settings_.viscous_strain, local_tangent);
+          add_volumetric_penalty_axisymmetric(volumetric_values, settings_.penalty.d, local_tangent);
+        }
+      }
+      if (!axisymmetric())
+        add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_tangent);
       VectorX unused_load = VectorX::Zero(n_local);
       assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
                        local_tangent, unused_load);
       local_force.noalias() = local_tangent * local_velocity;
-      add_viscous_tangent<dim>(full_values, deviators, cell_duals, coefficient_a, coefficient_b,
-                               local_tangent);
+      if constexpr (dim == 2) {
+        if (axisymmetric())
+          add_viscous_tangent_axisymmetric(full_values, deviators, cell_duals, coefficient_a,
+                                           coefficient_b, local_tangent);
+      }
+      if (!axisymmetric())
+        add_viscous_tangent<dim>(full_values, deviators, cell_duals, coefficient_a, coefficient_b,
+                                 local_tangent);
       for (Index k = cell_contact_offsets_[cell]; with_friction && k < cell_contact_offsets_[cell + 1];
            ++k) {
         const Index position = cell_contact_[k];
-        facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+        reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
         for (int q = 0; q < n_face_q; ++q) {
           const ContactPoint<dim>& point = state[position * n_face_q + q];
           const Real slip_speed = point.tangential_velocity.norm();
@@ -159,6 +179,11 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       for (int node = 0; node < mesh_.nodes_per_cell(); ++node) {
         divergence_row.template segment<dim>(node * dim) = grad.col(node);
         deviator_row.template segment<dim>(node * dim) = dev * grad.col(node);
+        if (axisymmetric()) {  // the hoop slot: ε̇_θθ(φ_a e_r) = φ_a/r
+          const Real hoop = full_values.shape(q)[node] / full_values.point(q)[1];
+          divergence_row[node * dim + 1] += hoop;
+          deviator_row[node * dim + 1] += deviators[q](2, 2) * hoop;
+        }
       }
       coupling->cells.push_back(cell);
       coupling->coefficients.push_back(c * full_values.JxW(q));
@@ -205,7 +230,7 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
   for (std::size_t position = 0; position < contact_facets_.size(); ++position) {
     const mesh::BoundaryFacet& facet = mesh_.facets[contact_facets_[position]];
     gather(facet.cell, nullptr, coordinates, unused);
-    facet_values.reinit(coordinates, facet.local_face);
+    reinit(facet_values, coordinates, facet.local_face);
     for (int q = 0; q < n_face_q; ++q) {
       const std::size_t k = position * n_face_q + q;
       if (coupling.threshold_slip[k].isZero(0.0)) continue;
@@ -262,9 +287,7 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
     gather(cell, &next, coordinates, next_velocities);
     values.reinit(coordinates);
     for (int q = 0; q < n_q; ++q) {
-      const auto& grad = values.gradients(q);
-      const Tensor3 next_dev = physics::deviator(
-          physics::strain_rate<dim>(physics::velocity_gradient<dim>(next_velocities, grad)));
+      const Tensor3 next_dev = physics::deviator(strain_rate_at(values, next_velocities, q));
       const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
       Tensor3& w = duals[cell * n_q + q];
       // Where the law is linear the dual stress is just ν ė: nothing to gain.
@@ -272,16 +295,14 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
         w = law.secant_viscosity(next_eps) * next_dev;
         continue;
       }
-      const Tensor3 dev = physics::deviator(
-          physics::strain_rate<dim>(physics::velocity_gradient<dim>(velocities, grad)));
+      const Tensor3 dev = physics::deviator(strain_rate_at(values, velocities, q));
       const Real eps = std::sqrt(2.0 / 3.0 * dev.squaredNorm());
       const Real nu = law.secant_viscosity(eps);
       if (primal) w = nu * dev;
       if (eps > 0) {
         // Newton on ε̄̇ w − σ_p(ε̄̇) ė = 0 at (u, w) along the step:
         // w + δw = ν ė + ν ė(δu) + (σ_p′ ė − w) dε̄̇/ε̄̇.
-        const Tensor3 step_dev = physics::deviator(
-            physics::strain_rate<dim>(physics::velocity_gradient<dim>(step_velocities, grad)));
+        const Tensor3 step_dev = physics::deviator(strain_rate_at(values, step_velocities, q));
         const Real rate_change = 2.0 / 3.0 * dev.cwiseProduct(step_dev).sum() / eps;  // dε̄̇
         w = nu * (dev + step_dev) + (law.yield_stress_derivative(eps) * dev - w) * (rate_change / eps);
       } else {
@@ -308,9 +329,7 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
     gather(cell, &next, coordinates, next_velocities);
     values.reinit(coordinates);
     for (int q = 0; q < n_q; ++q) {
-      const auto& grad = values.gradients(q);
-      const Tensor3 next_dev = physics::deviator(
-          physics::strain_rate<dim>(physics::velocity_gradient<dim>(next_velocities, grad)));
+      const Tensor3 next_dev = physics::deviator(strain_rate_at(values, next_velocities, q));
       const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
       Tensor3& w = duals[cell * n_q + q];
       if (next_eps <= law.rate1 || next_eps >= law.rate2) {  // linear law: w = ν ė exactly
@@ -318,8 +337,7 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
         continue;
       }
       const Real previous_eps =
-          previous ? physics::equivalent_strain_rate(physics::strain_rate<dim>(
-                         physics::velocity_gradient<dim>(previous_velocities, grad)))
+          previous ? physics::equivalent_strain_rate(strain_rate_at(values, previous_velocities, q))
                    : settings_.initial_rate;
       // The stress the secant solve balanced, ν(uⁿ⁻¹) ė(uⁿ), capped to the yield surface.
       w = law.secant_viscosity(previous_eps) * next_dev;

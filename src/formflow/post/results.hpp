@@ -73,7 +73,7 @@ struct Results {
   solvers::StopReason stop_reason = solvers::StopReason::MaxIterations;
   bool converged() const { return stop_reason == solvers::StopReason::Converged; }
   /// The nonlinear loop that actually ran: solver.method does not reach every
-  /// formulation yet (Newton covers the plane penalty problem only).
+  /// formulation yet (Newton covers the plane and axisymmetric penalty problems).
   std::string method = "secant";
   int iterations = 0;
   std::vector<solvers::IterationRecord> history;

@@ -257,9 +257,11 @@ struct SmallExtrusion {
   std::unique_ptr<assembly::FormingProblem<2>> problem;
   VectorX u;
 
-  explicit SmallExtrusion(physics::ViscousStrain strain) {
+  explicit SmallExtrusion(physics::ViscousStrain strain,
+                          physics::Symmetry symmetry = physics::Symmetry::Plane) {
     settings.law = sensitive_law();
     settings.viscous_strain = strain;
+    settings.symmetry = symmetry;
     settings.friction.mu = 0.2;
     settings.friction.d_t = 0.05;
     settings.penalty.d = 0.1;
@@ -333,12 +335,30 @@ TEST(NewtonSystem, FullFormJacobianWithItsUnsymmetricCouplingMatchesFiniteDiffer
   EXPECT_GT((exact - exact.transpose()).norm(), 1e-6 * exact.norm());
 }
 
+TEST(NewtonSystem, AxisymmetricJacobianMatchesFiniteDifferences) {
+  // Axisymmetry (y = r): hoop rate u_r/r in ε̇, ε̇_V and the duals, r-weighted
+  // integrals; both a-forms, τ_f(u) not frozen.
+  for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
+    const SmallExtrusion extrusion(strain, physics::Symmetry::Axisymmetric);
+    const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
+    ASSERT_GT(*std::max_element(thresholds.begin(), thresholds.end()), 0.0);
+    MatrixX symmetric;
+    const MatrixX exact = extrusion.jacobian(thresholds, &symmetric);
+    const MatrixX fd = finite_difference_jacobian(
+        [&](const VectorX& free_u) { return extrusion.free_residual(free_u, nullptr); },
+        extrusion.free_part(extrusion.u), 1e-6);
+    EXPECT_LE((exact - fd).norm(), fd_tolerance * exact.norm());
+    EXPECT_GT((symmetric - fd).norm(), 1e3 * fd_tolerance * exact.norm());
+  }
+}
+
 TEST(NewtonSystem, ResidualOnlyAssemblyEqualsTheSecantSystemAppliedToTheVelocity) {
   // Three routes to K(u)u − F: the secant assembly with τ_f(u), assemble_newton's
   // matrix-free residual, and its residual from the local secant matrices. The
   // prescribed rows give the reaction, so the driven force must agree too.
+  for (const auto symmetry : {physics::Symmetry::Plane, physics::Symmetry::Axisymmetric})
   for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
-    const SmallExtrusion extrusion(strain);
+    const SmallExtrusion extrusion(strain, symmetry);
     const assembly::FormingProblem<2>& problem = *extrusion.problem;
     const std::vector<Real> thresholds = problem.friction_thresholds(extrusion.u);
     assembly::LinearSystem secant = problem.plan().make_system();

@@ -57,6 +57,32 @@ void add_contact_force(const fem::FacetValues<dim>& values, Real d_n,
   }
 }
 
+void add_hoop_viscous_force(const fem::CellValues<2>& values, std::span<const Real> viscosity,
+                            std::span<const Tensor3> rates, physics::ViscousStrain strain,
+                            CellVector& local_force) {
+  const Real volumetric_share = strain == physics::ViscousStrain::Deviatoric ? 1.0 / 3.0 : 0.0;
+  auto force = by_node<2>(local_force);
+  for (int q = 0; q < values.n_points(); ++q) {
+    const Real hoop_stress = rates[q](2, 2) - volumetric_share * rates[q].trace();
+    const Real factor = 2.0 / 3.0 * viscosity[q] * values.JxW(q) * hoop_stress / values.point(q)[1];
+    force.row(1) += factor * values.shape(q).transpose();
+  }
+}
+
+void add_volumetric_force_axisymmetric(const fem::CellValues<2>& values, Real d,
+                                       const fem::CellValues<2>::Gradients& velocities,
+                                       CellVector& local_force) {
+  auto force = by_node<2>(local_force);
+  for (int q = 0; q < values.n_points(); ++q) {
+    const auto& grad = values.gradients(q);
+    const Real radius = values.point(q)[1];
+    const Real volumetric = velocities.cwiseProduct(grad).sum() + velocities.row(1).dot(values.shape(q)) / radius;
+    const Real factor = values.JxW(q) / d * volumetric;
+    force.noalias() += factor * grad;
+    force.row(1) += (factor / radius) * values.shape(q).transpose();
+  }
+}
+
 template void add_viscous_force<2>(const fem::CellValues<2>&, std::span<const Real>,
                                    std::span<const Tensor3>, physics::ViscousStrain, CellVector&);
 template void add_viscous_force<3>(const fem::CellValues<3>&, std::span<const Real>,

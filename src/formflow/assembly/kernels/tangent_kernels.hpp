@@ -23,6 +23,13 @@ void add_viscous_tangent(const fem::CellValues<dim>& values, std::span<const Ten
                          std::span<const Tensor3> duals, std::span<const Real> a,
                          std::span<const Real> b, MatrixX& local_matrix);
 
+/// (1′) in axisymmetry (y = r, `values` r-weighted): the same with the hoop
+/// slot, ė(u):ε̇(φ_a e_r) += ė_θθ φ_a/r and likewise for w.
+void add_viscous_tangent_axisymmetric(const fem::CellValues<2>& values,
+                                      std::span<const Tensor3> deviators,
+                                      std::span<const Tensor3> duals, std::span<const Real> a,
+                                      std::span<const Real> b, MatrixX& local_matrix);
+
 /// (4′) Derivative of the regularised friction force τ_f u_T/s, s = √(|u_T|² + d_T²),
 /// with respect to u_T at fixed τ_f, primal–dual form with λ ≈ u_T/s:
 ///   −∫ τ_f/s² ½[(λ·v_T)(u_T·δu_T) + (u_T·v_T)(λ·δu_T)] dΓ.

@@ -27,6 +27,31 @@ void add_viscous_tangent(const fem::CellValues<dim>& values, std::span<const Ten
   }
 }
 
+// Axisymmetry adds the hoop slot: ė:ε̇(φ_a e_r) gains ė_θθ φ_a/r (values r-weighted).
+void add_viscous_tangent_axisymmetric(const fem::CellValues<2>& values,
+                                      std::span<const Tensor3> deviators,
+                                      std::span<const Tensor3> duals, std::span<const Real> a,
+                                      std::span<const Real> b, MatrixX& local_matrix) {
+  const int n = values.n_nodes();
+  CellVector g(n * 2), h(n * 2);
+  for (int q = 0; q < values.n_points(); ++q) {
+    if (a[q] == 0.0 && b[q] == 0.0) continue;
+    const Tensor2<2> dev = deviators[q].topLeftCorner<2, 2>();
+    const Tensor2<2> dual = duals[q].topLeftCorner<2, 2>();
+    const auto& grad = values.gradients(q);
+    const Real radius = values.point(q)[1];
+    for (int node = 0; node < n; ++node) {
+      g.segment<2>(node * 2) = dev * grad.col(node);
+      h.segment<2>(node * 2) = dual * grad.col(node);
+      g[node * 2 + 1] += deviators[q](2, 2) * values.shape(q)[node] / radius;
+      h[node * 2 + 1] += duals[q](2, 2) * values.shape(q)[node] / radius;
+    }
+    const Real jxw = values.JxW(q);
+    local_matrix.noalias() += (a[q] * jxw) * g * g.transpose();
+    local_matrix.noalias() += (0.5 * b[q] * jxw) * (h * g.transpose() + g * h.transpose());
+  }
+}
+
 template void add_viscous_tangent<2>(const fem::CellValues<2>&, std::span<const Tensor3>,
                                      std::span<const Tensor3>, std::span<const Real>,
                                      std::span<const Real>, MatrixX&);
