@@ -3,6 +3,8 @@
 // straight wall, the bisector at a kink between equal faces (and the faces' own
 // normals beyond contact.corner_angle), the radius on a circle.
 #include "formflow/assembly/contact_normals.hpp"
+#include "formflow/assembly/forming_problem.hpp"
+#include "formflow/fem/dof_map.hpp"
 
 #include <gtest/gtest.h>
 
@@ -115,6 +117,47 @@ TEST(ContactNormals, NodesOnACircleGetTheRadialDirection) {
         EXPECT_NEAR((normals[cell * n_q + q] - radial).norm(), 0.0, tolerance)
             << "order " << order << " cell " << cell << " point " << q;
       }
+  }
+}
+
+TEST(ContactNormals, ProblemEvaluatesContactAtTheNodesWithTheNodalNormals) {
+  // The kink of the test above in a FormingProblem with contact.normals = nodes:
+  // the Γ3 points are the face nodes, their weights the lumped face lengths, and
+  // u_N, u_T and −σ_N = u_N/d_N use the nodal normal (the bisector at the kink).
+  const Real turn = 15.0 * std::numbers::pi / 180.0;
+  auto top = [turn](Real s) {
+    return s <= 1.0 ? Point<2>(s, 2.0) : Point<2>(1.0 + (s - 1.0) * std::cos(turn), 2.0 - (s - 1.0) * std::sin(turn));
+  };
+  for (int order : {1, 2}) {
+    const auto mesh = strip(2, order, top, [](Real s) { return Point<2>(s, 0.0); });
+    assembly::ProblemSettings settings;
+    settings.contact.normals = assembly::ContactNormals::Nodes;
+    assembly::DirichletConstraints none;
+    none.prescribed.assign(static_cast<std::size_t>(mesh.n_nodes() * 2), false);
+    none.values = VectorX::Zero(mesh.n_nodes() * 2);
+    const assembly::FormingProblem<2> problem(mesh, settings, none, {});
+    ASSERT_TRUE(problem.contact_points_at_nodes());
+
+    VectorX u(mesh.n_nodes() * 2);
+    for (Index node = 0; node < mesh.n_nodes(); ++node) u.segment<2>(fem::dof_of<2>(node, 0)) = Point<2>(1.0, 0.0);
+    const auto state = problem.contact_state(u);
+    const auto normals = assembly::nodal_contact_normals<2>(mesh, all_facets(mesh), 60.0);
+    ASSERT_EQ(state.size(), normals.size());
+    const int n_q = order + 1;
+    Real length = 0.0;
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      const auto& point = state[k];
+      const Index node = top_node(mesh, static_cast<Index>(k) / n_q, static_cast<int>(k) % n_q);
+      EXPECT_NEAR((point.position - mesh.nodes.col(node)).norm(), 0.0, 1e-12);
+      EXPECT_NEAR((point.normal - normals[k]).norm(), 0.0, 1e-15);
+      EXPECT_NEAR(point.normal_velocity, normals[k].x(), 1e-15);  // u = (1, 0)
+      EXPECT_NEAR(point.tangential_velocity.dot(point.normal), 0.0, 1e-15);
+      EXPECT_NEAR(point.contact_pressure, point.normal_velocity / settings.penalty.d_n, 1e-6);
+      length += point.weight;
+    }
+    EXPECT_NEAR(length, 2.0, 1e-12);  // two faces of length 1
+    // The corner node slides: u_N there is u·(bisector), sin(7.5°), not 0 or sin 15°.
+    EXPECT_NEAR(state[n_q - 1].normal_velocity, std::sin(turn / 2), 1e-12);
   }
 }
 

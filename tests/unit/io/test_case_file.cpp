@@ -342,6 +342,8 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
                                         {"formulation.contact_augmentation", "1000.0"},
                                         {"formulation.uzawa_tolerance", "1e-06"},
                                         {"formulation.uzawa_max_steps", "7"},
+                                        {"contact.normals", "\"nodes\""},
+                                        {"contact.corner_angle", "30.0"},
                                         {"friction.mu", "0.15"},
                                         {"friction.radius", "0.5"},
                                         {"friction.on", "[\"die\"]"},
