@@ -46,6 +46,31 @@ TEST(ContactNormalsRuns, PlaneWedgeExtrusionOnSixteenRowsIsWithinFivePercentOfHi
   EXPECT_TRUE(approx(results.pressure.total_power, ours, 1e-3));
 }
 
+TEST(ContactNormalsRuns, FrictionlessDieLandLeavesTheDrawingStressAtHillsValue) {
+  // Drawing through the 15° wedge with a frictionless land of length 0.25:
+  // Hill's value does not depend on it. Without the land the 8-row mesh is
+  // +5.5 % (test_drawing_dies.cpp bounds it by +7 %); with the land and face
+  // normals the pinned die/land node makes it +46 %, with nodal normals +4.1 %.
+  // The same [−0.1 %, +7 %] as without the land.
+  const double alpha = 15 * degree, r = hill_special_reduction(alpha);
+  io::Case case_;
+  case_.process.type = physics::ProcessType::Drawing;
+  case_.geometry = mesh::ChannelGeometry{2.0, 1.0, 1 - r, 2.0};
+  case_.geometry.die = mesh::DieShape::Wedge;
+  case_.geometry.die_angle = 15;
+  case_.geometry.land_length = 0.25;
+  case_.mesh_size = 1.0 / 8;
+  case_.material.alpha = 1e-4;
+  case_.solver.max_iterations = 2000;
+  case_.contact.normals = assembly::ContactNormals::Nodes;
+  const post::Results results = app::simulate(case_).results;
+  ASSERT_TRUE(results.converged());
+  // ram_reaction is the driven-end reaction: for drawing, the drawing stress.
+  const double ours = results.pressure.ram_reaction, exact = hill_wedge_stress(alpha);
+  EXPECT_GT(ours, exact * (1 - 1e-3));
+  EXPECT_LT(ours, exact * 1.07);
+}
+
 TEST(ContactNormalsRuns, KinkedPolylineDieWithLocalFrictionConverges) {
   // docs/validation.md's reproducer: with face normals the kinks pin their
   // nodes, the local contact pressure (radius 0) is singular there and the
