@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Gauss–Legendre rules, tabulated in closed form up to five points.
+// Gauss–Legendre rules, tabulated in closed form up to five points, and the nodal
+// (Gauss–Lobatto: trapezoid, Simpson) rules of Q1 and Q2 faces.
 #include "formflow/fem/quadrature.hpp"
 
 #include "formflow/core/error.hpp"
