@@ -151,6 +151,8 @@ std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size)
   return "no size near this one fits every length: make the lengths multiples of one size";
 }
 
+std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table);
+
 /// Accumulates keys into a Case (starting from the table's defaults), remembering
 /// where each was set, so that cross-key errors can point at the key set last.
 class CaseBuilder {
@@ -161,8 +163,10 @@ class CaseBuilder {
   }
 
   void set(const CaseKey& key, const toml::value& value, const std::string& file, int line) {
-    const std::optional<KeyValue> converted = convert(key, value);
     const std::string name(key.name);
+    if (key.type == KeyType::NameMap && value.is_table() && file != "--set")
+      check_table_entries(key, value, file);
+    const std::optional<KeyValue> converted = convert(key, value);
     if (!converted) {
       const std::string example = format_key_value(key.default_value);
       throw InputError(file, line, name,
@@ -178,6 +182,24 @@ class CaseBuilder {
       for (const auto& [entry, entry_value] : value.as_table())
         origins_[name + "." + entry] =
             Origin{file, file == "--set" ? line : line_of(entry_value), n_set_};
+  }
+
+  /// A bad entry of a table of strings is blamed on its own line, not on the
+  /// table's header line, which may be far above it.
+  static void check_table_entries(const CaseKey& key, const toml::value& table,
+                                  const std::string& file) {
+    for (const auto& [entry, pointer] : in_file_order(table)) {
+      const toml::value& entry_value = *pointer;
+      const std::string name(key.name);
+      if (!entry_value.is_string())
+        throw InputError(file, line_of(entry_value), name,
+                         fmt::format("entry \"{}\": expected a string, got {}", entry,
+                                     describe(entry_value)),
+                         fmt::format("e.g. {} = \"{}\"", entry,
+                                     key.choices.empty() ? "" : key.choices.front()));
+      if (const auto problem = check_key_value(key, NameMap{{entry, entry_value.as_string().str}}))
+        throw InputError(file, line_of(entry_value), name, problem->message, problem->hint);
+    }
   }
 
   void check_cross_keys() const {

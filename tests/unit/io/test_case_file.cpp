@@ -107,9 +107,23 @@ TEST_F(CaseFile, AnEmptyFileIsTheDefaultCase) {
   const std::string path = write("# nothing but a comment\n");
   const Case case_ = load_case(path, {});
   EXPECT_EQ(case_.source, path);
-  nlohmann::json expected = case_to_json(load_case("", {}));
+  nlohmann::ordered_json expected = case_to_json(load_case("", {}));
   expected["source"] = path;
   EXPECT_EQ(case_to_json(case_), expected);
+}
+
+TEST_F(CaseFile, JsonFollowsTheKeyTableOrderNotTheAlphabet) {
+  // The echo reads like docs/case-reference.md: sections and keys in the table's order.
+  std::vector<std::string> from_table, from_json;
+  for (const CaseKey& key : case_keys()) from_table.emplace_back(key.name);
+  const nlohmann::ordered_json json = case_to_json(load_case("", {}));
+  for (const auto& [section, table] : json.items())
+    if (table.is_object())
+      for (const auto& [leaf, value] : table.items()) from_json.push_back(section + "." + leaf);
+  EXPECT_EQ(from_json, from_table);
+  // "process" comes before "material" in the table but after it in the alphabet.
+  const std::string text = json.dump();
+  EXPECT_LT(text.find("\"process\""), text.find("\"material\""));
 }
 
 TEST_F(CaseFile, UnknownKeyNamesTheClosestValidKey) {
@@ -382,7 +396,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
     EXPECT_EQ(json[section][leaf], nlohmann::json::parse(text)) << name;
     from_json.emplace_back(name, json[section][leaf].dump());
   }
-  EXPECT_EQ(case_to_json(load_case("", from_json)), json);
+  EXPECT_EQ(nlohmann::json(case_to_json(load_case("", from_json))), json);
 }
 
 }  // namespace

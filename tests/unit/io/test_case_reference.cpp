@@ -103,7 +103,7 @@ TEST(CaseReference, TheDefaultCaseBlockLoadsToTheDefaults) {
   std::ofstream(path) << markdown.substr(begin + 8, end - begin - 8);
   const Case case_ = load_case(path.string(), {});
   fs::remove(path);
-  nlohmann::json expected = case_to_json(load_case("", {}));
+  nlohmann::ordered_json expected = case_to_json(load_case("", {}));
   expected["source"] = path.string();
   EXPECT_EQ(case_to_json(case_), expected);
 }

@@ -170,6 +170,35 @@ TEST(PicturesWithoutData, EmptyHistoryAndContactStillRender) {
   }
 }
 
+TEST(PictureSubtitle, FormingRunNamesProcessMeshFrictionAndRamPressure) {
+  io::Case case_;
+  mesh::Mesh<2> mesh;
+  post::Results results;
+  make_synthetic_run(2, 2.5, case_, mesh, results);
+  EXPECT_EQ(plot::run_description(case_, results),
+            "extrusion · Q2, h = 2.5 · μ_{f} = 0.1 · converged in 27 iterations · "
+            "ram pressure 2.612");
+}
+
+TEST(PictureSubtitle, ManufacturedRunNamesSolutionElementAndH) {
+  // A verification run has no process, friction or ram: none of them may be named.
+  io::Case case_;
+  mesh::Mesh<2> mesh;
+  post::Results results;
+  make_synthetic_run(1, 2.5, case_, mesh, results);
+  case_.manufactured = physics::ManufacturedSolution::Smooth;
+  case_.mesh_size = 0.125;
+  EXPECT_EQ(plot::run_description(case_, results),
+            "manufactured solution \"smooth\" · Q1, h = 0.125 · uniform cells · "
+            "converged in 27 iterations");
+  case_.manufactured = physics::ManufacturedSolution::Extension;
+  case_.distortion = {mesh::Distortion::Random, 0.2, 3};
+  results.stop_reason = solvers::StopReason::MaxIterations;
+  const std::string text = plot::run_description(case_, results);
+  EXPECT_EQ(text, "manufactured solution \"extension\" · Q1, h = 0.125 · random distortion 0.2 · "
+                  "NOT converged (max_iterations, 27 iterations)");
+}
+
 TEST(PlotTicks, NiceNumbersAndLabels) {
   EXPECT_DOUBLE_EQ(plot::nice_step(10.0, 5), 2.0);
   EXPECT_DOUBLE_EQ(plot::nice_step(0.7, 7), 0.1);
