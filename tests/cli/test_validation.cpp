@@ -85,6 +85,7 @@ const BadCase bad_cases[] = {
     {"wrong-type.toml", 4, "mesh.size", "expected a real number"},
     {"negative-mu.toml", 3, "friction.mu", "must be ≥ 0"},
     {"mesh-size-unfit.toml", 4, "mesh.size", "0.3125 (= 10/32)"},
+    {"mesh-too-large.toml", 5, "mesh.size", "1.5e+10 cells"},
     {"bad-element.toml", 3, "mesh.element", "valid values: \"Q1\", \"Q2\""},
     {"syntax-error.toml", 4, "syntax", "radius = 0.5 0.5"},
     {"exit-above-entry.toml", 4, "geometry.exit_half_height", "< geometry.entry_half_height"},
