@@ -3,34 +3,23 @@
 // is exit 2 with file:line, key and a hint, and nothing is written.
 #include "gmsh/gmsh_test_mesh.hpp"
 
+#include "support/run_cli.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 namespace formflow {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
-
-::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
-}
+using testing::has_text;
+using testing::quoted;
+using testing::read_text;
 
 /// The boundary map of two_squares(), as lines 6–10 of the case file.
 const std::string full_map =
@@ -42,14 +31,7 @@ const std::string full_map =
 
 class MeshFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    scratch_ = fs::temp_directory_path() /
-               ("formflow-meshfile-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(scratch_);
-    fs::create_directories(scratch_ / "meshes");
-  }
-  void TearDown() override { fs::remove_all(scratch_); }
+  MeshFile() { fs::create_directories(scratch_ / "meshes"); }
 
   /// Writes `mesh` to meshes/m.msh and a case that reads it (mesh.file relative
   /// to the case file: line 4; [mesh.boundaries] from line 6); runs `formflow
@@ -64,13 +46,11 @@ class MeshFile : public ::testing::Test {
                              << "file = \"" << file << "\"\n"
                              << "\n"
                              << boundaries;
-    const fs::path err = scratch_ / "stderr.txt";
-    const std::string command = "'" + std::string(FORMFLOW_BINARY) + "' run '" +
-                                case_path.string() + "' -q -o '" + (scratch_ / "out").string() +
-                                "' > /dev/null 2> '" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    error_ = read_text(err);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const testing::CliResult result = testing::run_cli(
+        "run " + quoted(case_path.string()) + " -q -o " + quoted((scratch_ / "out").string()),
+        scratch_.path());
+    error_ = result.err;
+    return result.exit_code;
   }
 
   /// Exit 2, the case file and line, the key, and no output directory.
@@ -82,7 +62,7 @@ class MeshFile : public ::testing::Test {
     EXPECT_FALSE(fs::exists(scratch_ / "out")) << "nothing may be written on bad input";
   }
 
-  fs::path scratch_;
+  testing::ScratchDirectory scratch_{"formflow-meshfile"};
   std::string error_;
 };
 
@@ -102,11 +82,10 @@ TEST_F(MeshFile, AGoodMeshIsSolved) {
 TEST_F(MeshFile, TheShippedCaseReadsItsMeshRelativeToTheCaseFile) {
   // Run from the scratch directory: mesh.file must be found next to the case file, not in cwd.
   const fs::path case_path = fs::path(FORMFLOW_SOURCE_DIR) / "cases" / "wedge-die-msh.toml";
-  const std::string command = "cd '" + scratch_.string() + "' && '" + FORMFLOW_BINARY +
-                              "' check '" + case_path.string() + "' > out.txt 2>&1";
-  const int status = std::system(command.c_str());
-  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << read_text(scratch_ / "out.txt");
-  EXPECT_TRUE(has_text(read_text(scratch_ / "out.txt"), "valid (240 cells, 1025 nodes)"));
+  const testing::CliResult result =
+      testing::run_cli("check " + quoted(case_path.string()), scratch_.path(), scratch_.path());
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(has_text(result.out + result.err, "valid (240 cells, 1025 nodes)"));
 }
 
 TEST_F(MeshFile, MissingFile) {

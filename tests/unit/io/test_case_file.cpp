@@ -5,6 +5,7 @@
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_json.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "support/run_cli.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,17 +13,13 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <unistd.h>
 
 namespace formflow::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
-}
+using testing::has_text;
 
 /// The InputError that loading throws (a failed expectation if it throws none).
 InputError load_error(const std::string& path, const std::vector<Override>& overrides = {}) {
@@ -37,14 +34,6 @@ InputError load_error(const std::string& path, const std::vector<Override>& over
 
 class CaseFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 ("formflow-case-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   /// Writes `text` to a fresh case file and returns its path.
   std::string write(const std::string& text) {
     const fs::path path = directory_ / ("case" + std::to_string(++n_files_) + ".toml");
@@ -62,7 +51,7 @@ class CaseFile : public ::testing::Test {
     return error;
   }
 
-  fs::path directory_;
+  testing::ScratchDirectory directory_{"formflow-case"};
   int n_files_ = 0;
 };
 
@@ -245,7 +234,7 @@ TEST_F(CaseFile, MissingOrUnreadableFileIsAnInputError) {
   EXPECT_EQ(error.file, missing);
   EXPECT_EQ(error.line, 0);
   EXPECT_TRUE(has_text(error.message, "no such file"));
-  EXPECT_TRUE(has_text(load_error(directory_.string()).message, "not a regular file"));
+  EXPECT_TRUE(has_text(load_error(directory_.path().string()).message, "not a regular file"));
 }
 
 TEST_F(CaseFile, OverridesApplyAfterTheFileInOrder) {

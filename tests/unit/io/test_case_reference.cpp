@@ -4,6 +4,7 @@
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_json.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "support/run_cli.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,12 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
+using testing::read_text;
 
 TEST(CaseKeys, TableIsConsistent) {
   std::set<std::string_view> names, sections_with_keys;

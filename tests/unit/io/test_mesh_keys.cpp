@@ -3,9 +3,9 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "support/run_cli.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,14 +17,6 @@ namespace fs = std::filesystem;
 
 class MeshKeys : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 ("formflow-meshkeys-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   std::string write(const std::string& text) {
     const fs::path path = directory_ / "case.toml";
     std::ofstream(path) << text;
@@ -45,7 +37,7 @@ class MeshKeys : public ::testing::Test {
     return InputError("", -1, "", "");
   }
 
-  fs::path directory_;
+  testing::ScratchDirectory directory_{"formflow-meshkeys"};
 };
 
 TEST_F(MeshKeys, DefaultsAreTheStructuredGenerator) {

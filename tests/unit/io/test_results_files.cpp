@@ -172,6 +172,10 @@ std::vector<std::vector<std::string>> read_csv(const std::string& text) {
 class ResultsFiles : public ::testing::Test {
 protected:
   void SetUp() override { make_synthetic_run(2, 1.0, case_, mesh_, results_); }
+  /// summary.json's "mesh" block of the run as it stands.
+  nlohmann::json summary_mesh() const {
+    return nlohmann::json::parse(io::summary_json(case_, results_)).at("mesh");
+  }
   io::Case case_;
   mesh::Mesh<2> mesh_;
   post::Results results_;
@@ -183,7 +187,7 @@ TEST_F(ResultsFiles, SummaryMeshSizeIsNullForAFileMeshAndTheDiametersDescribeIt)
   case_.mesh_file = "die.msh";
   results_.min_cell_diameter = 0.03;
   results_.max_cell_diameter = 0.4;
-  const auto mesh = nlohmann::json::parse(io::summary_json(case_, results_)).at("mesh");
+  const auto mesh = summary_mesh();
   EXPECT_EQ(mesh.at("source"), "file");
   ASSERT_TRUE(mesh.contains("size"));
   EXPECT_TRUE(mesh.at("size").is_null());
@@ -192,7 +196,7 @@ TEST_F(ResultsFiles, SummaryMeshSizeIsNullForAFileMeshAndTheDiametersDescribeIt)
   // Gmsh meshes the channel with mesh.size as its target size.
   case_.mesh_source = mesh::MeshSource::Gmsh;
   case_.mesh_size = 0.3;
-  const auto gmsh = nlohmann::json::parse(io::summary_json(case_, results_)).at("mesh");
+  const auto gmsh = summary_mesh();
   EXPECT_EQ(gmsh.at("source"), "gmsh");
   EXPECT_EQ(gmsh.at("size"), 0.3);
 }
@@ -202,7 +206,7 @@ TEST_F(ResultsFiles, SummaryMeshOfAManufacturedRunIsTheBox) {
   case_.manufactured = physics::ManufacturedSolution::Smooth;
   case_.mesh_source = mesh::MeshSource::File;
   case_.mesh_size = 0.125;
-  const auto mesh = nlohmann::json::parse(io::summary_json(case_, results_)).at("mesh");
+  const auto mesh = summary_mesh();
   EXPECT_EQ(mesh.at("source"), "box");
   EXPECT_EQ(mesh.at("size"), 0.125);
 }
