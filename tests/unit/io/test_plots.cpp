@@ -6,6 +6,7 @@
 #include "formflow/io/plot/pictures.hpp"
 #include "formflow/io/plot/ticks.hpp"
 #include "formflow/io/results_writer.hpp"
+#include "support/synthetic_run.hpp"
 
 // The library links cairo; its include directory is not propagated, but the
 // header finds its siblings relative to itself.
@@ -24,10 +25,6 @@
 #include <vector>
 
 namespace formflow::testing {
-
-// Defined in test_results_files.cpp.
-void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& mesh,
-                        post::Results& results);
 
 namespace {
 

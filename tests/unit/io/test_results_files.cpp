@@ -7,6 +7,7 @@
 #include "formflow/mesh/cell_diameter.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "support/approx.hpp"
+#include "support/synthetic_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -101,8 +102,7 @@ std::vector<post::ContactSample> contact_samples() {
 
 } // namespace
 
-/// A complete, realistic-looking run on the benchmark channel (also used by
-/// test_vtu.cpp and test_plots.cpp, which declare it).
+// Declared in support/synthetic_run.hpp, used by test_vtu.cpp and test_plots.cpp too.
 void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& mesh,
                         post::Results& results) {
   case_ = io::Case{};
