@@ -232,7 +232,8 @@ std::vector<CaseKey> discretisation_keys() {
           .doc("velocity element: Q1 (4-node bilinear) or Q2 (9-node biquadratic)"),
       real_key("mesh.size", 1.0, [](auto& c) -> auto& { return c.mesh_size; })
           .above(0)
-          .constraint("divides every geometry length when mesh.source = \"structured\"")
+          .constraint("divides every geometry length when mesh.source = \"structured\"; the "
+                      "mesh's estimated memory fits in this machine's (docs/benchmarks.md)")
           .unit("length")
           .doc("side of the uniform square cells (mesh I: 10/6, mesh II: 1); the target "
                "element size for mesh.source = \"gmsh\"; unused for \"file\""),
