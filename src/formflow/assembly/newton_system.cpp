@@ -116,7 +116,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
         add_volumetric_force<dim>(volumetric_values, settings_.penalty.d, velocities, local_force);
       for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
         const Index position = cell_contact_[k];
-        reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
+        reinit_contact(facet_values, coordinates, position);
         for (int q = 0; q < n_face_q && with_friction; ++q)
           weight[q] = state[position * n_face_q + q].friction_weight;
         add_contact_force<dim>(facet_values, settings_.penalty.d_n, velocities,
@@ -150,7 +150,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       for (Index k = cell_contact_offsets_[cell]; with_friction && k < cell_contact_offsets_[cell + 1];
            ++k) {
         const Index position = cell_contact_[k];
-        reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
+        reinit_contact(facet_values, coordinates, position);
         for (int q = 0; q < n_face_q; ++q) {
           const ContactPoint<dim>& point = state[position * n_face_q + q];
           const Real slip_speed = point.tangential_velocity.norm();
@@ -230,7 +230,7 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
   for (std::size_t position = 0; position < contact_facets_.size(); ++position) {
     const mesh::BoundaryFacet& facet = mesh_.facets[contact_facets_[position]];
     gather(facet.cell, nullptr, coordinates, unused);
-    reinit(facet_values, coordinates, facet.local_face);
+    reinit_contact(facet_values, coordinates, static_cast<Index>(position));
     for (int q = 0; q < n_face_q; ++q) {
       const std::size_t k = position * n_face_q + q;
       if (coupling.threshold_slip[k].isZero(0.0)) continue;

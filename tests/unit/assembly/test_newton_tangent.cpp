@@ -258,10 +258,12 @@ struct SmallExtrusion {
   VectorX u;
 
   explicit SmallExtrusion(physics::ViscousStrain strain,
-                          physics::Symmetry symmetry = physics::Symmetry::Plane) {
+                          physics::Symmetry symmetry = physics::Symmetry::Plane,
+                          assembly::ContactNormals normals = assembly::ContactNormals::Faces) {
     settings.law = sensitive_law();
     settings.viscous_strain = strain;
     settings.symmetry = symmetry;
+    settings.contact.normals = normals;
     settings.friction.mu = 0.2;
     settings.friction.d_t = 0.05;
     settings.penalty.d = 0.1;
@@ -350,6 +352,26 @@ TEST(NewtonSystem, AxisymmetricJacobianMatchesFiniteDifferences) {
     EXPECT_LE((exact - fd).norm(), fd_tolerance * exact.norm());
     EXPECT_GT((symmetric - fd).norm(), 1e3 * fd_tolerance * exact.norm());
   }
+}
+
+TEST(NewtonSystem, JacobianWithNodalContactNormalsMatchesFiniteDifferences) {
+  // contact.normals = "nodes": Γ3 evaluated at the face nodes with averaged normals,
+  // in the residual, the friction tangent and dτ_f alike.
+  const SmallExtrusion extrusion(physics::ViscousStrain::Full, physics::Symmetry::Plane,
+                                 assembly::ContactNormals::Nodes);
+  const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
+  ASSERT_GT(*std::max_element(thresholds.begin(), thresholds.end()), 0.0);
+  const MatrixX exact = extrusion.jacobian(thresholds);
+  const MatrixX fd = finite_difference_jacobian(
+      [&](const VectorX& free_u) { return extrusion.free_residual(free_u, nullptr); },
+      extrusion.free_part(extrusion.u), 1e-6);
+  EXPECT_LE((exact - fd).norm(), fd_tolerance * exact.norm());
+  // The residual-only path agrees with the secant system there too.
+  assembly::LinearSystem secant = extrusion.problem->plan().make_system();
+  extrusion.problem->assemble(&extrusion.u, secant);
+  const VectorX free_u = extrusion.free_part(extrusion.u);
+  const VectorX expected = secant.matrix.selfadjointView<Eigen::Lower>() * free_u - secant.rhs;
+  EXPECT_LE((extrusion.free_residual(free_u, &thresholds) - expected).norm(), 1e-12 * expected.norm());
 }
 
 TEST(NewtonSystem, ResidualOnlyAssemblyEqualsTheSecantSystemAppliedToTheVelocity) {
