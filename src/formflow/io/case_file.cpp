@@ -269,9 +269,12 @@ class CaseBuilder {
             "use friction.regularization = \"regularized\", or formulation.pressure = \"P1disc\"");
     if (case_.element == fem::ElementKind::Q1 && pressure != PressureSpace::P0)
       blame({"formulation.pressure", "mesh.element"},
-            fmt::format("Q1 velocity with the {} pressure locks (more pressure than velocity "
-                        "freedom per cell)",
-                        fem::pressure_space_name(pressure)),
+            pressure == PressureSpace::Q1
+                ? std::string("Q1 velocity with the Q1 pressure is not inf-sup stable (spurious "
+                              "pressure modes, docs/mixed.md)")
+                : fmt::format("Q1 velocity with the {} pressure locks (more pressure than velocity "
+                              "freedom per cell)",
+                              fem::pressure_space_name(pressure)),
             "with mesh.element = \"Q1\" use formulation.pressure = \"P0\"; or mesh.element = \"Q2\"");
     if (case_.element == fem::ElementKind::Q1 && case_.penalty.d == 0)
       blame({"penalty.d", "mesh.element"},
