@@ -42,6 +42,9 @@ struct Formulation {
 /// and each Uzawa step sets λ_e ← λ_e + r_e M⁻¹ B u_e (fixed point: M⁻¹ B u = 0).
 /// Exact contact (d_N = 0) is the same at each Γ3 quadrature point: the term
 /// r_N u_N v_N, the load −λ_k v_N and λ_k ← λ_k + r_N u_N(x_k) (−σ_N = λ).
+/// A continuous pressure (Q1, Taylor–Hood) uses the same cell B and M but is not
+/// condensed: its vertex values are global unknowns of the saddle-point system
+/// (assembly/saddle_point_system.hpp), stored here; the cell adds only −Bᵀp.
 template <int dim> class ConstraintMultipliers {
 public:
   /// `full_rule` integrates B and M exactly on affine cells; `n_contact_points`
@@ -95,7 +98,8 @@ public:
   /// Global pressure (has_global_pressure only). Pressure dof of the cell's basis
   /// function i (vertex i, lexicographic; length pressure_functions_per_cell).
   std::span<const Index> cell_pressure_dofs(Index cell) const {
-    return {pressure_dofs_.data() + static_cast<std::size_t>(cell) * n_pressure_, static_cast<std::size_t>(n_pressure_)};
+    const auto size = static_cast<std::size_t>(n_pressure_);
+    return {pressure_dofs_.data() + static_cast<std::size_t>(cell) * size, size};
   }
   Index n_pressure_dofs() const { return n_pressure_dofs_; }
   /// Vertex values of σ_H (length n_pressure_dofs).
