@@ -58,52 +58,41 @@ std::pair<VectorX, VectorX> constraint_residual(const mesh::Mesh<2>& mesh, const
   return {residual, scale};
 }
 
-/// The runs shared by the benchmark tests (h = 1 and 0.5, d = 0): seconds each.
-class TaylorHoodBenchmark : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    coarse_ = new app::Simulation(app::simulate(sticking_ram(fem::PressureSpace::Q1, 0.0, 1.0)));
-    fine_ = new app::Simulation(app::simulate(sticking_ram(fem::PressureSpace::Q1, 0.0, 0.5)));
-    p1disc_ =
-        new app::Simulation(app::simulate(sticking_ram(fem::PressureSpace::P1disc, 0.0, 0.5)));
-  }
-  static void TearDownTestSuite() {
-    delete coarse_;
-    delete fine_;
-    delete p1disc_;
-  }
-  static app::Simulation *coarse_, *fine_, *p1disc_;
+/// The sticking-ram runs (d = 0) the benchmark checks share: Taylor–Hood at
+/// h = 1 and 0.5, Q2–P1disc at h = 0.5. One test runs them once (ctest starts
+/// a process per test, so a shared fixture would solve them three times).
+struct StickingRamRuns {
+  const app::Simulation& coarse;  ///< Taylor–Hood, h = 1
+  const app::Simulation& fine;    ///< Taylor–Hood, h = 0.5
+  const app::Simulation& p1disc;  ///< Q2–P1disc, h = 0.5
 };
-app::Simulation* TaylorHoodBenchmark::coarse_ = nullptr;
-app::Simulation* TaylorHoodBenchmark::fine_ = nullptr;
-app::Simulation* TaylorHoodBenchmark::p1disc_ = nullptr;
 
-TEST_F(TaylorHoodBenchmark, ExactConstraintHoldsForEveryQ1Pressure) {
-  for (const app::Simulation* run : {coarse_, fine_}) {
+void check_exact_constraint(const StickingRamRuns& runs) {
+  for (const app::Simulation* run : {&runs.coarse, &runs.fine}) {
     ASSERT_TRUE(run->results.converged());
     const auto [residual, scale] = constraint_residual(
         run->mesh, sticking_ram(fem::PressureSpace::Q1, 0.0, 1.0), run->results.fields.velocity);
     // Round-off of the LU solve: every (q_i, div u) cancels to ~1e-12 of its terms.
     // (Q2–P1disc's velocity, constrained against another space, fails this.)
     std::printf("Taylor-Hood h = %g: max |(q_i, div u)| = %.2e of terms up to %.2e\n",
-                run == coarse_ ? 1.0 : 0.5, residual.cwiseAbs().maxCoeff(), scale.maxCoeff());
+                run == &runs.coarse ? 1.0 : 0.5, residual.cwiseAbs().maxCoeff(), scale.maxCoeff());
     EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-9 * scale.maxCoeff());
     // The pressure term does no work; the ram reaction (with B_cᵀ p) equals the power.
     EXPECT_LT(std::abs(run->results.power.volumetric_penalty), 1e-8 * run->results.power.total());
     EXPECT_TRUE(approx(run->results.pressure.ram_reaction, run->results.pressure.total_power, 1e-4));
   }
   const auto [other, other_scale] = constraint_residual(
-      p1disc_->mesh, sticking_ram(fem::PressureSpace::Q1, 0.0, 0.5), p1disc_->results.fields.velocity);
+      runs.p1disc.mesh, sticking_ram(fem::PressureSpace::Q1, 0.0, 0.5), runs.p1disc.results.fields.velocity);
   EXPECT_GT(other.cwiseAbs().maxCoeff(), 1e-6 * other_scale.maxCoeff());
 }
 
-TEST_F(TaylorHoodBenchmark, AgreesWithQ2P1discAndApproachesTheSlipLineValue) {
-  const Real coarse = coarse_->results.pressure.ram_reaction;
-  const Real fine = fine_->results.pressure.ram_reaction;
-  const Real p1disc = p1disc_->results.pressure.ram_reaction;
+void check_agreement_with_q2p1disc(const StickingRamRuns& runs) {
+  const Real coarse = runs.coarse.results.pressure.ram_reaction;
+  const Real fine = runs.fine.results.pressure.ram_reaction;
+  const Real p1disc = runs.p1disc.results.pressure.ram_reaction;
   std::printf("ram pressure: Taylor-Hood h = 1: %.4f, h = 0.5: %.4f; Q2-P1disc h = 0.5: %.4f\n",
               coarse, fine, p1disc);
-  ASSERT_TRUE(p1disc_->results.converged());
+  ASSERT_TRUE(runs.p1disc.results.converged());
   // Both are upper bounds of a first-order approach to 2.5708 (docs/mixed.md):
   // Taylor–Hood's error at least halves from h = 1 to 0.5, and the two pairs
   // differ by less than Q2–P1disc's own discretisation error.
@@ -113,11 +102,11 @@ TEST_F(TaylorHoodBenchmark, AgreesWithQ2P1discAndApproachesTheSlipLineValue) {
   EXPECT_LT(std::abs(fine - p1disc), p1disc - slip_line_pressure);
 }
 
-TEST_F(TaylorHoodBenchmark, PressureFieldHasNoCheckerboard) {
+void check_pressure_is_smooth(const StickingRamRuns& runs) {
   const double coarse = testing::checkerboard_share(
-      coarse_->mesh, 1.0, coarse_->results.fields.cell_hydrostatic_stress, 8.0);
+      runs.coarse.mesh, 1.0, runs.coarse.results.fields.cell_hydrostatic_stress, 8.0);
   const double fine = testing::checkerboard_share(
-      fine_->mesh, 0.5, fine_->results.fields.cell_hydrostatic_stress, 8.0);
+      runs.fine.mesh, 0.5, runs.fine.results.fields.cell_hydrostatic_stress, 8.0);
   std::printf("Taylor-Hood checkerboard share: h = 1: %.3e, h = 0.5: %.3e\n", coarse, fine);
   // Cell means of a smooth field: O(h²) (Q1–P0's spurious mode stays ~0.1).
   EXPECT_LT(fine, 0.5 * coarse);
@@ -126,17 +115,37 @@ TEST_F(TaylorHoodBenchmark, PressureFieldHasNoCheckerboard) {
   // mid-nodes: on every cell (lexicographic Q2 nodes, vertices 0, 2, 6, 8) each
   // mid-edge value is the mean of its edge's vertices and the centre the mean of
   // all four — no averaging across cells has blurred it.
-  const VectorX& nodal = fine_->results.fields.hydrostatic_stress;
+  const mesh::Mesh<2>& mesh = runs.fine.mesh;
+  const VectorX& nodal = runs.fine.results.fields.hydrostatic_stress;
   EXPECT_GT(nodal.cwiseAbs().maxCoeff(), 1.0);
   Real mismatch = 0.0;
-  for (Index cell = 0; cell < fine_->mesh.n_cells(); ++cell) {
-    auto at = [&](int local) { return nodal[fine_->mesh.cells(local, cell)]; };
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    auto at = [&](int local) { return nodal[mesh.cells(local, cell)]; };
     for (auto [middle, first, second] : {std::array{1, 0, 2}, std::array{3, 0, 6},
                                          std::array{5, 2, 8}, std::array{7, 6, 8}})
       mismatch = std::max(mismatch, std::abs(at(middle) - 0.5 * (at(first) + at(second))));
     mismatch = std::max(mismatch, std::abs(at(4) - 0.25 * (at(0) + at(2) + at(6) + at(8))));
   }
   EXPECT_LT(mismatch, 1e-10 * nodal.cwiseAbs().maxCoeff());
+}
+
+TEST(TaylorHoodBenchmark, StickingRamAgainstQ2P1discAtH1AndH05) {
+  const app::Simulation coarse = app::simulate(sticking_ram(fem::PressureSpace::Q1, 0.0, 1.0));
+  const app::Simulation fine = app::simulate(sticking_ram(fem::PressureSpace::Q1, 0.0, 0.5));
+  const app::Simulation p1disc = app::simulate(sticking_ram(fem::PressureSpace::P1disc, 0.0, 0.5));
+  const StickingRamRuns runs{coarse, fine, p1disc};
+  {
+    SCOPED_TRACE("(q, div u) = 0 for every Q1 q; reaction = total power");
+    check_exact_constraint(runs);
+  }
+  {
+    SCOPED_TRACE("agreement with Q2-P1disc, approach to 2.5708");
+    check_agreement_with_q2p1disc(runs);
+  }
+  {
+    SCOPED_TRACE("no checkerboard; nodal field = Q1 pressure");
+    check_pressure_is_smooth(runs);
+  }
 }
 
 TEST(TaylorHood, PerturbedProblemApproachesTheExactOneLinearlyInD) {
