@@ -22,11 +22,12 @@ struct CliRun {
 };
 
 class TaylorHoodCli : public ::testing::Test {
- protected:
+protected:
   void SetUp() override {
     scratch_ = fs::temp_directory_path() /
-               ("formflow-th-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                "-" + std::to_string(getpid()));
+               ("formflow-th-" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" +
+                std::to_string(getpid()));
     fs::remove_all(scratch_);
     fs::create_directories(scratch_);
   }
@@ -36,8 +37,8 @@ class TaylorHoodCli : public ::testing::Test {
   CliRun run(const std::string& settings) const {
     const fs::path err = scratch_ / "stderr.txt";
     const std::string command = std::string("'") + FORMFLOW_BINARY + "' run -q -o '" +
-                                (scratch_ / "results").string() + "' " + settings + " > /dev/null 2> '" +
-                                err.string() + "'";
+                                (scratch_ / "results").string() + "' " + settings +
+                                " > /dev/null 2> '" + err.string() + "'";
     const int status = std::system(command.c_str());
     CliRun result;
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -59,14 +60,15 @@ constexpr const char* taylor_hood =
 TEST_F(TaylorHoodCli, RunsWithExactConstraintsAndWritesEveryResult) {
   const CliRun result = run(std::string(taylor_hood) + "--set penalty.d=0 --set penalty.dN=0");
   EXPECT_EQ(result.exit_code, 0) << result.err;
-  for (const char* file : {"summary.json", "fields.vtu", "contact.csv", "history.csv", "pressure.png"})
+  for (const char* file :
+       {"summary.json", "fields.vtu", "contact.csv", "history.csv", "pressure.png"})
     EXPECT_TRUE(fs::exists(scratch_ / "results" / file)) << file;
 }
 
 TEST_F(TaylorHoodCli, RefusedCombinationsExitTwoAndWriteNothing) {
-  for (const std::string extra : {"--set mesh.element=Q1",
-                                  "--set friction.regularization=none --set friction.mu=0.1",
-                                  "--set geometry.symmetry=axisymmetric"}) {
+  for (const std::string extra :
+       {"--set mesh.element=Q1", "--set friction.regularization=none --set friction.mu=0.1",
+        "--set geometry.symmetry=axisymmetric"}) {
     const CliRun result = run(std::string(taylor_hood) + extra);
     EXPECT_EQ(result.exit_code, 2) << extra << ": " << result.err;
     EXPECT_FALSE(wrote_results()) << extra;
@@ -74,4 +76,4 @@ TEST_F(TaylorHoodCli, RefusedCombinationsExitTwoAndWriteNothing) {
   }
 }
 
-}  // namespace
+} // namespace

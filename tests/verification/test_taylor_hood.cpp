@@ -24,7 +24,7 @@ namespace {
 
 using testing::approx;
 
-constexpr Real slip_line_pressure = 1.0 + M_PI / 2.0;  // (1 + π/2) k, SPEC §4
+constexpr Real slip_line_pressure = 1.0 + M_PI / 2.0; // (1 + π/2) k, SPEC §4
 
 io::Case sticking_ram(fem::PressureSpace space, Real d, Real size) {
   io::Case case_;
@@ -62,9 +62,9 @@ std::pair<VectorX, VectorX> constraint_residual(const mesh::Mesh<2>& mesh, const
 /// h = 1 and 0.5, Q2–P1disc at h = 0.5. One test runs them once (ctest starts
 /// a process per test, so a shared fixture would solve them three times).
 struct StickingRamRuns {
-  const app::Simulation& coarse;  ///< Taylor–Hood, h = 1
-  const app::Simulation& fine;    ///< Taylor–Hood, h = 0.5
-  const app::Simulation& p1disc;  ///< Q2–P1disc, h = 0.5
+  const app::Simulation& coarse; ///< Taylor–Hood, h = 1
+  const app::Simulation& fine;   ///< Taylor–Hood, h = 0.5
+  const app::Simulation& p1disc; ///< Q2–P1disc, h = 0.5
 };
 
 void check_exact_constraint(const StickingRamRuns& runs) {
@@ -79,10 +79,12 @@ void check_exact_constraint(const StickingRamRuns& runs) {
     EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-9 * scale.maxCoeff());
     // The pressure term does no work; the ram reaction (with B_cᵀ p) equals the power.
     EXPECT_LT(std::abs(run->results.power.volumetric_penalty), 1e-8 * run->results.power.total());
-    EXPECT_TRUE(approx(run->results.pressure.ram_reaction, run->results.pressure.total_power, 1e-4));
+    EXPECT_TRUE(
+        approx(run->results.pressure.ram_reaction, run->results.pressure.total_power, 1e-4));
   }
-  const auto [other, other_scale] = constraint_residual(
-      runs.p1disc.mesh, sticking_ram(fem::PressureSpace::Q1, 0.0, 0.5), runs.p1disc.results.fields.velocity);
+  const auto [other, other_scale] =
+      constraint_residual(runs.p1disc.mesh, sticking_ram(fem::PressureSpace::Q1, 0.0, 0.5),
+                          runs.p1disc.results.fields.velocity);
   EXPECT_GT(other.cwiseAbs().maxCoeff(), 1e-6 * other_scale.maxCoeff());
 }
 
@@ -121,8 +123,8 @@ void check_pressure_is_smooth(const StickingRamRuns& runs) {
   Real mismatch = 0.0;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     auto at = [&](int local) { return nodal[mesh.cells(local, cell)]; };
-    for (auto [middle, first, second] : {std::array{1, 0, 2}, std::array{3, 0, 6},
-                                         std::array{5, 2, 8}, std::array{7, 6, 8}})
+    for (auto [middle, first, second] :
+         {std::array{1, 0, 2}, std::array{3, 0, 6}, std::array{5, 2, 8}, std::array{7, 6, 8}})
       mismatch = std::max(mismatch, std::abs(at(middle) - 0.5 * (at(first) + at(second))));
     mismatch = std::max(mismatch, std::abs(at(4) - 0.25 * (at(0) + at(2) + at(6) + at(8))));
   }
@@ -164,10 +166,11 @@ TEST(TaylorHood, PerturbedProblemApproachesTheExactOneLinearlyInD) {
   const post::Results smaller = run(1e-7);
   const Real error_small = (small.fields.velocity - exact.fields.velocity).norm();
   const Real error_smaller = (smaller.fields.velocity - exact.fields.velocity).norm();
-  std::printf("Taylor-Hood |u_d - u_0|: d = 1e-6: %.3e, d = 1e-7: %.3e\n", error_small, error_smaller);
+  std::printf("Taylor-Hood |u_d - u_0|: d = 1e-6: %.3e, d = 1e-7: %.3e\n", error_small,
+              error_smaller);
   EXPECT_LT(error_small, 1e-3 * exact.fields.velocity.norm());
   const Real ratio = error_small / error_smaller;
-  EXPECT_GT(ratio, 7.0);  // O(d): ten times smaller d, ~ten times smaller error
+  EXPECT_GT(ratio, 7.0); // O(d): ten times smaller d, ~ten times smaller error
   EXPECT_LT(ratio, 14.0);
   EXPECT_TRUE(approx(small.pressure.ram_reaction, exact.pressure.ram_reaction, 1e-4));
 }
@@ -210,11 +213,13 @@ TEST(TaylorHood, ConstantPressureModeIsPinnedOnlyWhenEveryBoundaryVelocityIsPres
   for (Index node = 0; node < mesh.n_nodes(); ++node) {
     const Point<2> x = mesh.nodes.col(node);
     const bool boundary = x[0] < 1e-12 || x[0] > 1 - 1e-12 || x[1] < 1e-12 || x[1] > 1 - 1e-12;
-    if (!boundary) continue;
+    if (!boundary)
+      continue;
     constraints.prescribed[2 * node] = constraints.prescribed[2 * node + 1] = true;
-    if (x[1] > 1 - 1e-12 && x[0] > 1e-12 && x[0] < 1 - 1e-12) constraints.values[2 * node] = 1.0;
+    if (x[1] > 1 - 1e-12 && x[0] > 1e-12 && x[0] < 1 - 1e-12)
+      constraints.values[2 * node] = 1.0;
   }
-  constraints.driven_label = mesh::BoundaryLabel::FreeExit;  // the lid: y = 1
+  constraints.driven_label = mesh::BoundaryLabel::FreeExit; // the lid: y = 1
   assembly::FormingProblem<2> problem(mesh, settings, constraints, {});
   assembly::Formulation formulation;
   formulation.type = assembly::FormulationType::Mixed;
@@ -227,12 +232,12 @@ TEST(TaylorHood, ConstantPressureModeIsPinnedOnlyWhenEveryBoundaryVelocityIsPres
 
   auto solver = solvers::make_umfpack_solver();
   PhaseTimes times;
-  const solvers::SecantOutcome outcome =
-      solvers::saddle_point_secant_iteration(problem, *solver, solvers::IterationControl{}, {}, times);
+  const solvers::SecantOutcome outcome = solvers::saddle_point_secant_iteration(
+      problem, *solver, solvers::IterationControl{}, {}, times);
   ASSERT_EQ(outcome.stop_reason, solvers::StopReason::Converged);
   const VectorX& pressure = multipliers.global_pressure();
   ASSERT_TRUE(pressure.allFinite());
-  EXPECT_GT(pressure.cwiseAbs().maxCoeff(), 1e-2);  // a real pressure, corners singular
+  EXPECT_GT(pressure.cwiseAbs().maxCoeff(), 1e-2); // a real pressure, corners singular
   // Zero mean, ∫ p dx = 0 (the level fixed explicitly).
   Real integral = 0.0, magnitude = 0.0;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
@@ -247,9 +252,10 @@ TEST(TaylorHood, ConstantPressureModeIsPinnedOnlyWhenEveryBoundaryVelocityIsPres
   assembly::ConstraintMultipliers<2> channel_pressure(channel_mesh, channel.settings().penalty,
                                                       formulation, channel.full_rule(),
                                                       channel.n_contact_points());
-  EXPECT_FALSE(assembly::SaddlePointSystem<2>(channel, channel_pressure, channel.plan().make_system())
-                   .has_pinned_pressure());
+  EXPECT_FALSE(
+      assembly::SaddlePointSystem<2>(channel, channel_pressure, channel.plan().make_system())
+          .has_pinned_pressure());
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -20,16 +20,14 @@ SparseMatrix from_triplets(Index rows, Index columns, const Triplets& triplets) 
   return matrix;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
                                           const ConstraintMultipliers<dim>& multipliers,
                                           const LinearSystem& pattern)
-    : problem_(problem),
-      n_velocity_(problem.plan().n_free()),
-      n_pressure_(multipliers.n_pressure_dofs()),
-      d_(multipliers.penalty().d) {
+    : problem_(problem), n_velocity_(problem.plan().n_free()),
+      n_pressure_(multipliers.n_pressure_dofs()), d_(multipliers.penalty().d) {
   FF_ASSERT(multipliers.has_global_pressure(), "the saddle-point system is for a global pressure");
   FF_ASSERT(pattern.matrix.isCompressed(), "slots are offsets into a compressed matrix");
   const auto& mesh = problem.mesh();
@@ -56,12 +54,13 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
   divergence_free_ = from_triplets(n_pressure_, n_velocity_, free_entries);
   divergence_prescribed_ = from_triplets(n_pressure_, problem.n_dofs(), prescribed_entries);
   mass_ = from_triplets(n_pressure_, n_pressure_, mass_entries);
-  pressure_weights_ = mass_ * VectorX::Ones(n_pressure_);  // Σ_j ψ_j = 1
+  pressure_weights_ = mass_ * VectorX::Ones(n_pressure_); // Σ_j ψ_j = 1
 
   // The constant pressure is a null mode iff Bᵀ 1 = 0 on the free dofs (d = 0 only).
   const VectorX constant_work = divergence_free_.transpose() * VectorX::Ones(n_pressure_);
-  const Real largest = Eigen::Map<const VectorX>(divergence_free_.valuePtr(), divergence_free_.nonZeros())
-                           .lpNorm<Eigen::Infinity>();
+  const Real largest =
+      Eigen::Map<const VectorX>(divergence_free_.valuePtr(), divergence_free_.nonZeros())
+          .lpNorm<Eigen::Infinity>();
   pinned_ = d_ == 0 && constant_work.lpNorm<Eigen::Infinity>() <= 1e-10 * largest;
 
   // Pattern: A (both triangles), B and Bᵀ, the pressure block; values 0 for now.
@@ -76,7 +75,8 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
   Triplets fixed;
   for (Index column = 0; column < divergence_free_.outerSize(); ++column)
     for (SparseMatrix::InnerIterator it(divergence_free_, column); it; ++it) {
-      if (pinned_ && it.row() == 0) continue;
+      if (pinned_ && it.row() == 0)
+        continue;
       fixed.emplace_back(n_velocity_ + it.row(), column, it.value());
       fixed.emplace_back(column, n_velocity_ + it.row(), it.value());
     }
@@ -84,13 +84,16 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
     for (Index column = 0; column < mass_.outerSize(); ++column)
       for (SparseMatrix::InnerIterator it(mass_, column); it; ++it)
         fixed.emplace_back(n_velocity_ + it.row(), n_velocity_ + column, -d_ * it.value());
-  if (pinned_) fixed.emplace_back(n_velocity_, n_velocity_, 1.0);
-  for (const auto& entry : fixed) entries.emplace_back(entry.row(), entry.col(), 0.0);
+  if (pinned_)
+    fixed.emplace_back(n_velocity_, n_velocity_, 1.0);
+  for (const auto& entry : fixed)
+    entries.emplace_back(entry.row(), entry.col(), 0.0);
   const Index size = n_velocity_ + n_pressure_;
   matrix_ = from_triplets(size, size, entries);
 
   static_values_.assign(static_cast<std::size_t>(matrix_.nonZeros()), 0.0);
-  for (const auto& entry : fixed) static_values_[slot(entry.row(), entry.col())] += entry.value();
+  for (const auto& entry : fixed)
+    static_values_[slot(entry.row(), entry.col())] += entry.value();
   for (Index column = 0; column < lower.outerSize(); ++column)
     for (Index k = lower.outerIndexPtr()[column]; k < lower.outerIndexPtr()[column + 1]; ++k) {
       const Index row = lower.innerIndexPtr()[k];
@@ -99,8 +102,7 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
     }
 }
 
-template <int dim>
-Index SaddlePointSystem<dim>::slot(Index row, Index column) const {
+template <int dim> Index SaddlePointSystem<dim>::slot(Index row, Index column) const {
   const Index* begin = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[column];
   const Index* end = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[column + 1];
   const Index* found = std::lower_bound(begin, end, row);
@@ -108,8 +110,7 @@ Index SaddlePointSystem<dim>::slot(Index row, Index column) const {
   return static_cast<Index>(found - matrix_.innerIndexPtr());
 }
 
-template <int dim>
-void SaddlePointSystem<dim>::fill_matrix(const LinearSystem& velocity) {
+template <int dim> void SaddlePointSystem<dim>::fill_matrix(const LinearSystem& velocity) {
   FF_ASSERT(velocity.matrix.nonZeros() == static_cast<Index>(lower_slot_.size()),
             "the velocity matrix keeps the pattern it was built with");
   Real* values = matrix_.valuePtr();
@@ -117,7 +118,8 @@ void SaddlePointSystem<dim>::fill_matrix(const LinearSystem& velocity) {
   const Real* lower = velocity.matrix.valuePtr();
   for (std::size_t k = 0; k < lower_slot_.size(); ++k) {
     values[lower_slot_[k]] += lower[k];
-    if (upper_slot_[k] >= 0) values[upper_slot_[k]] += lower[k];
+    if (upper_slot_[k] >= 0)
+      values[upper_slot_[k]] += lower[k];
   }
 }
 
@@ -127,13 +129,16 @@ VectorX SaddlePointSystem<dim>::rhs(const LinearSystem& velocity, const VectorX&
   rhs.head(n_velocity_) = velocity.rhs;
   // B u − d M (p + δp) = 0 with the prescribed velocities moved across.
   rhs.tail(n_pressure_) = -(divergence_prescribed_ * problem_.constraints().values);
-  if (d_ > 0) rhs.tail(n_pressure_) += d_ * (mass_ * pressure);
-  if (pinned_) rhs[n_velocity_] = 0.0;  // δp_0 = 0
+  if (d_ > 0)
+    rhs.tail(n_pressure_) += d_ * (mass_ * pressure);
+  if (pinned_)
+    rhs[n_velocity_] = 0.0; // δp_0 = 0
   return rhs;
 }
 
 template <int dim>
-void SaddlePointSystem<dim>::add_pressure_load(const VectorX& increment, LinearSystem& velocity) const {
+void SaddlePointSystem<dim>::add_pressure_load(const VectorX& increment,
+                                               LinearSystem& velocity) const {
   velocity.rhs -= divergence_free_.transpose() * increment;
   const VectorX prescribed = divergence_prescribed_.transpose() * increment;
   const ScatterPlan& plan = problem_.plan();
@@ -142,13 +147,13 @@ void SaddlePointSystem<dim>::add_pressure_load(const VectorX& increment, LinearS
       velocity.prescribed_loads[row] -= prescribed[dof];
 }
 
-template <int dim>
-void SaddlePointSystem<dim>::fix_pressure_level(VectorX& pressure) const {
-  if (!pinned_) return;
+template <int dim> void SaddlePointSystem<dim>::fix_pressure_level(VectorX& pressure) const {
+  if (!pinned_)
+    return;
   pressure.array() -= pressure_weights_.dot(pressure) / pressure_weights_.sum();
 }
 
 template class SaddlePointSystem<2>;
 template class SaddlePointSystem<3>;
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

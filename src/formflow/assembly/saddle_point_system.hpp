@@ -24,13 +24,12 @@ namespace formflow::assembly {
 /// every free dof). Then the first pressure dof is pinned (row and column replaced
 /// by the identity) and every solution is shifted to zero mean, ∫ p dx = 0.
 /// The benchmark has free surfaces and Γ3 is not prescribed: no pin there.
-template <int dim>
-class SaddlePointSystem {
- public:
+template <int dim> class SaddlePointSystem {
+public:
   /// `multipliers` must have a global pressure; `pattern` is a velocity system
   /// from problem.plan().make_system() (its lower-triangle pattern is A's).
-  SaddlePointSystem(const FormingProblem<dim>& problem, const ConstraintMultipliers<dim>& multipliers,
-                    const LinearSystem& pattern);
+  SaddlePointSystem(const FormingProblem<dim>& problem,
+                    const ConstraintMultipliers<dim>& multipliers, const LinearSystem& pattern);
 
   /// Copies the assembled velocity matrix (lower triangle) into the full matrix.
   void fill_matrix(const LinearSystem& velocity);
@@ -47,20 +46,21 @@ class SaddlePointSystem {
   Index n_pressure() const { return n_pressure_; }
   bool has_pinned_pressure() const { return pinned_; }
 
- private:
+private:
   Index slot(Index row, Index column) const;
 
   const FormingProblem<dim>& problem_;
   Index n_velocity_ = 0, n_pressure_ = 0;
   Real d_ = 0.0;
   bool pinned_ = false;
-  SparseMatrix divergence_free_;       ///< B on the free velocity dofs, n_p × n_free
-  SparseMatrix divergence_prescribed_; ///< B on the prescribed dofs, n_p × n_dofs (other columns empty)
-  SparseMatrix mass_;                  ///< M, n_p × n_p
-  VectorX pressure_weights_;           ///< ∫ ψ_i dx
-  SparseMatrix matrix_;                ///< the full saddle-point matrix
-  std::vector<Real> static_values_;    ///< B, Bᵀ, −dM (and the pin) in matrix_'s slots
+  SparseMatrix divergence_free_; ///< B on the free velocity dofs, n_p × n_free
+  SparseMatrix
+      divergence_prescribed_; ///< B on the prescribed dofs, n_p × n_dofs (other columns empty)
+  SparseMatrix mass_;         ///< M, n_p × n_p
+  VectorX pressure_weights_;  ///< ∫ ψ_i dx
+  SparseMatrix matrix_;       ///< the full saddle-point matrix
+  std::vector<Real> static_values_;            ///< B, Bᵀ, −dM (and the pin) in matrix_'s slots
   std::vector<Index> lower_slot_, upper_slot_; ///< per value of A's lower triangle (−1: diagonal)
 };
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

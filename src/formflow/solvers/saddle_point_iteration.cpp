@@ -33,16 +33,18 @@ SaddleStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
   for (int step = 0; step < max_steps; ++step) {
     {
       ScopedTimer timer(times, "assembly");
-      problem.assemble(w, system);  // same matrix each step; the loads −Bᵀp, −λ_N v_N change
+      problem.assemble(w, system); // same matrix each step; the loads −Bᵀp, −λ_N v_N change
     }
     if (step == 0) {
       saddle.fill_matrix(system);
       if (analyse) {
         ScopedTimer timer(times, "analysis");
-        if (!solver.analyze(saddle.matrix())) return {StopReason::SolverFailed, false};
+        if (!solver.analyze(saddle.matrix()))
+          return {StopReason::SolverFailed, false};
       }
       ScopedTimer timer(times, "factorization");
-      if (!solver.factorize(saddle.matrix())) return {StopReason::SolverFailed, false};
+      if (!solver.factorize(saddle.matrix()))
+        return {StopReason::SolverFailed, false};
     }
     const VectorX& pressure = multipliers.global_pressure();
     VectorX solution;
@@ -51,8 +53,10 @@ SaddleStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
       if (!solver.solve(saddle.rhs(system, pressure), solution))
         return {StopReason::SolverFailed, false};
     }
-    if (!solution.allFinite()) return {StopReason::NonFinite, false};
-    velocity = problem.plan().expand(solution.head(saddle.n_velocity()), problem.constraints().values);
+    if (!solution.allFinite())
+      return {StopReason::NonFinite, false};
+    velocity =
+        problem.plan().expand(solution.head(saddle.n_velocity()), problem.constraints().values);
     VectorX next_pressure = pressure + solution.tail(saddle.n_pressure());
     saddle.fix_pressure_level(next_pressure);
     // The reaction read from `system` must include the new pressure's load.
@@ -63,9 +67,11 @@ SaddleStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
       break;
     }
     std::vector<Real> normal_velocity;
-    for (const auto& point : problem.contact_state(velocity)) normal_velocity.push_back(point.normal_velocity);
+    for (const auto& point : problem.contact_state(velocity))
+      normal_velocity.push_back(point.normal_velocity);
     const Real change = multipliers.update(velocity, normal_velocity);
-    if (!std::isfinite(change)) return {StopReason::NonFinite, false};
+    if (!std::isfinite(change))
+      return {StopReason::NonFinite, false};
     if (change < formulation.uzawa_tolerance) {
       result.constraints_converged = true;
       break;
@@ -74,13 +80,14 @@ SaddleStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
   return result;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
-SecantOutcome saddle_point_secant_iteration(
-    const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
-    const IterationControl& control, const std::function<void(const IterationRecord&)>& on_iteration,
-    PhaseTimes& times) {
+SecantOutcome
+saddle_point_secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+                              const IterationControl& control,
+                              const std::function<void(const IterationRecord&)>& on_iteration,
+                              PhaseTimes& times) {
   FF_ASSERT(problem.multipliers() && problem.multipliers()->has_global_pressure(),
             "a saddle-point solve needs a global pressure");
   SecantOutcome outcome;
@@ -112,10 +119,12 @@ SecantOutcome saddle_point_secant_iteration(
     record.relative_change = change;
     // Reaction of the last system solved, its pressure load included: K_c· u + B_cᵀ p.
     record.pressure = problem.driven_force(system, next) / problem.driven_height();
-    record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.velocity = std::move(next);
     outcome.history.push_back(record);
-    if (on_iteration) on_iteration(record);
+    if (on_iteration)
+      on_iteration(record);
     if (const auto stop = stop_after_iteration(change, change, record.pressure, control.tolerance,
                                                step.constraints_converged)) {
       outcome.stop_reason = *stop;
@@ -126,11 +135,13 @@ SecantOutcome saddle_point_secant_iteration(
   return outcome;
 }
 
-template SecantOutcome saddle_point_secant_iteration<2>(
-    const assembly::FormingProblem<2>&, LinearSolver&, const IterationControl&,
-    const std::function<void(const IterationRecord&)>&, PhaseTimes&);
-template SecantOutcome saddle_point_secant_iteration<3>(
-    const assembly::FormingProblem<3>&, LinearSolver&, const IterationControl&,
-    const std::function<void(const IterationRecord&)>&, PhaseTimes&);
+template SecantOutcome
+saddle_point_secant_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
+                                 const IterationControl&,
+                                 const std::function<void(const IterationRecord&)>&, PhaseTimes&);
+template SecantOutcome
+saddle_point_secant_iteration<3>(const assembly::FormingProblem<3>&, LinearSolver&,
+                                 const IterationControl&,
+                                 const std::function<void(const IterationRecord&)>&, PhaseTimes&);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

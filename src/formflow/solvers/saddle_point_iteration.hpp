@@ -18,9 +18,10 @@ namespace formflow::solvers {
 /// converged only when they have settled. Stop rule, records and timers as in
 /// secant_iteration; the pressure ends in the multipliers (global_pressure).
 template <int dim>
-SecantOutcome saddle_point_secant_iteration(
-    const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
-    const IterationControl& control, const std::function<void(const IterationRecord&)>& on_iteration,
-    PhaseTimes& times);
+SecantOutcome
+saddle_point_secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+                              const IterationControl& control,
+                              const std::function<void(const IterationRecord&)>& on_iteration,
+                              PhaseTimes& times);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -20,8 +20,10 @@ namespace {
 /// at h = 0.5 needs 1.24e8 flops per factorisation against 4.6e7 (and 4.6e8 at
 /// h = 0.25), with only 5 off-diagonal pivots (UMFPACK's own report).
 class UmfpackSolver final : public LinearSolver {
- public:
-  UmfpackSolver() { factorization_.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC; }
+public:
+  UmfpackSolver() {
+    factorization_.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
+  }
   bool analyze(const assembly::SparseMatrix& full) override {
     factorization_.analyzePattern(full);
     return factorization_.info() == Eigen::Success;
@@ -36,12 +38,14 @@ class UmfpackSolver final : public LinearSolver {
   }
   std::string name() const override { return "umfpack-lu"; }
 
- private:
+private:
   Eigen::UmfPackLU<assembly::SparseMatrix> factorization_;
 };
 
-}  // namespace
+} // namespace
 
-std::unique_ptr<LinearSolver> make_umfpack_solver() { return std::make_unique<UmfpackSolver>(); }
+std::unique_ptr<LinearSolver> make_umfpack_solver() {
+  return std::make_unique<UmfpackSolver>();
+}
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers
