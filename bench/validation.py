@@ -7,7 +7,7 @@ Runs formflow on each case (plane strip drawing, axisymmetric wire drawing and
 rod extrusion), reads summary.json and prints Markdown tables. Stresses are in
 units of the shear yield stress k = σ_p/√3 ≈ 1 (material.A = √3).
 Usage: python3 bench/validation.py [--binary build/formflow] [--out /tmp/ff-validation]
-                                   [--size 0.0625] [--alpha 1e-4]
+                                   [--size 0.0625] [--alpha 1e-4] [--normals faces|nodes]
 """
 import argparse
 import json
@@ -21,15 +21,16 @@ import forming_references as ref  # noqa: E402
 
 
 class Runner:
-    def __init__(self, binary, out, size, alpha):
+    def __init__(self, binary, out, size, alpha, normals="faces"):
         self.binary, self.out, self.size, self.alpha = binary, Path(out), size, alpha
+        self.normals = normals
 
     def solve(self, name, settings):
         """Unit entry half height, entry part 2 long, exit part 2 long, Q2."""
         base = {"geometry.die": "wedge", "geometry.entry_half_height": 1,
                 "geometry.container_length": 2, "geometry.exit_length": 2,
                 "mesh.size": self.size, "mesh.element": "Q2", "material.alpha": self.alpha,
-                "solver.max_iterations": 2000}
+                "solver.max_iterations": 2000, "contact.normals": f'"{self.normals}"'}
         base.update(settings)
         directory = self.out / name
         # docs/validation.md reports the secant iteration's counts (Newton is the default).
@@ -114,8 +115,10 @@ def main():
     parser.add_argument("--size", default="0.0625")
     parser.add_argument("--alpha", default="1e-4")
     parser.add_argument("--only", choices=["slip-line", "friction", "wire", "rod"])
+    parser.add_argument("--normals", default="faces", choices=["faces", "nodes"],
+                        help="contact.normals (docs/validation.md, contact normals)")
     args = parser.parse_args()
-    run = Runner(args.binary, args.out, args.size, args.alpha)
+    run = Runner(args.binary, args.out, args.size, args.alpha, args.normals)
     tables = {"slip-line": ("Plane-strain wedge dies, frictionless, Hill's special reduction",
                             lambda: plane_slip_line_table(run)),
               "friction": ("Plane-strain strip drawing with Coulomb friction",
@@ -126,7 +129,8 @@ def main():
     for name, (title, table) in tables.items():
         if args.only and name != args.only:
             continue
-        print(f"\n### {title} (mesh.size = {args.size}, material.alpha = {args.alpha})\n")
+        print(f"\n### {title} (mesh.size = {args.size}, material.alpha = {args.alpha}, "
+              f"contact.normals = {args.normals})\n")
         table()
 
 

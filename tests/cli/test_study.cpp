@@ -1,15 +1,11 @@
 // SPDX-License-Identifier: MIT
 // `formflow study`: files written on success, exit 2 with nothing written on bad input,
 // exit 3 with marked files when a rung does not converge.
+#include "support/run_cli.hpp"
+
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace {
@@ -18,37 +14,18 @@ namespace fs = std::filesystem;
 
 class StudyCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    scratch_ = fs::temp_directory_path() /
-               ("formflow-study-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(scratch_);
-    fs::create_directories(scratch_);
-  }
-  void TearDown() override { fs::remove_all(scratch_); }
-
-  /// Runs `formflow study ARGS -o OUT`; returns the exit code, stderr in `err_`.
+  /// Runs `formflow study ARGS -q -o OUT`; returns the exit code, stderr in `err_`.
   int study(const std::string& arguments) {
-    const fs::path err = scratch_ / "stderr.txt";
-    const std::string command = "'" + std::string(FORMFLOW_BINARY) + "' study " + arguments +
-                                " -q -o '" + output().string() + "' > /dev/null 2> '" +
-                                err.string() + "'";
-    const int status = std::system(command.c_str());
-    std::ifstream stream(err);
-    std::ostringstream text;
-    text << stream.rdbuf();
-    err_ = text.str();
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const formflow::testing::CliResult result = formflow::testing::run_cli(
+        "study " + arguments + " -q -o " + formflow::testing::quoted(output().string()),
+        scratch_.path());
+    err_ = result.err;
+    return result.exit_code;
   }
   fs::path output() const { return scratch_ / "out"; }
-  std::string csv() const {
-    std::ifstream stream(output() / "study.csv");
-    std::ostringstream text;
-    text << stream.rdbuf();
-    return text.str();
-  }
+  std::string csv() const { return formflow::testing::read_text(output() / "study.csv"); }
 
-  fs::path scratch_;
+  formflow::testing::ScratchDirectory scratch_{"formflow-study"};
   std::string err_;
 };
 

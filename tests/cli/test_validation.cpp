@@ -1,65 +1,26 @@
 // SPDX-License-Identifier: MIT
 // The formflow binary on bad input: exit code 2, file:line, key and hint on stderr, nothing
 // written.
+#include "support/run_cli.hpp"
+
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct RunResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
-
-std::string quoted(const std::string& text) {
-  return "'" + text + "'";
-}
-
-::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
-}
+using formflow::testing::CliResult;
+using formflow::testing::has_text;
+using formflow::testing::quoted;
+using formflow::testing::read_text;
 
 class Validation : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    scratch_ = fs::temp_directory_path() /
-               ("formflow-cli-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(scratch_);
-    fs::create_directories(scratch_);
-  }
-  void TearDown() override { fs::remove_all(scratch_); }
-
   /// Runs the binary with `arguments` (already shell-quoted), capturing both streams.
-  RunResult run(const std::string& arguments) const {
-    const fs::path out = scratch_ / "stdout.txt", err = scratch_ / "stderr.txt";
-    const std::string command = quoted(FORMFLOW_BINARY) + " " + arguments + " > " +
-                                quoted(out.string()) + " 2> " + quoted(err.string());
-    const int status = std::system(command.c_str());
-    RunResult result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_text(out);
-    result.err = read_text(err);
-    return result;
+  CliResult run(const std::string& arguments) const {
+    return formflow::testing::run_cli(arguments, scratch_.path());
   }
 
   static std::string fixture(const std::string& name) {
@@ -69,7 +30,7 @@ class Validation : public ::testing::Test {
   /// An output directory inside the scratch area that does not exist yet.
   fs::path fresh_output() const { return scratch_ / "results"; }
 
-  fs::path scratch_;
+  formflow::testing::ScratchDirectory scratch_{"formflow-cli"};
 };
 
 struct BadCase {
@@ -85,6 +46,7 @@ const BadCase bad_cases[] = {
     {"wrong-type.toml", 4, "mesh.size", "expected a real number"},
     {"negative-mu.toml", 3, "friction.mu", "must be ≥ 0"},
     {"mesh-size-unfit.toml", 4, "mesh.size", "0.3125 (= 10/32)"},
+    {"mesh-too-large.toml", 5, "mesh.size", "1.5e+10 cells"},
     {"bad-element.toml", 3, "mesh.element", "valid values: \"Q1\", \"Q2\""},
     {"syntax-error.toml", 4, "syntax", "radius = 0.5 0.5"},
     {"exit-above-entry.toml", 4, "geometry.exit_half_height", "< geometry.entry_half_height"},
@@ -93,6 +55,13 @@ const BadCase bad_cases[] = {
     {"bad-friction-regularization.toml", 4, "friction.regularization",
      "valid values: \"regularized\", \"none\""},
     {"zero-augmentation.toml", 5, "friction.augmentation", "must be"},
+    // Die geometry.
+    {"die-angle-90.toml", 4, "geometry.die_angle", "0 < value < 90"},
+    {"die-no-reduction.toml", 5, "geometry.exit_half_height", "< geometry.entry_half_height"},
+    {"die-arc-too-small.toml", 4, "geometry.die_radius", "≥ entry_half_height − exit_half_height = 5"},
+    {"die-profile-widens.toml", 4, "geometry.die_profile", "y increases at point 3"},
+    {"die-profile-wrong-end.toml", 4, "geometry.die_profile", "end the profile at y = "},
+    {"die-land-unfit.toml", 4, "geometry.land_length", "not a multiple of mesh.size"},
 };
 
 TEST_F(Validation, RunOnBadInputExitsTwoAndWritesNothing) {
@@ -100,7 +69,7 @@ TEST_F(Validation, RunOnBadInputExitsTwoAndWritesNothing) {
     SCOPED_TRACE(bad.file);
     const fs::path output = fresh_output();
     const std::string path = fixture(bad.file);
-    const RunResult result = run("run " + quoted(path) + " -o " + quoted(output.string()));
+    const CliResult result = run("run " + quoted(path) + " -o " + quoted(output.string()));
     EXPECT_EQ(result.exit_code, 2) << result.err;
     EXPECT_TRUE(has_text(result.err, "error: " + path + ":" + std::to_string(bad.line) + ": "));
     EXPECT_TRUE(has_text(result.err, ": " + bad.key + ": "));
@@ -113,7 +82,7 @@ TEST_F(Validation, RunOnBadInputExitsTwoAndWritesNothing) {
 TEST_F(Validation, ExistingOutputDirectoryStaysEmpty) {
   const fs::path output = fresh_output();
   fs::create_directories(output);
-  const RunResult result =
+  const CliResult result =
       run("run " + quoted(fixture("negative-mu.toml")) + " -o " + quoted(output.string()));
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_TRUE(fs::is_empty(output)) << "files were written for a bad case";
@@ -123,7 +92,7 @@ TEST_F(Validation, BadOverrideExitsTwoNamingSet) {
   const fs::path output = fresh_output();
   const std::string good =
       (fs::path(FORMFLOW_SOURCE_DIR) / "cases" / "paper-q2-2x2-mesh2.toml").string();
-  const RunResult result =
+  const CliResult result =
       run("run " + quoted(good) + " -o " + quoted(output.string()) + " --set friction.muu=0.1");
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_TRUE(has_text(result.err, "error: --set: friction.muu: unknown key"));
@@ -134,7 +103,7 @@ TEST_F(Validation, BadOverrideExitsTwoNamingSet) {
 TEST_F(Validation, MissingCaseFileExitsTwo) {
   const std::string missing = (scratch_ / "no-such-case.toml").string();
   const fs::path output = fresh_output();
-  const RunResult result = run("run " + quoted(missing) + " -o " + quoted(output.string()));
+  const CliResult result = run("run " + quoted(missing) + " -o " + quoted(output.string()));
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_TRUE(has_text(result.err, "error: " + missing + ": case file: no such file"));
   EXPECT_FALSE(fs::exists(output));
@@ -143,19 +112,19 @@ TEST_F(Validation, MissingCaseFileExitsTwo) {
 TEST_F(Validation, CheckAcceptsAGoodCaseAndRejectsABadOne) {
   const std::string good =
       (fs::path(FORMFLOW_SOURCE_DIR) / "cases" / "paper-q2-1x1-mesh1.toml").string();
-  const RunResult valid = run("check " + quoted(good));
+  const CliResult valid = run("check " + quoted(good));
   EXPECT_EQ(valid.exit_code, 0) << valid.err;
   EXPECT_TRUE(valid.err.empty()) << valid.err;
-  const RunResult invalid = run("check " + quoted(fixture("bad-element.toml")));
+  const CliResult invalid = run("check " + quoted(fixture("bad-element.toml")));
   EXPECT_EQ(invalid.exit_code, 2);
   EXPECT_TRUE(has_text(invalid.err, fixture("bad-element.toml") + ":3: mesh.element: "));
-  const RunResult overridden = run("check " + quoted(good) + " --set mesh.element=Q3");
+  const CliResult overridden = run("check " + quoted(good) + " --set mesh.element=Q3");
   EXPECT_EQ(overridden.exit_code, 2);
   EXPECT_TRUE(has_text(overridden.err, "--set: mesh.element: invalid value \"Q3\""));
 }
 
 TEST_F(Validation, CaseReferenceMatchesTheDocs) {
-  const RunResult result = run("case-reference");
+  const CliResult result = run("case-reference");
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.out, read_text(fs::path(FORMFLOW_SOURCE_DIR) / "docs" / "case-reference.md"))
       << "regenerate with `build/formflow case-reference > docs/case-reference.md`";

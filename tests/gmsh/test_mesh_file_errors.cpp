@@ -3,32 +3,23 @@
 // is exit 2 with file:line, key and a hint, and nothing is written.
 #include "gmsh/gmsh_test_mesh.hpp"
 
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "support/run_cli.hpp"
 
-#include <cstdlib>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 namespace formflow {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
-
-::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
-}
+using testing::has_text;
+using testing::quoted;
+using testing::read_text;
 
 /// The boundary map of two_squares(), as lines 6–10 of the case file.
 const std::string full_map =
@@ -40,14 +31,7 @@ const std::string full_map =
 
 class MeshFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    scratch_ = fs::temp_directory_path() /
-               ("formflow-meshfile-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(scratch_);
-    fs::create_directories(scratch_ / "meshes");
-  }
-  void TearDown() override { fs::remove_all(scratch_); }
+  MeshFile() { fs::create_directories(scratch_ / "meshes"); }
 
   /// Writes `mesh` to meshes/m.msh and a case that reads it (mesh.file relative
   /// to the case file: line 4; [mesh.boundaries] from line 6); runs `formflow
@@ -62,13 +46,11 @@ class MeshFile : public ::testing::Test {
                              << "file = \"" << file << "\"\n"
                              << "\n"
                              << boundaries;
-    const fs::path err = scratch_ / "stderr.txt";
-    const std::string command = "'" + std::string(FORMFLOW_BINARY) + "' run '" +
-                                case_path.string() + "' -q -o '" + (scratch_ / "out").string() +
-                                "' > /dev/null 2> '" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    error_ = read_text(err);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const testing::CliResult result = testing::run_cli(
+        "run " + quoted(case_path.string()) + " -q -o " + quoted((scratch_ / "out").string()),
+        scratch_.path());
+    error_ = result.err;
+    return result.exit_code;
   }
 
   /// Exit 2, the case file and line, the key, and no output directory.
@@ -80,24 +62,30 @@ class MeshFile : public ::testing::Test {
     EXPECT_FALSE(fs::exists(scratch_ / "out")) << "nothing may be written on bad input";
   }
 
-  fs::path scratch_;
+  testing::ScratchDirectory scratch_{"formflow-meshfile"};
   std::string error_;
 };
 
 TEST_F(MeshFile, AGoodMeshIsSolved) {
   // Two Q1 cells pushed by the ram under a frictionless wall: converges (exit 0).
   EXPECT_EQ(run_with(testing::two_squares()), 0) << error_;
-  EXPECT_TRUE(fs::exists(scratch_ / "out" / "summary.json"));
+  ASSERT_TRUE(fs::exists(scratch_ / "out" / "summary.json"));
+  // summary.json describes the mesh read, not the structured mesh.size key.
+  const auto mesh = nlohmann::json::parse(read_text(scratch_ / "out" / "summary.json")).at("mesh");
+  EXPECT_EQ(mesh.at("source"), "file");
+  EXPECT_EQ(mesh.at("elements"), 2);
+  EXPECT_TRUE(mesh.at("size").is_null());
+  EXPECT_DOUBLE_EQ(mesh.at("min_cell_diameter").get<double>(), std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(mesh.at("max_cell_diameter").get<double>(), std::sqrt(2.0));
 }
 
 TEST_F(MeshFile, TheShippedCaseReadsItsMeshRelativeToTheCaseFile) {
   // Run from the scratch directory: mesh.file must be found next to the case file, not in cwd.
   const fs::path case_path = fs::path(FORMFLOW_SOURCE_DIR) / "cases" / "wedge-die-msh.toml";
-  const std::string command = "cd '" + scratch_.string() + "' && '" + FORMFLOW_BINARY +
-                              "' check '" + case_path.string() + "' > out.txt 2>&1";
-  const int status = std::system(command.c_str());
-  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << read_text(scratch_ / "out.txt");
-  EXPECT_TRUE(has_text(read_text(scratch_ / "out.txt"), "valid (240 cells, 1025 nodes)"));
+  const testing::CliResult result =
+      testing::run_cli("check " + quoted(case_path.string()), scratch_.path(), scratch_.path());
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(has_text(result.out + result.err, "valid (240 cells, 1025 nodes)"));
 }
 
 TEST_F(MeshFile, MissingFile) {
@@ -171,9 +159,9 @@ TEST_F(MeshFile, DrivenEndMissing) {
 }
 
 TEST_F(MeshFile, InvalidPartName) {
+  // Blamed on the entry's own line (11), not on the [mesh.boundaries] header (6).
   const int code = run_with(testing::two_squares(), "Q1", full_map + "extra = \"wall\"\n");
-  EXPECT_EQ(code, 2);
-  EXPECT_TRUE(has_text(error_, ": mesh.boundaries: invalid value \"wall\" for \"extra\""));
+  expect_input_error(code, 11, "mesh.boundaries", "invalid value \"wall\" for \"extra\"");
   EXPECT_TRUE(has_text(error_, "\"rear\", \"free_entry\", \"container\""));
 }
 

@@ -12,6 +12,7 @@
 #include "formflow/physics/kinematics.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "support/approx.hpp"
+#include "support/flow_laws.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,7 +24,6 @@ namespace formflow::testing {
 namespace {
 
 using physics::FlowLaw;
-using physics::FlowLawKind;
 
 struct LawCase {
   std::string name;
@@ -33,29 +33,10 @@ struct LawCase {
 std::vector<LawCase> laws() {
   std::vector<LawCase> list;
   list.push_back({"piecewise_power", FlowLaw{}});
-  FlowLaw norton;
-  norton.kind = FlowLawKind::NortonHoff;
-  norton.K = 0.8;
-  norton.m = 0.2;
-  list.push_back({"norton_hoff", norton});
-  FlowLaw linear = norton;
-  linear.m = 1.0;  // linear viscous
-  list.push_back({"linear_viscous", linear});
-  FlowLaw hensel;
-  hensel.kind = FlowLawKind::HenselSpittel;
-  hensel.hs_A = 300.0;
-  hensel.hs_m1 = -0.002;
-  hensel.hs_m2 = 0.1;
-  hensel.hs_m3 = 0.05;
-  hensel.hs_m4 = -0.01;
-  hensel.hs_m8 = 1e-4;
-  hensel.temperature = 700.0;
-  hensel.strain = 0.5;
-  list.push_back({"hensel_spittel", hensel});
-  FlowLaw plastic;
-  plastic.kind = FlowLawKind::PerfectlyPlastic;
-  plastic.sigma0 = 2.5;
-  list.push_back({"perfectly_plastic", plastic});
+  list.push_back({"norton_hoff", norton_hoff(0.8, 0.2)});
+  list.push_back({"linear_viscous", norton_hoff(0.8, 1.0)});
+  list.push_back({"hensel_spittel", hensel_spittel()});
+  list.push_back({"perfectly_plastic", perfectly_plastic(2.5)});
   return list;
 }
 
@@ -106,7 +87,9 @@ void check_homogeneous_flow(const FlowLaw& law, int order, const Tensor2<2>& g,
       assembly::add_volumetric_penalty<2>(values, penalty.d, local);
       plan.scatter(cell, local, exact, system);
     }
-    if (iteration == 0) ASSERT_TRUE(solver->analyze(system.matrix));
+    if (iteration == 0) {
+      ASSERT_TRUE(solver->analyze(system.matrix));
+    }
     ASSERT_TRUE(solver->factorize(system.matrix));
     VectorX free_u;
     ASSERT_TRUE(solver->solve(system.rhs, free_u));

@@ -25,6 +25,7 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   settings.volumetric_points = case_.volumetric_points;
   settings.initial_rate = case_.solver.initial_rate;
   settings.symmetry = case_.symmetry;
+  settings.contact = case_.contact;
   return settings;
 }
 

@@ -47,7 +47,9 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
       body_force_(std::move(body_force)),
       full_rule_(fem::gauss_rule<dim>(mesh.order + 1)),
       volumetric_rule_(fem::gauss_rule<dim>(settings.volumetric_points)),
-      facet_rule_(fem::gauss_rule<dim - 1>(mesh.order + 1)) {
+      facet_rule_(settings.contact.normals == ContactNormals::Nodes
+                      ? fem::nodal_rule<dim - 1>(mesh.order + 1)
+                      : fem::gauss_rule<dim - 1>(mesh.order + 1)) {
   FF_ASSERT(dim == 2 || !axisymmetric(), "axisymmetry is a two-dimensional formulation");
   BlockDofs blocks;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell)
@@ -67,6 +69,8 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
     cell_contact_.insert(cell_contact_.end(), list.begin(), list.end());
     cell_contact_offsets_.push_back(static_cast<Index>(cell_contact_.size()));
   }
+  if (contact_points_at_nodes())
+    contact_normals_ = nodal_contact_normals<dim>(mesh, contact_facets_, settings.contact.corner_angle);
 
   // The mollifier works on the fixed geometry of Γ3: build it once.
   const std::vector<ContactPoint<dim>> geometry = contact_state(VectorX::Zero(n_dofs()));
@@ -103,16 +107,29 @@ void FormingProblem<dim>::gather(Index cell, const VectorX* u,
 }
 
 template <int dim>
+void FormingProblem<dim>::reinit_contact(fem::FacetValues<dim>& values,
+                                         const typename fem::CellValues<dim>::Gradients& coordinates,
+                                         Index position) const {
+  reinit(values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
+  if (contact_normals_.empty()) return;
+  // Penalty, σ_N, u_T and the friction projector all read these normals: the
+  // power balance needs one normal per point throughout.
+  for (int q = 0; q < values.n_points(); ++q)
+    values.set_normal(q, contact_normals_[position * values.n_points() + q]);
+}
+
+template <int dim>
 std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(
     const VectorX& u, const FrictionMultipliers<dim>* multipliers) const {
   fem::FacetValues<dim> facet_values(mesh_.order, facet_rule_);
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<ContactPoint<dim>> state;
   state.reserve(contact_facets_.size() * facet_rule_.size());
-  for (Index f : contact_facets_) {
+  for (Index position = 0; position < static_cast<Index>(contact_facets_.size()); ++position) {
+    const Index f = contact_facets_[position];
     const mesh::BoundaryFacet& facet = mesh_.facets[f];
     gather(facet.cell, &u, coordinates, velocities);
-    reinit(facet_values, coordinates, facet.local_face);
+    reinit_contact(facet_values, coordinates, position);
     for (int q = 0; q < facet_values.n_points(); ++q) {
       ContactPoint<dim> point;
       point.facet = f;
@@ -230,7 +247,7 @@ void FormingProblem<dim>::add_friction_loads(Index cell, const std::vector<Conta
   const int n_q = facet_rule_.size();
   for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
     const Index position = cell_contact_[k];
-    reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
+    reinit_contact(facet_values, coordinates, position);
     for (int q = 0; q < n_q; ++q) {
       const ContactPoint<dim>& point = state[position * n_q + q];
       if (point.friction_load.isZero(0.0)) continue;
@@ -256,7 +273,7 @@ void FormingProblem<dim>::assemble_contact(Index cell, const std::vector<Contact
   std::vector<Real> weight(n_q, 0.0);
   for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
     const Index position = cell_contact_[k];
-    reinit(facet_values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
+    reinit_contact(facet_values, coordinates, position);
     if (multipliers_ && multipliers_->is_exact_contact())
       multipliers_->add_contact_terms(position * n_q, facet_values, local_matrix, local_load);
     else

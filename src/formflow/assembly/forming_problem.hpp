@@ -5,6 +5,7 @@
 
 #include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/assembly/constraints.hpp"
+#include "formflow/assembly/contact_normals.hpp"
 #include "formflow/assembly/friction_multipliers.hpp"
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/fem/cell_values.hpp"
@@ -28,6 +29,7 @@ struct ProblemSettings {
   int volumetric_points = 2;  ///< Gauss points per direction of the (1/d) term
   Real initial_rate = 1.0;    ///< ε̄̇ of the constant viscosity that starts the iteration
   physics::Symmetry symmetry = physics::Symmetry::Plane;  ///< axisymmetric: dim = 2 only
+  ContactSettings contact;  ///< face or nodal contact normals (assembly/contact_normals.hpp)
 };
 
 /// State of the contact boundary Γ3 at one face quadrature point for a velocity w.
@@ -134,7 +136,11 @@ class FormingProblem {
   const ScatterPlan& plan() const { return *plan_; }
   const DirichletConstraints& constraints() const { return constraints_; }
   Index n_dofs() const { return mesh_.n_nodes() * dim; }
-  /// Quadrature rules: full (a-term), volumetric, and faces.
+  /// True with nodal contact normals: the face rule is fem::nodal_rule, its
+  /// points are the face nodes (in face_local_nodes order).
+  bool contact_points_at_nodes() const { return settings_.contact.normals == ContactNormals::Nodes; }
+  /// Quadrature rules: full (a-term), volumetric, and faces (Gauss, or the
+  /// nodal rule when contact_points_at_nodes()).
   const fem::QuadratureRule<dim>& full_rule() const { return full_rule_; }
   const fem::QuadratureRule<dim>& volumetric_rule() const { return volumetric_rule_; }
   const fem::QuadratureRule<dim - 1>& facet_rule() const { return facet_rule_; }
@@ -174,6 +180,10 @@ class FormingProblem {
                           fem::FacetValues<dim>& facet_values, LinearSystem& system) const;
 
   void add_body_force(const fem::CellValues<dim>& values, VectorX& local_load) const;
+  /// Maps `values` to the Γ3 face at `position` (in contact_facets_) and, with
+  /// nodal normals, puts them in place of the face normals.
+  void reinit_contact(fem::FacetValues<dim>& values,
+                      const typename fem::CellValues<dim>::Gradients& coordinates, Index position) const;
 
   const mesh::Mesh<dim>& mesh_;
   ProblemSettings settings_;
@@ -185,6 +195,7 @@ class FormingProblem {
   std::vector<Index> contact_facets_;       ///< Mesh::facets indices of Γ3, in mesh order
   std::vector<Index> cell_contact_offsets_; ///< per cell, range in cell_contact_
   std::vector<Index> cell_contact_;         ///< positions in contact_facets_
+  std::vector<Point<dim>> contact_normals_; ///< nodal normals per Γ3 point; empty: face normals
   std::unique_ptr<physics::NonlocalAverage> average_;
   Real driven_height_ = 0.0;
   ConstraintMultipliers<dim>* multipliers_ = nullptr;

@@ -92,7 +92,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
     for (Index k = cell_contact_offsets_[cell]; with_friction && k < cell_contact_offsets_[cell + 1];
          ++k) {
       const Index position = cell_contact_[k];
-      facet_values.reinit(coordinates, mesh_.facets[contact_facets_[position]].local_face);
+      reinit_contact(facet_values, coordinates, position);
       for (int q = 0; q < n_face_q; ++q) {
         const Index k = position * n_face_q + q;
         const ContactPoint<dim>& point = state[k];

@@ -69,6 +69,9 @@ class FacetValues {
   void weight_by_radius() {
     for (int q = 0; q < n_points(); ++q) jxw_[q] *= points_[q][1];
   }
+  /// Replaces the face normal at point q (nodal contact normals, assembly/contact_normals.hpp)
+  /// until the next reinit. `normal` must be a unit vector.
+  void set_normal(int q, const Point<dim>& normal) { normals_[q] = normal; }
 
  private:
   int order_;

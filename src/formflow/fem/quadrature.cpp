@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Gauss–Legendre rules, tabulated in closed form up to five points.
+// Gauss–Legendre rules, tabulated in closed form up to five points, and the nodal
+// (Gauss–Lobatto: trapezoid, Simpson) rules of Q1 and Q2 faces.
 #include "formflow/fem/quadrature.hpp"
 
 #include "formflow/core/error.hpp"
@@ -44,10 +45,11 @@ void gauss_1d(int n, std::vector<Real>& points, std::vector<Real>& weights) {
   }
 }
 
+namespace {
+
 template <int dim>
-QuadratureRule<dim> gauss_rule(int n_per_direction) {
-  std::vector<Real> points_1d, weights_1d;
-  gauss_1d(n_per_direction, points_1d, weights_1d);
+QuadratureRule<dim> tensor_rule(const std::vector<Real>& points_1d, const std::vector<Real>& weights_1d) {
+  const int n_per_direction = static_cast<int>(points_1d.size());
   int n_total = 1;
   for (int d = 0; d < dim; ++d) n_total *= n_per_direction;
   QuadratureRule<dim> rule;
@@ -66,6 +68,25 @@ QuadratureRule<dim> gauss_rule(int n_per_direction) {
   return rule;
 }
 
+}  // namespace
+
+template <int dim>
+QuadratureRule<dim> gauss_rule(int n_per_direction) {
+  std::vector<Real> points_1d, weights_1d;
+  gauss_1d(n_per_direction, points_1d, weights_1d);
+  return tensor_rule<dim>(points_1d, weights_1d);
+}
+
+template <int dim>
+QuadratureRule<dim> nodal_rule(int n_per_direction) {
+  FF_ASSERT(n_per_direction == 2 || n_per_direction == 3, "nodal rules exist for Q1 and Q2 faces");
+  if (n_per_direction == 2) return tensor_rule<dim>({-1.0, 1.0}, {1.0, 1.0});
+  return tensor_rule<dim>({-1.0, 0.0, 1.0}, {1.0 / 3.0, 4.0 / 3.0, 1.0 / 3.0});
+}
+
+template QuadratureRule<1> nodal_rule<1>(int);
+template QuadratureRule<2> nodal_rule<2>(int);
+template QuadratureRule<3> nodal_rule<3>(int);
 template QuadratureRule<1> gauss_rule<1>(int);
 template QuadratureRule<2> gauss_rule<2>(int);
 template QuadratureRule<3> gauss_rule<3>(int);

@@ -24,6 +24,12 @@ inline constexpr int max_gauss_points = 5;
 template <int dim>
 QuadratureRule<dim> gauss_rule(int n_per_direction);
 
+/// n^dim-point Gauss–Lobatto rule whose points are the nodes of a face of order
+/// n − 1 (n = 2: trapezoid, n = 3: Simpson), in the same lexicographic order;
+/// integrating with it lumps a face term onto the nodes. Precondition 2 ≤ n ≤ 3.
+template <int dim>
+QuadratureRule<dim> nodal_rule(int n_per_direction);
+
 /// 1D Gauss–Legendre points (ascending) and weights on [-1, 1].
 void gauss_1d(int n, std::vector<Real>& points, std::vector<Real>& weights);
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/assembly/constraint_multipliers.hpp"
+#include "formflow/assembly/contact_normals.hpp"
 #include "formflow/fem/lagrange.hpp"
 #include "formflow/mesh/box_mesh.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
@@ -34,6 +35,7 @@ struct Case {
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
   assembly::Formulation formulation;  ///< penalty or mixed; exact-constraint (Uzawa) settings
   physics::Friction friction;
+  assembly::ContactSettings contact;  ///< face or nodal contact normals
   physics::Penalty penalty;
   solvers::IterationControl solver;
   /// Verification: a manufactured solution on the unit square replaces the

@@ -3,6 +3,8 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "formflow/io/mesh_memory.hpp"
+#include "formflow/mesh/fitting_sizes.hpp"
 
 #include <fmt/format.h>
 #include <toml.hpp>
@@ -117,39 +119,22 @@ std::optional<KeyValue> convert(const CaseKey& key, const toml::value& value) {
 
 /// Suggests the nearest sizes that fit every length: "1.25 (= 10/8) or 2.5 (= 10/4)".
 std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size) {
-  const Real lengths[] = {geometry.container_length, geometry.entry_half_height,
-                          geometry.exit_half_height, geometry.exit_length};
-  auto fits_all = [&lengths](Real candidate) {
-    return std::all_of(std::begin(lengths), std::end(lengths), [candidate](Real length) {
-      return mesh::cells_along(length, candidate) > 0;
-    });
+  const mesh::NearestFittingSizes nearest =
+      mesh::nearest_fitting_sizes(mesh::lengths_to_fit(geometry), size);
+  auto text = [](const mesh::FittingSize& choice) {
+    return fmt::format("{} (= {}/{})", format_key_value(choice.size()), choice.length,
+                       choice.cells);
   };
-  std::optional<std::pair<Real, int>> smaller, larger;  // (length, number of cells)
-  constexpr int search = 10000;
-  for (const Real length : lengths) {
-    if (length / size > 1e7) continue;  // no sensible mesh; also keeps the cell counts in int
-    const int coarsest = std::max(1, static_cast<int>(std::ceil(length / size)));
-    for (int n = coarsest; n < coarsest + search; ++n)
-      if (fits_all(length / n)) {
-        if (!smaller || length / n > smaller->first / smaller->second) smaller = {length, n};
-        break;
-      }
-    for (int n = static_cast<int>(std::floor(length / size)); n >= 1; --n)
-      if (fits_all(length / n)) {
-        if (!larger || length / n < larger->first / larger->second) larger = {length, n};
-        break;
-      }
-  }
-  auto text = [](const std::pair<Real, int>& choice) {
-    return fmt::format("{} (= {}/{})", format_key_value(choice.first / choice.second),
-                       choice.first, choice.second);
-  };
-  if (smaller && larger)
-    return "sizes that fit every length: " + text(*smaller) + " or " + text(*larger);
-  if (smaller || larger)
-    return "a size that fits every length: " + text(smaller ? *smaller : *larger);
+  if (nearest.smaller && nearest.larger)
+    return "sizes that fit every length: " + text(*nearest.smaller) + " or " +
+           text(*nearest.larger);
+  if (nearest.smaller || nearest.larger)
+    return "a size that fits every length: " +
+           text(nearest.smaller ? *nearest.smaller : *nearest.larger);
   return "no size near this one fits every length: make the lengths multiples of one size";
 }
+
+std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table);
 
 /// Accumulates keys into a Case (starting from the table's defaults), remembering
 /// where each was set, so that cross-key errors can point at the key set last.
@@ -161,8 +146,10 @@ class CaseBuilder {
   }
 
   void set(const CaseKey& key, const toml::value& value, const std::string& file, int line) {
-    const std::optional<KeyValue> converted = convert(key, value);
     const std::string name(key.name);
+    if (key.type == KeyType::NameMap && value.is_table() && file != "--set")
+      check_table_entries(key, value, file);
+    const std::optional<KeyValue> converted = convert(key, value);
     if (!converted) {
       const std::string example = format_key_value(key.default_value);
       throw InputError(file, line, name,
@@ -180,6 +167,24 @@ class CaseBuilder {
             Origin{file, file == "--set" ? line : line_of(entry_value), n_set_};
   }
 
+  /// A bad entry of a table of strings is blamed on its own line, not on the
+  /// table's header line, which may be far above it.
+  static void check_table_entries(const CaseKey& key, const toml::value& table,
+                                  const std::string& file) {
+    for (const auto& [entry, pointer] : in_file_order(table)) {
+      const toml::value& entry_value = *pointer;
+      const std::string name(key.name);
+      if (!entry_value.is_string())
+        throw InputError(file, line_of(entry_value), name,
+                         fmt::format("entry \"{}\": expected a string, got {}", entry,
+                                     describe(entry_value)),
+                         fmt::format("e.g. {} = \"{}\"", entry,
+                                     key.choices.empty() ? "" : key.choices.front()));
+      if (const auto problem = check_key_value(key, NameMap{{entry, entry_value.as_string().str}}))
+        throw InputError(file, line_of(entry_value), name, problem->message, problem->hint);
+    }
+  }
+
   void check_cross_keys() const {
     check_order("geometry.exit_half_height", "geometry.entry_half_height");
     check_order("material.rate1", "material.rate2");
@@ -189,6 +194,7 @@ class CaseBuilder {
     check_flow_law();
     check_formulation();
     check_verification();
+    check_mesh_memory();
   }
 
   Case finish(std::string source) {
@@ -335,6 +341,12 @@ class CaseBuilder {
                                    format_key_value(case_.distortion.amplitude)),
                        "must be ≤ 0.1 with verification.distortion = \"smooth\"");
     }
+  }
+
+  /// A mesh that cannot fit in this machine's memory is refused now, not by the allocator.
+  void check_mesh_memory() const {
+    if (const auto problem = mesh_memory_problem(case_, machine_memory_bytes()))
+      die_error("mesh.size", problem->message, problem->hint);
   }
 
   [[noreturn]] void die_error(const std::string& name, const std::string& message,

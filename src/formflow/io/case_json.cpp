@@ -8,10 +8,11 @@
 
 namespace formflow::io {
 
-nlohmann::json case_to_json(const Case& case_) {
-  nlohmann::json json = nlohmann::json::object();
+nlohmann::ordered_json case_to_json(const Case& case_) {
+  // Ordered: the echo reads like the case reference, section by section.
+  nlohmann::ordered_json json = nlohmann::ordered_json::object();
   for (const CaseKey& key : case_keys()) {
-    nlohmann::json& slot = json[std::string(key.section())][std::string(key.leaf())];
+    nlohmann::ordered_json& slot = json[std::string(key.section())][std::string(key.leaf())];
     std::visit([&slot](const auto& value) { slot = value; }, key.get(case_));
   }
   json["source"] = case_.source;

@@ -9,7 +9,8 @@
 namespace formflow::io {
 
 /// Every resolved parameter, nested by section with the case-file key names
-/// (e.g. j["penalty"]["dN"], j["friction"]["on"] = ["container", "die"]).
-nlohmann::json case_to_json(const Case& case_);
+/// (e.g. j["penalty"]["dN"], j["friction"]["on"] = ["container", "die"]), in
+/// the order of the key table (docs/case-reference.md), then "source".
+nlohmann::ordered_json case_to_json(const Case& case_);
 
 }  // namespace formflow::io

@@ -232,7 +232,8 @@ std::vector<CaseKey> discretisation_keys() {
           .doc("velocity element: Q1 (4-node bilinear) or Q2 (9-node biquadratic)"),
       real_key("mesh.size", 1.0, [](auto& c) -> auto& { return c.mesh_size; })
           .above(0)
-          .constraint("divides every geometry length when mesh.source = \"structured\"")
+          .constraint("divides every geometry length when mesh.source = \"structured\"; the "
+                      "mesh's estimated memory fits in this machine's (docs/benchmarks.md)")
           .unit("length")
           .doc("side of the uniform square cells (mesh I: 10/6, mesh II: 1); the target "
                "element size for mesh.source = \"gmsh\"; unused for \"file\""),
@@ -376,6 +377,18 @@ std::vector<CaseKey> material_keys() {
 
 std::vector<CaseKey> contact_keys() {
   return {
+      enum_key("contact.normals", "faces",
+               {{"faces", assembly::ContactNormals::Faces}, {"nodes", assembly::ContactNormals::Nodes}},
+               [](auto& c) -> auto& { return c.contact.normals; })
+          .doc("normal of the Γ3 penalty and friction: faces = each face's own normal at its "
+               "Gauss points (the paper); nodes = one length-weighted mean normal per node, "
+               "penalty and friction lumped on the nodes (docs/validation.md, contact normals)"),
+      real_key("contact.corner_angle", 60.0, [](auto& c) -> auto& { return c.contact.corner_angle; })
+          .above(0)
+          .below(180)
+          .unit("degree")
+          .doc("contact.normals = \"nodes\" only: where Γ3 faces meet at a larger turn of the "
+               "normal, the node keeps both face normals and cannot move (a dead-metal corner)"),
       real_key("friction.mu", 0.0, [](auto& c) -> auto& { return c.friction.mu; })
           .at_least(0)
           .doc("Coulomb coefficient μ_f of the nonlocal friction law τ_f = μ_f σ̄_N"),
@@ -551,6 +564,8 @@ const std::vector<CaseSection>& case_sections() {
       {"formulation", "Which form of the a-term is assembled, and penalty or mixed (pressure) form of the constraints (SPEC §2, docs/mixed.md)."},
       {"material", "Flow law σ_p(ε̄̇) on [rate1, rate2], linear through the origin outside "
                    "(paper eq. 5.4 by default; material.law picks another)."},
+      {"contact", "How the contact boundary Γ3 is discretised: the normal of the penalty and "
+                  "of the friction law."},
       {"friction", "Nonlocal Coulomb friction on Γ3: regularised (paper eq. 3.14–3.15) or "
                    "exact."},
       {"penalty", "Penalty and regularisation parameters (paper eq. 3.8, 3.14)."},

@@ -2,12 +2,14 @@
 // summary.json: the headline numbers of a run, the iteration history and the resolved case.
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_json.hpp"
+#include "formflow/io/case_keys.hpp"
 #include "formflow/io/results_writer.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <string>
+#include <variant>
 
 #ifndef FORMFLOW_VERSION
 #error "FORMFLOW_VERSION must be defined by the build (CMake project version)"
@@ -78,6 +80,25 @@ json contact_json(const Case& case_, const post::Results& results) {
   return out;
 }
 
+/// What the mesh that ran looks like. mesh.size made the structured (and the
+/// manufactured) grid and is Gmsh's target size; a mesh read from a file has
+/// no size, so "size" is null there and the cell diameters describe it.
+json mesh_json(const Case& case_, const post::Results& results) {
+  // A verification run meshes the unit square itself, whatever mesh.source says.
+  const bool manufactured = case_.manufactured != physics::ManufacturedSolution::None;
+  const bool from_file = !manufactured && case_.mesh_source == mesh::MeshSource::File;
+  json out = {{"source", manufactured ? "box" : std::get<std::string>(
+                                                    find_case_key("mesh.source")->get(case_))},
+              {"elements", results.n_cells},
+              {"nodes", results.n_nodes},
+              {"dofs", results.n_dofs},
+              {"element", std::string(fem::element_name(case_.element))}};
+  out["size"] = from_file ? json(nullptr) : json(case_.mesh_size);
+  out["min_cell_diameter"] = results.min_cell_diameter;
+  out["max_cell_diameter"] = results.max_cell_diameter;
+  return out;
+}
+
 json timing_json(const PhaseTimes& timing) {
   json out = json::object();
   // The phases every run has are always present, so readers need no defaults.
@@ -88,12 +109,11 @@ json timing_json(const PhaseTimes& timing) {
   return out;
 }
 
-/// The case as ordered JSON. Checked before the conversion: the text round
-/// trip would turn a NaN into null and hide it from the final check.
+/// The case, in the key table's order.
 json case_json(const Case& case_) {
-  const nlohmann::json resolved = case_to_json(case_);
+  json resolved = case_to_json(case_);
   require_finite(resolved, "case");
-  return json::parse(resolved.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  return resolved;
 }
 
 json summary_document(const Case& case_, const post::Results& results) {
@@ -112,11 +132,7 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["power"] = power_json(results.power);
   out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;
   out["contact"] = contact_json(case_, results);
-  out["mesh"] = {{"elements", results.n_cells},
-                 {"nodes", results.n_nodes},
-                 {"dofs", results.n_dofs},
-                 {"element", std::string(fem::element_name(case_.element))},
-                 {"size", case_.mesh_size}};
+  out["mesh"] = mesh_json(case_, results);
   out["timing_s"] = timing_json(results.timing);
   out["history"] = std::move(history);
   out["history_pressure"] = std::move(history_pressure);

@@ -106,6 +106,20 @@ void add_square_die_land(const ChannelGeometry& geometry, Mesh<2>& mesh) {
 
 }  // namespace
 
+Real die_channel_cell_count(const ChannelGeometry& geometry, Real size) {
+  const Real rows_in = geometry.entry_half_height / size;
+  if (geometry.die == DieShape::Square)  // the container block and the exit block
+    return geometry.container_length / size * rows_in +
+           geometry.exit_length / size * (geometry.exit_half_height / size);
+  // One mapped block: the columns of make_mapped_mesh times H_in/size rows.
+  Real columns = (geometry.container_length + geometry.land_length + geometry.exit_length) / size;
+  const DieProfile profile(geometry);
+  const auto& kinks = profile.breakpoints();
+  for (std::size_t k = 0; k + 1 < kinks.size(); ++k)
+    columns += std::max<Real>(1, std::ceil((kinks[k + 1] - kinks[k]) / size - 1e-9));
+  return columns * rows_in;
+}
+
 Real die_exit_position(const ChannelGeometry& geometry) {
   if (geometry.die == DieShape::Square) return geometry.container_length;
   return geometry.container_length + DieProfile(geometry).length();

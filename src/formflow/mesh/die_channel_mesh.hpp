@@ -20,6 +20,12 @@ namespace formflow::mesh {
 /// Precondition: the case validation passed (sizes fit, the die reduces).
 Mesh<2> make_die_channel_mesh(const ChannelGeometry& geometry, Real size, int order);
 
+/// The number of cells make_die_channel_mesh(geometry, size, ·) makes, counted
+/// without building the mesh, as a Real because it may exceed every index
+/// type. For a size that does not fit the lengths (Gmsh's target size) it is
+/// the count of a grid of that spacing: what a Gmsh mesh of that size has, roughly.
+Real die_channel_cell_count(const ChannelGeometry& geometry, Real size);
+
 /// Drawing has no container: the surface before the die is free (Γ2).
 void free_container_wall(Mesh<2>& mesh);
 

@@ -98,7 +98,10 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   fields.friction_stress = VectorX::Zero(mesh.n_nodes());
   count.setZero();
   const int n_q = problem.facet_rule().size();
-  const MatrixX facet_to_nodes = fem::gauss_to_nodes<dim - 1>(mesh.order, mesh.order + 1);
+  // Nodal contact normals put the points on the face nodes already.
+  const MatrixX facet_to_nodes = problem.contact_points_at_nodes()
+                                     ? MatrixX(MatrixX::Identity(n_q, n_q))
+                                     : fem::gauss_to_nodes<dim - 1>(mesh.order, mesh.order + 1);
   VectorX pressure_at(n_q), friction_at(n_q);
   for (std::size_t first = 0; first < contact.size(); first += n_q) {
     const mesh::BoundaryFacet& facet = mesh.facets[contact[first].facet];

@@ -2,6 +2,8 @@
 // Final evaluation of a converged (or last) iterate.
 #include "formflow/post/post_process.hpp"
 
+#include "formflow/mesh/cell_diameter.hpp"
+
 namespace formflow::post {
 
 template <int dim>
@@ -18,6 +20,9 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
   results.n_cells = problem.mesh().n_cells();
   results.n_nodes = problem.mesh().n_nodes();
   results.n_dofs = problem.n_dofs();
+  const mesh::CellDiameterRange diameters = mesh::cell_diameter_range(problem.mesh());
+  results.min_cell_diameter = diameters.smallest;
+  results.max_cell_diameter = diameters.largest;
   results.power = compute_powers(problem, u, contact);
   results.pressure.ram_reaction = problem.driven_force(system, u) / height;
   results.pressure.power_balance =

@@ -79,6 +79,9 @@ struct Results {
   std::vector<solvers::IterationRecord> history;
 
   Index n_cells = 0, n_nodes = 0, n_dofs = 0;
+  /// Smallest and largest cell diameter (mesh/cell_diameter.hpp): the mesh's h,
+  /// also when it was read from a file and no mesh.size made it.
+  Real min_cell_diameter = 0.0, max_cell_diameter = 0.0;
   Pressures pressure;
   PowerTerms power;
   Real max_equivalent_strain_rate = 0.0;

@@ -125,6 +125,31 @@ TEST(GaussRule3D, ExactForMixedMonomialsUpToTwoNMinusOne) {
   }
 }
 
+TEST(NodalRule, PointsAreTheFaceLatticeAndTheRulesIntegrateLikeTrapezoidAndSimpson) {
+  // n = 2: the corners, exact for degree 1 per direction (trapezoid); n = 3: the
+  // Q2 lattice −1, 0, 1, exact for degree 3 (Simpson), not for x⁴ (2/5 vs 2/3).
+  for (int n : {2, 3}) {
+    const auto rule = fem::nodal_rule<2>(n);
+    ASSERT_EQ(rule.size(), n * n);
+    for (int q = 0; q < rule.size(); ++q) {  // lexicographic, x fastest, like the nodes
+      EXPECT_EQ(rule.points[q].x(), -1.0 + 2.0 * (q % n) / (n - 1));
+      EXPECT_EQ(rule.points[q].y(), -1.0 + 2.0 * (q / n) / (n - 1));
+    }
+    const int degree = n == 2 ? 1 : 3;
+    for (int a = 0; a <= degree + 1; ++a)
+      for (int b = 0; b <= degree; ++b) {
+        double sum = 0.0;
+        for (int q = 0; q < rule.size(); ++q)
+          sum += rule.weights[q] * std::pow(rule.points[q].x(), a) * std::pow(rule.points[q].y(), b);
+        const double exact = monomial_integral(a) * monomial_integral(b);
+        if (a <= degree)
+          EXPECT_NEAR(sum, exact, 1e-14) << n << ": " << a << b;
+        else if (a % 2 == 0 && b % 2 == 0)  // odd powers integrate to 0 with any symmetric rule
+          EXPECT_GT(std::abs(sum - exact), 0.1 * std::abs(exact)) << n << ": " << a << b;
+      }
+  }
+}
+
 TEST(GaussRule1D, KnownTwoPointRule) {
   // ±1/√3 with unit weights, by hand.
   std::vector<Real> points, weights;

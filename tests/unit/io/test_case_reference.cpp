@@ -4,6 +4,7 @@
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_json.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "support/run_cli.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,12 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
+using testing::read_text;
 
 TEST(CaseKeys, TableIsConsistent) {
   std::set<std::string_view> names, sections_with_keys;
@@ -103,7 +99,7 @@ TEST(CaseReference, TheDefaultCaseBlockLoadsToTheDefaults) {
   std::ofstream(path) << markdown.substr(begin + 8, end - begin - 8);
   const Case case_ = load_case(path.string(), {});
   fs::remove(path);
-  nlohmann::json expected = case_to_json(load_case("", {}));
+  nlohmann::ordered_json expected = case_to_json(load_case("", {}));
   expected["source"] = path.string();
   EXPECT_EQ(case_to_json(case_), expected);
 }

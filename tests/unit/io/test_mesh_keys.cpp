@@ -3,9 +3,9 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "support/run_cli.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,14 +17,6 @@ namespace fs = std::filesystem;
 
 class MeshKeys : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 ("formflow-meshkeys-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   std::string write(const std::string& text) {
     const fs::path path = directory_ / "case.toml";
     std::ofstream(path) << text;
@@ -45,7 +37,7 @@ class MeshKeys : public ::testing::Test {
     return InputError("", -1, "", "");
   }
 
-  fs::path directory_;
+  testing::ScratchDirectory directory_{"formflow-meshkeys"};
 };
 
 TEST_F(MeshKeys, DefaultsAreTheStructuredGenerator) {
@@ -80,13 +72,32 @@ TEST_F(MeshKeys, FileOrMapWithoutFileSourceIsAMistake) {
 TEST_F(MeshKeys, PartNamesAreChecked) {
   const InputError error =
       error_in("[mesh]\nsource = \"file\"\nfile = \"a.msh\"\n[mesh.boundaries]\nram = \"ram\"\n",
-               "mesh.boundaries", 4);
+               "mesh.boundaries", 5);
   EXPECT_NE(error.hint.find("\"rear\", \"free_entry\", \"container\", \"die\", \"free_exit\", "
                             "\"front\", \"symmetry\""),
             std::string::npos)
       << error.hint;
-  error_in("[mesh]\nsource = \"file\"\nfile = \"a.msh\"\n[mesh.boundaries]\nram = 1\n",
-           "mesh.boundaries", 4);
+  const InputError type_error =
+      error_in("[mesh]\nsource = \"file\"\nfile = \"a.msh\"\n[mesh.boundaries]\nram = 1\n",
+               "mesh.boundaries", 5);
+  EXPECT_NE(std::string(type_error.what()).find("entry \"ram\": expected a string, got integer 1"),
+            std::string::npos)
+      << type_error.what();
+}
+
+TEST_F(MeshKeys, BadPartNameIsBlamedOnItsOwnLineNotOnTheTableHeader) {
+  // The header is line 4; the bad entry, after two good ones, is line 7.
+  const InputError error = error_in("[mesh]\nsource = \"file\"\nfile = \"a.msh\"\n"
+                                    "[mesh.boundaries]\nram = \"rear\"\naxis = \"symmetry\"\n"
+                                    "wall = \"contianer\"\nexit = \"front\"\n",
+                                    "mesh.boundaries", 7);
+  EXPECT_NE(std::string(error.what()).find("invalid value \"contianer\" for \"wall\""),
+            std::string::npos)
+      << error.what();
+  // Two bad entries: the first in the file is the one named.
+  error_in("[mesh]\nsource = \"file\"\nfile = \"a.msh\"\n[mesh.boundaries]\nb = \"rear\"\n"
+           "z = \"x\"\na = \"y\"\n",
+           "mesh.boundaries", 6);
 }
 
 TEST_F(MeshKeys, GmshSourceTakesAnySizeButTheStructuredGridDoesNot) {

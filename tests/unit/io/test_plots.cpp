@@ -6,6 +6,7 @@
 #include "formflow/io/plot/pictures.hpp"
 #include "formflow/io/plot/ticks.hpp"
 #include "formflow/io/results_writer.hpp"
+#include "support/synthetic_run.hpp"
 
 // The library links cairo; its include directory is not propagated, but the
 // header finds its siblings relative to itself.
@@ -24,10 +25,6 @@
 #include <vector>
 
 namespace formflow::testing {
-
-// Defined in test_results_files.cpp.
-void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& mesh,
-                        post::Results& results);
 
 namespace {
 
@@ -168,6 +165,35 @@ TEST(PicturesWithoutData, EmptyHistoryAndContactStillRender) {
     EXPECT_EQ(picture.png.substr(1, 3), "PNG") << picture.name;
     EXPECT_GT(picture.svg.size(), 100u) << picture.name;
   }
+}
+
+TEST(PictureSubtitle, FormingRunNamesProcessMeshFrictionAndRamPressure) {
+  io::Case case_;
+  mesh::Mesh<2> mesh;
+  post::Results results;
+  make_synthetic_run(2, 2.5, case_, mesh, results);
+  EXPECT_EQ(plot::run_description(case_, results),
+            "extrusion · Q2, h = 2.5 · μ_{f} = 0.1 · converged in 27 iterations · "
+            "ram pressure 2.612");
+}
+
+TEST(PictureSubtitle, ManufacturedRunNamesSolutionElementAndH) {
+  // A verification run has no process, friction or ram: none of them may be named.
+  io::Case case_;
+  mesh::Mesh<2> mesh;
+  post::Results results;
+  make_synthetic_run(1, 2.5, case_, mesh, results);
+  case_.manufactured = physics::ManufacturedSolution::Smooth;
+  case_.mesh_size = 0.125;
+  EXPECT_EQ(plot::run_description(case_, results),
+            "manufactured solution \"smooth\" · Q1, h = 0.125 · uniform cells · "
+            "converged in 27 iterations");
+  case_.manufactured = physics::ManufacturedSolution::Extension;
+  case_.distortion = {mesh::Distortion::Random, 0.2, 3};
+  results.stop_reason = solvers::StopReason::MaxIterations;
+  const std::string text = plot::run_description(case_, results);
+  EXPECT_EQ(text, "manufactured solution \"extension\" · Q1, h = 0.125 · random distortion 0.2 · "
+                  "NOT converged (max_iterations, 27 iterations)");
 }
 
 TEST(PlotTicks, NiceNumbersAndLabels) {

@@ -4,8 +4,10 @@
 #include "formflow/io/case_json.hpp"
 #include "formflow/io/csv.hpp"
 #include "formflow/io/results_writer.hpp"
+#include "formflow/mesh/cell_diameter.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "support/approx.hpp"
+#include "support/synthetic_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -100,8 +102,7 @@ std::vector<post::ContactSample> contact_samples() {
 
 } // namespace
 
-/// A complete, realistic-looking run on the benchmark channel (also used by
-/// test_vtu.cpp and test_plots.cpp, which declare it).
+// Declared in support/synthetic_run.hpp, used by test_vtu.cpp and test_plots.cpp too.
 void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& mesh,
                         post::Results& results) {
   case_ = io::Case{};
@@ -119,6 +120,9 @@ void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& 
   results.n_cells = mesh.n_cells();
   results.n_nodes = mesh.n_nodes();
   results.n_dofs = 2 * mesh.n_nodes();
+  const mesh::CellDiameterRange diameters = mesh::cell_diameter_range(mesh);
+  results.min_cell_diameter = diameters.smallest;
+  results.max_cell_diameter = diameters.largest;
   results.pressure = {2.6123, 2.598, 2.6121, 2.71};
   results.power = {25.98, 26.01, 0.07, 0.003, 0.04};
   fill_fields(mesh, results.fields);
@@ -168,10 +172,44 @@ std::vector<std::vector<std::string>> read_csv(const std::string& text) {
 class ResultsFiles : public ::testing::Test {
 protected:
   void SetUp() override { make_synthetic_run(2, 1.0, case_, mesh_, results_); }
+  /// summary.json's "mesh" block of the run as it stands.
+  nlohmann::json summary_mesh() const {
+    return nlohmann::json::parse(io::summary_json(case_, results_)).at("mesh");
+  }
   io::Case case_;
   mesh::Mesh<2> mesh_;
   post::Results results_;
 };
+
+TEST_F(ResultsFiles, SummaryMeshSizeIsNullForAFileMeshAndTheDiametersDescribeIt) {
+  // A .msh file has no single cell size: mesh.size (its default here) would describe nothing.
+  case_.mesh_source = mesh::MeshSource::File;
+  case_.mesh_file = "die.msh";
+  results_.min_cell_diameter = 0.03;
+  results_.max_cell_diameter = 0.4;
+  const auto mesh = summary_mesh();
+  EXPECT_EQ(mesh.at("source"), "file");
+  ASSERT_TRUE(mesh.contains("size"));
+  EXPECT_TRUE(mesh.at("size").is_null());
+  EXPECT_EQ(mesh.at("min_cell_diameter"), 0.03);
+  EXPECT_EQ(mesh.at("max_cell_diameter"), 0.4);
+  // Gmsh meshes the channel with mesh.size as its target size.
+  case_.mesh_source = mesh::MeshSource::Gmsh;
+  case_.mesh_size = 0.3;
+  const auto gmsh = summary_mesh();
+  EXPECT_EQ(gmsh.at("source"), "gmsh");
+  EXPECT_EQ(gmsh.at("size"), 0.3);
+}
+
+TEST_F(ResultsFiles, SummaryMeshOfAManufacturedRunIsTheBox) {
+  // The verification box is built from mesh.size, whatever mesh.source says.
+  case_.manufactured = physics::ManufacturedSolution::Smooth;
+  case_.mesh_source = mesh::MeshSource::File;
+  case_.mesh_size = 0.125;
+  const auto mesh = summary_mesh();
+  EXPECT_EQ(mesh.at("source"), "box");
+  EXPECT_EQ(mesh.at("size"), 0.125);
+}
 
 TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   const auto summary = nlohmann::json::parse(io::summary_json(case_, results_));
@@ -184,6 +222,9 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   EXPECT_EQ(mesh.at("dofs"), 2 * mesh_.n_nodes());
   EXPECT_EQ(mesh.at("element"), "Q2");
   EXPECT_EQ(mesh.at("size"), 1.0);
+  EXPECT_EQ(mesh.at("source"), "structured");
+  EXPECT_EQ(mesh.at("min_cell_diameter"), std::sqrt(2.0));  // unit squares
+  EXPECT_EQ(mesh.at("max_cell_diameter"), std::sqrt(2.0));
   // JSON doubles are written with round-trip precision: exact comparisons.
   const auto& pressure = summary.at("pressure");
   EXPECT_EQ(pressure.at("ram_reaction"), 2.6123);
@@ -211,7 +252,10 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   EXPECT_EQ(timing.at("mesh"), 0.01);
   EXPECT_EQ(timing.at("factorization"), 0.0); // absent phases are present as 0
   EXPECT_EQ(timing.at("solve"), 0.0);
-  EXPECT_EQ(summary.at("case"), io::case_to_json(case_));
+  EXPECT_EQ(summary.at("case"), nlohmann::json(io::case_to_json(case_)));
+  // Read in file order, the case block keeps the key table's order.
+  const auto ordered = nlohmann::ordered_json::parse(io::summary_json(case_, results_));
+  EXPECT_EQ(ordered.at("case"), io::case_to_json(case_));
   EXPECT_EQ(summary.at("formflow_version"), FORMFLOW_VERSION);
 }
 

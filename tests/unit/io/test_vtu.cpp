@@ -5,6 +5,7 @@
 #include "formflow/io/case.hpp"
 #include "formflow/io/vtu.hpp"
 #include "support/approx.hpp"
+#include "support/synthetic_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -19,10 +20,6 @@
 #include <string>
 
 namespace formflow::testing {
-
-// Defined in test_results_files.cpp.
-void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& mesh,
-                        post::Results& results);
 
 namespace {
 

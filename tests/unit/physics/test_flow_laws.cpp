@@ -5,6 +5,7 @@
 #include "formflow/physics/flow_law.hpp"
 
 #include "support/approx.hpp"
+#include "support/flow_laws.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,35 +17,6 @@ namespace {
 
 using physics::FlowLaw;
 using physics::FlowLawKind;
-
-FlowLaw norton_hoff(double k, double m) {
-  FlowLaw law;
-  law.kind = FlowLawKind::NortonHoff;
-  law.K = k;
-  law.m = m;
-  return law;
-}
-
-FlowLaw hensel_spittel() {
-  FlowLaw law;
-  law.kind = FlowLawKind::HenselSpittel;
-  law.hs_A = 300.0;
-  law.hs_m1 = -0.002;
-  law.hs_m2 = 0.1;
-  law.hs_m3 = 0.05;
-  law.hs_m4 = -0.01;
-  law.hs_m8 = 1e-4;
-  law.temperature = 700.0;
-  law.strain = 0.5;
-  return law;
-}
-
-FlowLaw perfectly_plastic(double sigma0) {
-  FlowLaw law;
-  law.kind = FlowLawKind::PerfectlyPlastic;
-  law.sigma0 = sigma0;
-  return law;
-}
 
 std::vector<FlowLaw> all_laws() {
   return {FlowLaw{}, norton_hoff(0.8, 0.2), norton_hoff(0.8, 1.0), hensel_spittel(),

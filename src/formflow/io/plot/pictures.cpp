@@ -2,14 +2,39 @@
 // Rendering all pictures of a run, and the layout and subtitle they share.
 #include "formflow/io/plot/pictures.hpp"
 
+#include "formflow/io/case_keys.hpp"
 #include "formflow/io/plot/mesh_drawing.hpp"
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <string_view>
 #include <utility>
+#include <variant>
 
 namespace formflow::io::plot {
+
+namespace {
+
+/// The value of an enumerated case key as written in the case file ("smooth").
+std::string choice_of(const Case& case_, std::string_view key) {
+  return std::get<std::string>(find_case_key(key)->get(case_));
+}
+
+/// A verification run has no process, die or ram: name the exact solution, the
+/// element, h and the distortion of the unit-square mesh instead.
+std::string manufactured_description(const Case& case_, const std::string& outcome) {
+  const std::string distortion =
+      case_.distortion.kind == mesh::Distortion::None
+          ? std::string("uniform cells")
+          : fmt::format("{} distortion {:g}", choice_of(case_, "verification.distortion"),
+                        case_.distortion.amplitude);
+  return fmt::format("manufactured solution \"{}\" · {}, h = {:g} · {} · {}",
+                     choice_of(case_, "verification.solution"), fem::element_name(case_.element),
+                     case_.mesh_size, distortion, outcome);
+}
+
+}  // namespace
 
 std::string run_description(const Case& case_, const post::Results& results) {
   const bool drawing = case_.process.type == physics::ProcessType::Drawing;
@@ -18,6 +43,8 @@ std::string run_description(const Case& case_, const post::Results& results) {
           ? fmt::format("converged in {} iterations", results.iterations)
           : fmt::format("NOT converged ({}, {} iterations)",
                         solvers::stop_reason_name(results.stop_reason), results.iterations);
+  if (case_.manufactured != physics::ManufacturedSolution::None)
+    return manufactured_description(case_, outcome);
   // A mesh read from a file has no single cell size: name the file instead.
   const std::string cells =
       case_.mesh_source == mesh::MeshSource::File

@@ -54,7 +54,8 @@ std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mes
 // Shared by the picture files.
 
 /// One line saying which run this is: process, element, mesh size, friction,
-/// outcome and the ram pressure (the subtitle of every picture).
+/// outcome and the ram pressure (the subtitle of every picture); for a
+/// manufactured-solution run: the solution, element, h, distortion and outcome.
 std::string run_description(const Case& case_, const post::Results& results);
 
 /// Where a field picture puts its mesh (equal aspect) and its colour bar.
