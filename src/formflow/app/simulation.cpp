@@ -7,6 +7,7 @@
 #include "formflow/solvers/augmented_lagrangian.hpp"
 #include "formflow/solvers/condition_estimate.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
+#include "formflow/solvers/saddle_point_iteration.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 #include "formflow/solvers/uzawa_iteration.hpp"
 
@@ -74,6 +75,15 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     multipliers = std::move(augmented.multipliers);
     results.augmentation = {augmented.augmentations, augmented.multiplier_change};
     results.method = "augmented-lagrangian friction around secant";
+  } else if (constraint_multipliers && constraint_multipliers->has_global_pressure()) {
+    // Taylor–Hood: a continuous pressure cannot be condensed; the saddle-point
+    // system is indefinite, so UMFPACK (LU) replaces CHOLMOD here.
+    auto lu = solvers::make_umfpack_solver();
+    outcome = solvers::saddle_point_secant_iteration(*problem, *lu, case_.solver, on_iteration,
+                                                     results.timing);
+    results.method = constraint_multipliers->is_exact_contact()
+                         ? "saddle point (umfpack) with uzawa contact around secant"
+                         : "saddle point (umfpack) around secant";
   } else if (constraint_multipliers && constraint_multipliers->needs_uzawa()) {
     outcome = solvers::uzawa_secant_iteration(*problem, *solver, case_.solver, on_iteration,
                                               results.timing);

@@ -23,9 +23,9 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
   contact_weight_.assign(n_contact_points, 0.0);
   if (!has_pressure_space())
     return;
-  FF_ASSERT(fem::is_discontinuous(formulation.pressure),
-            "a continuous pressure cannot be condensed cell by cell");
   n_pressure_ = fem::pressure_functions_per_cell<dim>(formulation.pressure);
+  if (has_global_pressure())
+    number_vertices();
   const int n_local = mesh.nodes_per_cell() * dim;
   fem::CellValues<dim> values(mesh.order, full_rule);
   typename fem::CellValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
@@ -56,10 +56,41 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
   augmentation_.assign(mesh.n_cells(), 0.0);
 }
 
+template <int dim> void ConstraintMultipliers<dim>::number_vertices() {
+  // Vertex i of the Q1 basis sits at lattice position (bit k of i) · order along
+  // direction k of the lexicographic node numbering (fem/lagrange.hpp).
+  std::vector<Index> vertex_dof(mesh_.n_nodes(), -1);
+  pressure_dofs_.reserve(static_cast<std::size_t>(mesh_.n_cells()) * n_pressure_);
+  for (Index cell = 0; cell < mesh_.n_cells(); ++cell)
+    for (int i = 0; i < n_pressure_; ++i) {
+      int local = 0, stride = 1;
+      for (int k = 0; k < dim; ++k, stride *= mesh_.order + 1)
+        local += ((i >> k) & 1) * mesh_.order * stride;
+      Index& dof = vertex_dof[mesh_.cells(local, cell)];
+      if (dof < 0)
+        dof = n_pressure_dofs_++;
+      pressure_dofs_.push_back(dof);
+    }
+  pressure_ = VectorX::Zero(n_pressure_dofs_);
+}
+
+template <int dim>
+VectorX ConstraintMultipliers<dim>::cell_pressure(Index cell) const {
+  VectorX local(n_pressure_);
+  const auto dofs = cell_pressure_dofs(cell);
+  for (int i = 0; i < n_pressure_; ++i)
+    local[i] = pressure_[dofs[i]];
+  return local;
+}
+
 template <int dim>
 void ConstraintMultipliers<dim>::add_cell_terms(Index cell, std::span<const Real> viscosity,
                                                 MatrixX& local_matrix, VectorX& local_load) {
   const MatrixX& divergence = divergence_[cell];
+  if (has_global_pressure()) {
+    local_load.noalias() -= divergence.transpose() * cell_pressure(cell); // −Bᵀ p
+    return;
+  }
   Real weight = 0.0;
   if (is_exact_pressure()) {
     const Real mean_viscosity = std::accumulate(viscosity.begin(), viscosity.end(), 0.0) /
@@ -102,7 +133,7 @@ VectorX ConstraintMultipliers<dim>::cell_velocity(Index cell, const VectorX& u) 
 template <int dim>
 Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> normal_velocity) {
   Real change = 0.0;
-  if (is_exact_pressure()) {
+  if (is_exact_pressure() && !has_global_pressure()) {
     Real change_norm = 0.0, norm = 0.0;
     for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
       const VectorX step = augmentation_[cell] *
@@ -130,6 +161,8 @@ Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> 
 
 template <int dim>
 VectorX ConstraintMultipliers<dim>::pressure_coefficients(Index cell, const VectorX& u) const {
+  if (has_global_pressure())
+    return cell_pressure(cell); // solved for, not a function of u
   const VectorX projected_divergence =
       inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u));
   if (is_exact_pressure())

@@ -42,6 +42,9 @@ struct Formulation {
 /// and each Uzawa step sets λ_e ← λ_e + r_e M⁻¹ B u_e (fixed point: M⁻¹ B u = 0).
 /// Exact contact (d_N = 0) is the same at each Γ3 quadrature point: the term
 /// r_N u_N v_N, the load −λ_k v_N and λ_k ← λ_k + r_N u_N(x_k) (−σ_N = λ).
+/// A continuous pressure (Q1, Taylor–Hood) uses the same cell B and M but is not
+/// condensed: its vertex values are global unknowns of the saddle-point system
+/// (assembly/saddle_point_system.hpp), stored here; the cell adds only −Bᵀp.
 template <int dim> class ConstraintMultipliers {
 public:
   /// `full_rule` integrates B and M exactly on affine cells; `n_contact_points`
@@ -51,12 +54,24 @@ public:
                         Index n_contact_points);
 
   bool has_pressure_space() const { return formulation_.type == FormulationType::Mixed; }
+  /// Continuous pressure (Taylor–Hood Q2–Q1): global pressure dofs on the cell
+  /// vertices, solved together with the velocity (assembly/saddle_point_system.*),
+  /// never condensed; its d = 0 needs no Uzawa steps.
+  bool has_global_pressure() const {
+    return has_pressure_space() && !fem::is_discontinuous(formulation_.pressure);
+  }
   bool is_exact_pressure() const { return has_pressure_space() && penalty_.d == 0; }
   bool is_exact_contact() const { return penalty_.d_n == 0; }
-  /// True when Uzawa steps are needed (some constraint is exact).
-  bool needs_uzawa() const { return is_exact_pressure() || is_exact_contact(); }
+  /// True when Uzawa steps are needed (some constraint is exact and not solved directly).
+  bool needs_uzawa() const {
+    return (is_exact_pressure() && !has_global_pressure()) || is_exact_contact();
+  }
+  /// True when the cell loop must scatter the local loads (multiplier loads −Bᵀλ,
+  /// −λ_N v_N, or the global pressure's −Bᵀp).
+  bool has_cell_loads() const { return needs_uzawa() || has_global_pressure(); }
 
-  /// Adds the condensed pressure term of `cell` (and its load when d = 0).
+  /// Adds the condensed pressure term of `cell` (and its load when d = 0); for the
+  /// global pressure only its load −Bᵀp (the saddle-point system holds B).
   /// `viscosity` is the secant viscosity at the cell's full-rule points; it fixes
   /// r_e, remembered for the next update (so call update after assembling).
   void add_cell_terms(Index cell, std::span<const Real> viscosity, MatrixX& local_matrix,
@@ -79,11 +94,28 @@ public:
   /// Contact pressure −σ_N at Γ3 point `k` with normal velocity `normal_velocity`.
   Real contact_pressure(Index k, Real normal_velocity) const;
   fem::PressureSpace pressure_space() const { return formulation_.pressure; }
+
+  /// Global pressure (has_global_pressure only). Pressure dof of the cell's basis
+  /// function i (vertex i, lexicographic; length pressure_functions_per_cell).
+  std::span<const Index> cell_pressure_dofs(Index cell) const {
+    const auto size = static_cast<std::size_t>(n_pressure_);
+    return {pressure_dofs_.data() + static_cast<std::size_t>(cell) * size, size};
+  }
+  Index n_pressure_dofs() const { return n_pressure_dofs_; }
+  /// Vertex values of σ_H (length n_pressure_dofs).
+  const VectorX& global_pressure() const { return pressure_; }
+  void set_global_pressure(VectorX pressure) { pressure_ = std::move(pressure); }
+  /// B = ∫ ψ_i div φ_a dx (n_pressure × n_local) and M = ∫ ψ_i ψ_j dx of `cell`.
+  const MatrixX& cell_divergence(Index cell) const { return divergence_[cell]; }
+  const MatrixX& cell_mass(Index cell) const { return mass_[cell]; }
   const Formulation& formulation() const { return formulation_; }
   const physics::Penalty& penalty() const { return penalty_; }
 
 private:
   VectorX cell_velocity(Index cell, const VectorX& u) const;
+  /// Global pressure: numbers the cell vertices (on first sight) into pressure_dofs_.
+  void number_vertices();
+  VectorX cell_pressure(Index cell) const;
 
   const mesh::Mesh<dim>& mesh_;
   physics::Penalty penalty_;
@@ -96,6 +128,9 @@ private:
   std::vector<Real> augmentation_;       ///< r_e per cell from the last assembly (d = 0)
   std::vector<Real> contact_multiplier_; ///< λ_k per Γ3 point (d_N = 0)
   std::vector<Real> contact_weight_;     ///< JxW per Γ3 point, filled by add_contact_terms
+  std::vector<Index> pressure_dofs_;     ///< global pressure: n_pressure per cell, cell-major
+  Index n_pressure_dofs_ = 0;
+  VectorX pressure_;                     ///< global pressure: vertex values of σ_H
 };
 
 } // namespace formflow::assembly

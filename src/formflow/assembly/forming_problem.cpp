@@ -216,7 +216,7 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
     assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_matrix,
                      local_load);
     plan_->scatter(cell, local_matrix, constraints_.values, system);
-    if (multipliers_ && multipliers_->needs_uzawa()) scatter_load(cell, local_load, system);
+    if (multipliers_ && multipliers_->has_cell_loads()) scatter_load(cell, local_load, system);
     if (with_friction && has_exact_friction())
       add_friction_loads(cell, state, coordinates, facet_values, system);
     if (body_force_) {

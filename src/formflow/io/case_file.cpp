@@ -268,16 +268,19 @@ class CaseBuilder {
       blame({"formulation.type", "geometry.symmetry"},
             "the mixed formulation is plane only: its pressure term has no hoop part u_r/r",
             "use formulation.type = \"penalty\" for axisymmetric runs");
-    if (pressure == PressureSpace::Q1)
-      blame({"formulation.pressure"},
-            "the continuous Q1 pressure (Taylor–Hood) is not implemented in the solver: it needs a "
-            "global saddle-point solve (its inf-sup constant is in docs/mixed.md)",
-            "use \"P1disc\" (stable with Q2) or \"P0\"");
+    if (pressure == PressureSpace::Q1 && exact_friction)
+      blame({"formulation.pressure", "friction.regularization"},
+            "exact friction (its augmented-Lagrangian loop runs the CHOLMOD secant solve) is not "
+            "wired to the Taylor–Hood saddle-point solve",
+            "use friction.regularization = \"regularized\", or formulation.pressure = \"P1disc\"");
     if (case_.element == fem::ElementKind::Q1 && pressure != PressureSpace::P0)
       blame({"formulation.pressure", "mesh.element"},
-            fmt::format("Q1 velocity with the {} pressure locks (more pressure than velocity "
-                        "freedom per cell)",
-                        fem::pressure_space_name(pressure)),
+            pressure == PressureSpace::Q1
+                ? std::string("Q1 velocity with the Q1 pressure is not inf-sup stable (spurious "
+                              "pressure modes, docs/mixed.md)")
+                : fmt::format("Q1 velocity with the {} pressure locks (more pressure than velocity "
+                              "freedom per cell)",
+                              fem::pressure_space_name(pressure)),
             "with mesh.element = \"Q1\" use formulation.pressure = \"P0\"; or mesh.element = \"Q2\"");
     if (case_.element == fem::ElementKind::Q1 && case_.penalty.d == 0)
       blame({"penalty.d", "mesh.element"},

@@ -270,9 +270,11 @@ std::vector<CaseKey> discretisation_keys() {
                 {"P1disc", fem::PressureSpace::P1disc},
                 {"Q1", fem::PressureSpace::Q1}},
                [](auto& c) -> auto& { return c.formulation.pressure; })
-          .constraint("mixed with Q1 velocity: P0 only; Q1 (Taylor–Hood) is refused (not implemented)")
+          .constraint("mixed with Q1 velocity: P0 only; Q1 (Taylor–Hood) needs Q2 velocity and "
+                      "regularized friction")
           .doc("pressure space of the mixed formulation: P0 (cell constant), P1disc (cell linear, "
-               "discontinuous) or Q1 (continuous bilinear)"),
+               "discontinuous), both condensed cell by cell, or Q1 (continuous bilinear on the "
+               "vertices, Taylor–Hood: global saddle-point solve with UMFPACK)"),
       real_key("formulation.augmentation", 1e3,
                [](auto& c) -> auto& { return c.formulation.augmentation; })
           .above(0)

@@ -26,4 +26,9 @@ class LinearSolver {
 /// CHOLMOD supernodal LLᵀ through Eigen's CholmodSupport (BLAS-3 on supernodes).
 std::unique_ptr<LinearSolver> make_cholmod_solver();
 
+/// UMFPACK LU through Eigen's UmfPackSupport, for general (indefinite, e.g. the
+/// saddle-point) matrices: unlike the CHOLMOD solver it takes the *full* matrix
+/// (both triangles) in analyze/factorize.
+std::unique_ptr<LinearSolver> make_umfpack_solver();
+
 }  // namespace formflow::solvers

@@ -64,10 +64,21 @@ TEST(FormulationKeys, NegativePenaltyIsOutOfRange) {
   EXPECT_EQ(refusal("", {{"penalty.d", "-1e-3"}}).key, "penalty.d");
 }
 
+TEST(FormulationKeys, TaylorHoodIsAcceptedWithQ2AndExactConstraints) {
+  const Case case_ = load_case("", {{"formulation.type", "mixed"},
+                                    {"formulation.pressure", "Q1"},
+                                    {"mesh.element", "Q2"},
+                                    {"penalty.d", "0"},
+                                    {"penalty.dN", "0"}});
+  EXPECT_EQ(case_.formulation.pressure, fem::PressureSpace::Q1);
+  EXPECT_EQ(case_.penalty.d, 0.0);
+}
+
 TEST(FormulationKeys, UnstableOrUnimplementedPairsAreRefused) {
-  const InputError taylor_hood =
-      refusal("", {{"formulation.type", "mixed"}, {"formulation.pressure", "Q1"}});
-  EXPECT_EQ(taylor_hood.key, "formulation.pressure");
+  const InputError q1_q1 = refusal(
+      "", {{"formulation.type", "mixed"}, {"formulation.pressure", "Q1"}, {"mesh.element", "Q1"}});
+  EXPECT_EQ(q1_q1.key, "mesh.element");
+  EXPECT_TRUE(has_text(q1_q1.message, "Q1 velocity"));
   const InputError locking = refusal(
       "",
       {{"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}, {"mesh.element", "Q1"}});
@@ -89,6 +100,11 @@ TEST(FormulationKeys, CombinationsNotYetSupportedAreRefused) {
       refusal("", {{"friction.regularization", "none"}, {"penalty.dN", "0"}});
   EXPECT_EQ(exact_friction.key, "penalty.dN");
   EXPECT_TRUE(has_text(exact_friction.hint, "regularized"));
+  const InputError friction_taylor_hood = refusal("", {{"formulation.type", "mixed"},
+                                                       {"formulation.pressure", "Q1"},
+                                                       {"friction.regularization", "none"}});
+  EXPECT_EQ(friction_taylor_hood.key, "friction.regularization");
+  EXPECT_TRUE(has_text(friction_taylor_hood.message, "Taylor–Hood"));
 }
 
 TEST(FormulationKeys, RefusalInAFileNamesItsLine) {

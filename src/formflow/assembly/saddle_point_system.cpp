@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: MIT
+// Global B and M of the continuous pressure and the fixed-pattern saddle-point matrix.
+#include "formflow/assembly/saddle_point_system.hpp"
+
+#include "formflow/core/error.hpp"
+#include "formflow/fem/dof_map.hpp"
+
+#include <algorithm>
+
+namespace formflow::assembly {
+
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<Real, Index>>;
+
+SparseMatrix from_triplets(Index rows, Index columns, const Triplets& triplets) {
+  SparseMatrix matrix(rows, columns);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  matrix.makeCompressed();
+  return matrix;
+}
+
+} // namespace
+
+template <int dim>
+SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
+                                          const ConstraintMultipliers<dim>& multipliers,
+                                          const LinearSystem& pattern)
+    : problem_(problem), n_velocity_(problem.plan().n_free()),
+      n_pressure_(multipliers.n_pressure_dofs()), d_(multipliers.penalty().d) {
+  FF_ASSERT(multipliers.has_global_pressure(), "the saddle-point system is for a global pressure");
+  FF_ASSERT(pattern.matrix.isCompressed(), "slots are offsets into a compressed matrix");
+  const auto& mesh = problem.mesh();
+  const ScatterPlan& plan = problem.plan();
+  Triplets free_entries, prescribed_entries, mass_entries;
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    const MatrixX& divergence = multipliers.cell_divergence(cell);
+    const MatrixX& mass = multipliers.cell_mass(cell);
+    const auto pressure_dofs = multipliers.cell_pressure_dofs(cell);
+    for (Index i = 0; i < divergence.rows(); ++i) {
+      for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+        for (int k = 0; k < dim; ++k) {
+          const Index dof = fem::dof_of<dim>(mesh.cells(a, cell), k);
+          const Real value = divergence(i, a * dim + k);
+          if (const Index row = plan.free_index(dof); row >= 0)
+            free_entries.emplace_back(pressure_dofs[i], row, value);
+          else
+            prescribed_entries.emplace_back(pressure_dofs[i], dof, value);
+        }
+      for (Index j = 0; j < mass.cols(); ++j)
+        mass_entries.emplace_back(pressure_dofs[i], pressure_dofs[j], mass(i, j));
+    }
+  }
+  divergence_free_ = from_triplets(n_pressure_, n_velocity_, free_entries);
+  divergence_prescribed_ = from_triplets(n_pressure_, problem.n_dofs(), prescribed_entries);
+  mass_ = from_triplets(n_pressure_, n_pressure_, mass_entries);
+  pressure_weights_ = mass_ * VectorX::Ones(n_pressure_); // Σ_j ψ_j = 1
+
+  // The constant pressure is a null mode iff Bᵀ 1 = 0 on the free dofs (d = 0 only).
+  const VectorX constant_work = divergence_free_.transpose() * VectorX::Ones(n_pressure_);
+  const Real largest =
+      Eigen::Map<const VectorX>(divergence_free_.valuePtr(), divergence_free_.nonZeros())
+          .lpNorm<Eigen::Infinity>();
+  pinned_ = d_ == 0 && constant_work.lpNorm<Eigen::Infinity>() <= 1e-10 * largest;
+
+  // Pattern: A (both triangles), B and Bᵀ, the pressure block; values 0 for now.
+  Triplets entries;
+  const SparseMatrix& lower = pattern.matrix;
+  for (Index column = 0; column < lower.outerSize(); ++column)
+    for (Index k = lower.outerIndexPtr()[column]; k < lower.outerIndexPtr()[column + 1]; ++k) {
+      const Index row = lower.innerIndexPtr()[k];
+      entries.emplace_back(row, column, 0.0);
+      entries.emplace_back(column, row, 0.0);
+    }
+  Triplets fixed;
+  for (Index column = 0; column < divergence_free_.outerSize(); ++column)
+    for (SparseMatrix::InnerIterator it(divergence_free_, column); it; ++it) {
+      if (pinned_ && it.row() == 0)
+        continue;
+      fixed.emplace_back(n_velocity_ + it.row(), column, it.value());
+      fixed.emplace_back(column, n_velocity_ + it.row(), it.value());
+    }
+  if (d_ > 0)
+    for (Index column = 0; column < mass_.outerSize(); ++column)
+      for (SparseMatrix::InnerIterator it(mass_, column); it; ++it)
+        fixed.emplace_back(n_velocity_ + it.row(), n_velocity_ + column, -d_ * it.value());
+  if (pinned_)
+    fixed.emplace_back(n_velocity_, n_velocity_, 1.0);
+  for (const auto& entry : fixed)
+    entries.emplace_back(entry.row(), entry.col(), 0.0);
+  const Index size = n_velocity_ + n_pressure_;
+  matrix_ = from_triplets(size, size, entries);
+
+  static_values_.assign(static_cast<std::size_t>(matrix_.nonZeros()), 0.0);
+  for (const auto& entry : fixed)
+    static_values_[slot(entry.row(), entry.col())] += entry.value();
+  for (Index column = 0; column < lower.outerSize(); ++column)
+    for (Index k = lower.outerIndexPtr()[column]; k < lower.outerIndexPtr()[column + 1]; ++k) {
+      const Index row = lower.innerIndexPtr()[k];
+      lower_slot_.push_back(slot(row, column));
+      upper_slot_.push_back(row == column ? -1 : slot(column, row));
+    }
+}
+
+template <int dim> Index SaddlePointSystem<dim>::slot(Index row, Index column) const {
+  const Index* begin = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[column];
+  const Index* end = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[column + 1];
+  const Index* found = std::lower_bound(begin, end, row);
+  FF_ASSERT(found != end && *found == row, "entry outside the saddle-point pattern");
+  return static_cast<Index>(found - matrix_.innerIndexPtr());
+}
+
+template <int dim> void SaddlePointSystem<dim>::fill_matrix(const LinearSystem& velocity) {
+  FF_ASSERT(velocity.matrix.nonZeros() == static_cast<Index>(lower_slot_.size()),
+            "the velocity matrix keeps the pattern it was built with");
+  Real* values = matrix_.valuePtr();
+  std::copy(static_values_.begin(), static_values_.end(), values);
+  const Real* lower = velocity.matrix.valuePtr();
+  for (std::size_t k = 0; k < lower_slot_.size(); ++k) {
+    values[lower_slot_[k]] += lower[k];
+    if (upper_slot_[k] >= 0)
+      values[upper_slot_[k]] += lower[k];
+  }
+}
+
+template <int dim>
+VectorX SaddlePointSystem<dim>::rhs(const LinearSystem& velocity, const VectorX& pressure) const {
+  VectorX rhs(n_velocity_ + n_pressure_);
+  rhs.head(n_velocity_) = velocity.rhs;
+  // B u − d M (p + δp) = 0 with the prescribed velocities moved across.
+  rhs.tail(n_pressure_) = -(divergence_prescribed_ * problem_.constraints().values);
+  if (d_ > 0)
+    rhs.tail(n_pressure_) += d_ * (mass_ * pressure);
+  if (pinned_)
+    rhs[n_velocity_] = 0.0; // δp_0 = 0
+  return rhs;
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::add_pressure_load(const VectorX& increment,
+                                               LinearSystem& velocity) const {
+  velocity.rhs -= divergence_free_.transpose() * increment;
+  const VectorX prescribed = divergence_prescribed_.transpose() * increment;
+  const ScatterPlan& plan = problem_.plan();
+  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+    if (const Index row = plan.prescribed_index(dof); row >= 0)
+      velocity.prescribed_loads[row] -= prescribed[dof];
+}
+
+template <int dim> void SaddlePointSystem<dim>::fix_pressure_level(VectorX& pressure) const {
+  if (!pinned_)
+    return;
+  pressure.array() -= pressure_weights_.dot(pressure) / pressure_weights_.sum();
+}
+
+template class SaddlePointSystem<2>;
+template class SaddlePointSystem<3>;
+
+} // namespace formflow::assembly

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// The global saddle-point system of the mixed problem (3.7) with a continuous
+// pressure (Taylor–Hood Q2–Q1): velocity and pressure solved together (issue 5).
+#pragma once
+
+#include "formflow/assembly/constraint_multipliers.hpp"
+#include "formflow/assembly/forming_problem.hpp"
+
+#include <vector>
+
+namespace formflow::assembly {
+
+/// [A  Bᵀ; B  −d M] [u; δp] = [F; −B_c u_c + d M p] on the free velocity dofs and
+/// all pressure dofs, with A the secant velocity matrix of one iteration
+/// (viscous, contact and friction terms: FormingProblem::assemble), B_ia =
+/// ∫ ψ_i div φ_a dx, M_ij = ∫ ψ_i ψ_j dx, p the current pressure (its load −Bᵀp is
+/// already in F) and δp its correction. For d > 0 the matrix is symmetric
+/// quasi-definite, for d = 0 a saddle point. The full matrix (both triangles)
+/// keeps one pattern: B and M are built once, A's values are copied into fixed
+/// slots per iteration.
+///
+/// Null mode: with d = 0 the constant pressure is in the kernel of Bᵀ when every
+/// boundary velocity is prescribed (Σ_i B_ia = ∫ div φ_a = ∮ φ_a·n vanishes for
+/// every free dof). Then the first pressure dof is pinned (row and column replaced
+/// by the identity) and every solution is shifted to zero mean, ∫ p dx = 0.
+/// The benchmark has free surfaces and Γ3 is not prescribed: no pin there.
+template <int dim> class SaddlePointSystem {
+public:
+  /// `multipliers` must have a global pressure; `pattern` is a velocity system
+  /// from problem.plan().make_system() (its lower-triangle pattern is A's).
+  SaddlePointSystem(const FormingProblem<dim>& problem,
+                    const ConstraintMultipliers<dim>& multipliers, const LinearSystem& pattern);
+
+  /// Copies the assembled velocity matrix (lower triangle) into the full matrix.
+  void fill_matrix(const LinearSystem& velocity);
+  /// The right-hand side for the current pressure `pressure` (vertex values).
+  VectorX rhs(const LinearSystem& velocity, const VectorX& pressure) const;
+  /// Moves the pressure `increment`'s load −Bᵀ δp into `velocity` (rhs and the
+  /// loads of the prescribed rows), so that its reactions are those of p + δp.
+  void add_pressure_load(const VectorX& increment, LinearSystem& velocity) const;
+  /// Shifts `pressure` to zero mean when the constant is a null mode; else unchanged.
+  void fix_pressure_level(VectorX& pressure) const;
+
+  const SparseMatrix& matrix() const { return matrix_; }
+  Index n_velocity() const { return n_velocity_; }
+  Index n_pressure() const { return n_pressure_; }
+  bool has_pinned_pressure() const { return pinned_; }
+
+private:
+  Index slot(Index row, Index column) const;
+
+  const FormingProblem<dim>& problem_;
+  Index n_velocity_ = 0, n_pressure_ = 0;
+  Real d_ = 0.0;
+  bool pinned_ = false;
+  SparseMatrix divergence_free_; ///< B on the free velocity dofs, n_p × n_free
+  SparseMatrix
+      divergence_prescribed_; ///< B on the prescribed dofs, n_p × n_dofs (other columns empty)
+  SparseMatrix mass_;         ///< M, n_p × n_p
+  VectorX pressure_weights_;  ///< ∫ ψ_i dx
+  SparseMatrix matrix_;       ///< the full saddle-point matrix
+  std::vector<Real> static_values_;            ///< B, Bᵀ, −dM (and the pin) in matrix_'s slots
+  std::vector<Index> lower_slot_, upper_slot_; ///< per value of A's lower triangle (−1: diagonal)
+};
+
+} // namespace formflow::assembly

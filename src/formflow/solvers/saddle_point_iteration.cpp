@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+// Secant steps around a global saddle-point solve (continuous pressure).
+#include "formflow/solvers/saddle_point_iteration.hpp"
+
+#include "formflow/assembly/saddle_point_system.hpp"
+#include "formflow/core/error.hpp"
+#include "formflow/solvers/stop_rule.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace formflow::solvers {
+
+namespace {
+
+struct SaddleStep {
+  std::optional<StopReason> stop;
+  bool constraints_converged = false;
+};
+
+/// One secant step at the lagged velocity `w` (null: constant viscosity):
+/// factorise the saddle-point matrix once, solve for (u, δp), and with exact
+/// contact repeat the solve after each multiplier update until they settle.
+template <int dim>
+SaddleStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+                              assembly::SaddlePointSystem<dim>& saddle, const VectorX* w,
+                              assembly::LinearSystem& system, bool analyse, VectorX& velocity,
+                              PhaseTimes& times) {
+  assembly::ConstraintMultipliers<dim>& multipliers = *problem.multipliers();
+  const assembly::Formulation& formulation = multipliers.formulation();
+  const int max_steps = multipliers.is_exact_contact() ? formulation.uzawa_max_steps : 1;
+  SaddleStep result;
+  for (int step = 0; step < max_steps; ++step) {
+    {
+      ScopedTimer timer(times, "assembly");
+      problem.assemble(w, system); // same matrix each step; the loads −Bᵀp, −λ_N v_N change
+    }
+    if (step == 0) {
+      saddle.fill_matrix(system);
+      if (analyse) {
+        ScopedTimer timer(times, "analysis");
+        if (!solver.analyze(saddle.matrix()))
+          return {StopReason::SolverFailed, false};
+      }
+      ScopedTimer timer(times, "factorization");
+      if (!solver.factorize(saddle.matrix()))
+        return {StopReason::SolverFailed, false};
+    }
+    const VectorX& pressure = multipliers.global_pressure();
+    VectorX solution;
+    {
+      ScopedTimer timer(times, "solve");
+      if (!solver.solve(saddle.rhs(system, pressure), solution))
+        return {StopReason::SolverFailed, false};
+    }
+    if (!solution.allFinite())
+      return {StopReason::NonFinite, false};
+    velocity =
+        problem.plan().expand(solution.head(saddle.n_velocity()), problem.constraints().values);
+    VectorX next_pressure = pressure + solution.tail(saddle.n_pressure());
+    saddle.fix_pressure_level(next_pressure);
+    // The reaction read from `system` must include the new pressure's load.
+    saddle.add_pressure_load(next_pressure - pressure, system);
+    multipliers.set_global_pressure(std::move(next_pressure));
+    if (!multipliers.is_exact_contact()) {
+      result.constraints_converged = true;
+      break;
+    }
+    std::vector<Real> normal_velocity;
+    for (const auto& point : problem.contact_state(velocity))
+      normal_velocity.push_back(point.normal_velocity);
+    const Real change = multipliers.update(velocity, normal_velocity);
+    if (!std::isfinite(change))
+      return {StopReason::NonFinite, false};
+    if (change < formulation.uzawa_tolerance) {
+      result.constraints_converged = true;
+      break;
+    }
+  }
+  return result;
+}
+
+} // namespace
+
+template <int dim>
+SecantOutcome
+saddle_point_secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+                              const IterationControl& control,
+                              const std::function<void(const IterationRecord&)>& on_iteration,
+                              PhaseTimes& times) {
+  FF_ASSERT(problem.multipliers() && problem.multipliers()->has_global_pressure(),
+            "a saddle-point solve needs a global pressure");
+  SecantOutcome outcome;
+  assembly::LinearSystem system = problem.plan().make_system();
+  std::optional<assembly::SaddlePointSystem<dim>> saddle;
+  {
+    ScopedTimer timer(times, "setup");
+    saddle.emplace(problem, *problem.multipliers(), system);
+  }
+  outcome.velocity = problem.constraints().values;
+  if (auto first = solve_saddle_point(problem, solver, *saddle, nullptr, system, true,
+                                      outcome.velocity, times);
+      first.stop) {
+    outcome.stop_reason = *first.stop;
+    return outcome;
+  }
+  for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
+    const auto start = std::chrono::steady_clock::now();
+    VectorX next;
+    const SaddleStep step =
+        solve_saddle_point(problem, solver, *saddle, &outcome.velocity, system, false, next, times);
+    if (step.stop) {
+      outcome.stop_reason = *step.stop;
+      return outcome;
+    }
+    const Real change = (next - outcome.velocity).norm() / next.norm();
+    IterationRecord record;
+    record.iteration = iteration;
+    record.relative_change = change;
+    // Reaction of the last system solved, its pressure load included: K_c· u + B_cᵀ p.
+    record.pressure = problem.driven_force(system, next) / problem.driven_height();
+    record.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outcome.velocity = std::move(next);
+    outcome.history.push_back(record);
+    if (on_iteration)
+      on_iteration(record);
+    if (const auto stop = stop_after_iteration(change, change, record.pressure, control.tolerance,
+                                               step.constraints_converged)) {
+      outcome.stop_reason = *stop;
+      return outcome;
+    }
+  }
+  outcome.stop_reason = StopReason::MaxIterations;
+  return outcome;
+}
+
+template SecantOutcome
+saddle_point_secant_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
+                                 const IterationControl&,
+                                 const std::function<void(const IterationRecord&)>&, PhaseTimes&);
+template SecantOutcome
+saddle_point_secant_iteration<3>(const assembly::FormingProblem<3>&, LinearSolver&,
+                                 const IterationControl&,
+                                 const std::function<void(const IterationRecord&)>&, PhaseTimes&);
+
+} // namespace formflow::solvers
