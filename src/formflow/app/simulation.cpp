@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // One case from parameters to results.
 #include "formflow/app/simulation.hpp"
+#include "formflow/app/coarse_start.hpp"
 
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/post/post_process.hpp"
@@ -92,9 +93,15 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
              case_.formulation.type == assembly::FormulationType::Penalty) {
     // Newton's tangent (plane and axisymmetric) has no condensed mixed pressure
     // yet: mixed cases run the secant iteration.
-    outcome =
-        solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
-    results.method = "newton";
+    // Mesh sequencing (solver.coarse_levels): start from the coarse solution.
+    const std::optional<CoarseStart> coarse = coarse_start(case_, simulation.mesh, results.timing);
+    if (coarse) {
+      results.coarse_iterations = coarse->iterations;
+      results.coarse_mesh_sizes = coarse->mesh_sizes;
+    }
+    outcome = solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration,
+                                        results.timing, coarse ? &coarse->velocity : nullptr);
+    results.method = coarse ? "newton from coarse meshes" : "newton";
   } else {
     outcome =
         solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);

@@ -455,6 +455,13 @@ std::vector<CaseKey> solver_keys() {
           .above(0)
           .doc("newton only: secant steps are taken while the relative change exceeds this "
                "(safeguard far from the solution)"),
+      integer_key("solver.coarse_levels", 0,
+                  [](auto& c) -> auto& { return c.solver.coarse_levels; })
+          .at_least(0)
+          .at_most(6)
+          .doc("newton only: first solve on this many coarser meshes (mesh.size times 2^L, ..., 2), "
+               "each started from the previous one, and start from the last; 0: from the "
+               "constant-viscosity solution; ignored for mesh.source = \"file\""),
   };
 }
 

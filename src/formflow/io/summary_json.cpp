@@ -127,6 +127,8 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["converged"] = results.converged();
   out["stop_reason"] = std::string(solvers::stop_reason_name(results.stop_reason));
   out["iterations"] = results.iterations;
+  out["coarse_iterations"] = results.coarse_iterations;
+  out["coarse_mesh_sizes"] = results.coarse_mesh_sizes;
   out["method"] = results.method;
   out["pressure"] = pressure_json(case_, results);
   out["power"] = power_json(results.power);

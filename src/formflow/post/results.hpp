@@ -77,6 +77,10 @@ struct Results {
   std::string method = "secant";
   int iterations = 0;
   std::vector<solvers::IterationRecord> history;
+  /// Mesh sequencing (solver.coarse_levels): Newton iterations and mesh size per
+  /// coarse level, coarsest first; not counted in `iterations`. Empty: none.
+  std::vector<int> coarse_iterations;
+  std::vector<Real> coarse_mesh_sizes;
 
   Index n_cells = 0, n_nodes = 0, n_dofs = 0;
   /// Smallest and largest cell diameter (mesh/cell_diameter.hpp): the mesh's h,

@@ -158,7 +158,7 @@ template <int dim>
 SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times) {
+                               PhaseTimes& times, const VectorX* initial) {
   SecantOutcome outcome;
   NewtonWork<dim> work{problem, solver, times, problem.plan().make_system(),
                        problem.plan().make_system(), {}, {}, {}, 0};
@@ -171,7 +171,10 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
       return outcome;
     }
   }
-  if (auto stop = secant_step(work, nullptr, outcome.velocity)) {
+  if (initial) {
+    outcome.velocity = problem.plan().expand(free_part(problem.plan(), *initial),
+                                             problem.constraints().values);
+  } else if (auto stop = secant_step(work, nullptr, outcome.velocity)) {
     outcome.stop_reason = *stop;
     return outcome;
   }
@@ -183,7 +186,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
   // solution, with the stress that solve balanced as the dual (secant_duals), the
   // tangent is stiff where that stress is below yield, so the step cannot blow
   // the near-rigid zones apart as the primal tangent (α-soft along ė) does.
-  problem.secant_duals(nullptr, outcome.velocity, work.duals);
+  problem.secant_duals(initial ? &outcome.velocity : nullptr, outcome.velocity, work.duals);
   Real step_change = 0.0;
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start = std::chrono::steady_clock::now();
@@ -226,10 +229,10 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
 template SecantOutcome newton_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&);
+                                           PhaseTimes&, const VectorX*);
 template SecantOutcome newton_iteration<3>(const assembly::FormingProblem<3>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&);
+                                           PhaseTimes&, const VectorX*);
 
 }  // namespace formflow::solvers

@@ -40,10 +40,15 @@ namespace formflow::solvers {
 /// larger of the step taken and the undamped correction ‖δ‖/‖uⁿ⁺¹‖, so that a
 /// short damped step is never mistaken for convergence. Times the secant
 /// phases plus "krylov", "line search" and "dual update".
+///
+/// `initial` (full dof vector; its prescribed values are replaced by the problem's)
+/// replaces the constant-viscosity solve, e.g. a coarse-mesh solution prolonged
+/// (app/coarse_start.hpp); the duals then start from the primal stress there,
+/// w = ν(ε̄̇(initial)) ė(initial) capped to yield.
 template <int dim>
 SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times);
+                               PhaseTimes& times, const VectorX* initial = nullptr);
 
 }  // namespace formflow::solvers

@@ -34,6 +34,9 @@ struct IterationControl {
   NonlinearMethod method = NonlinearMethod::Newton;
   /// Newton only: secant steps are taken while the relative change exceeds this.
   Real newton_start = 0.5;
+  /// Newton only: solve first on this many coarser meshes (sizes 2^L h, ..., 2h)
+  /// and start from the last coarse solution (app/coarse_start.hpp); 0: no.
+  int coarse_levels = 0;
 };
 
 /// One line of the iteration history.

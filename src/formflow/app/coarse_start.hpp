@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Mesh sequencing: Newton's first iterate from the solution on coarser meshes.
+#pragma once
+
+#include "formflow/core/timer.hpp"
+#include "formflow/io/case.hpp"
+#include "formflow/mesh/mesh.hpp"
+#include "formflow/solvers/stop_reason.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace formflow::app {
+
+/// The coarse levels' work, reported beside the fine mesh's own iterations.
+struct CoarseStart {
+  VectorX velocity;                   ///< the coarse solution at the fine mesh's nodes
+  std::vector<Real> mesh_sizes;       ///< coarsest first
+  std::vector<int> iterations;        ///< Newton iterations per coarse level, coarsest first
+  bool converged = true;              ///< every coarse level reached δ
+};
+
+/// Nested iteration (solver.coarse_levels = L > 0): solves `case_` with Newton on
+/// the meshes of size 2^L h, ..., 2h (h = mesh.size; a structured channel mesh and
+/// its refinement by 2 nest exactly), the coarsest from the constant-viscosity
+/// solution and each finer one from the previous solution interpolated to its
+/// nodes (fem/nodal_interpolation.hpp), and returns the last one interpolated to
+/// `fine`. Why: Newton's count from the constant-viscosity start grows with
+/// refinement (the plastic zones settle over 5–6 damped steps, docs/benchmarks.md);
+/// from a converged 2h solution the plastic zones are nearly in place.
+/// Each coarse level stops at max(δ, 1e-2) (finer is wasted: the levels' solutions
+/// differ by more). Only the levels whose mesh the geometry admits are used
+/// (2^L h must divide its lengths; mesh II, h = 1, has none). All phases are timed into `times`
+/// (the coarse solves in the solver's own phases, meshing, set-up and
+/// interpolation as "coarse start"), so the solver time includes the coarse work.
+/// std::nullopt when no coarse level is used (L = 0, none fits, mesh from a file).
+std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<2>& fine,
+                                        PhaseTimes& times);
+
+}  // namespace formflow::app

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+// Point location by buckets of cell bounding boxes and inverse isoparametric maps.
+#include "formflow/fem/nodal_interpolation.hpp"
+#include "formflow/core/error.hpp"
+#include "formflow/fem/lagrange.hpp"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace formflow::fem {
+
+namespace {
+
+/// Reference coordinates ξ of `x` in `cell` by Newton on x(ξ) = x, clamped to the
+/// reference cube after each step (so a point outside the cell ends on its
+/// boundary); returns the clamped ξ and, in `outside`, how far past ±1 the
+/// unclamped ξ lay (0 for a point inside).
+template <int dim>
+Point<dim> reference_coordinates(const mesh::Mesh<dim>& mesh, Index cell, const Point<dim>& x,
+                                 Real& outside) {
+  const int n_nodes = mesh.nodes_per_cell();
+  Eigen::Matrix<Real, dim, Eigen::Dynamic> corners(dim, n_nodes);
+  for (int a = 0; a < n_nodes; ++a) corners.col(a) = mesh.nodes.col(mesh.cells(a, cell));
+  Point<dim> xi = Point<dim>::Zero();
+  VectorX values;
+  Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
+  Point<dim> unclamped = xi;
+  for (int k = 0; k < 20; ++k) {
+    tabulate_shape<dim>(mesh.order, xi, values, gradients);
+    const Point<dim> residual = corners * values - x;
+    const Tensor2<dim> jacobian = corners * gradients.transpose();
+    const Point<dim> step = jacobian.partialPivLu().solve(residual);
+    unclamped = xi - step;
+    xi = unclamped.cwiseMax(-1.0).cwiseMin(1.0);
+    if (step.template lpNorm<Eigen::Infinity>() < 1e-13) break;
+  }
+  outside = std::max(0.0, unclamped.cwiseAbs().maxCoeff() - 1.0);
+  return xi;
+}
+
+}  // namespace
+
+template <int dim>
+VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& source_values,
+                                int components, const mesh::Mesh<dim>& target) {
+  FF_ASSERT(source_values.size() == source.n_nodes() * components,
+                  "source field has one value per node and component");
+  // Buckets: a uniform grid over the source's bounding box, each cell entered in
+  // every bucket its (slightly enlarged) bounding box touches.
+  const Point<dim> low = source.nodes.rowwise().minCoeff(), high = source.nodes.rowwise().maxCoeff();
+  const Real per_direction = std::ceil(std::pow(static_cast<Real>(source.n_cells()), 1.0 / dim));
+  const int n_buckets = std::max(1, static_cast<int>(per_direction));
+  const Point<dim> width = ((high - low) / n_buckets).cwiseMax(1e-300);
+  auto bucket_of = [&](const Point<dim>& x, int direction) {
+    return std::clamp(static_cast<int>(std::floor((x[direction] - low[direction]) / width[direction])),
+                      0, n_buckets - 1);
+  };
+  auto flat = [&](const std::array<int, dim>& index) {
+    int f = 0;
+    for (int d = dim - 1; d >= 0; --d) f = f * n_buckets + index[d];
+    return f;
+  };
+  int total = 1;
+  for (int d = 0; d < dim; ++d) total *= n_buckets;
+  std::vector<std::vector<Index>> buckets(total);
+  for (Index cell = 0; cell < source.n_cells(); ++cell) {
+    Point<dim> cell_low = Point<dim>::Constant(std::numeric_limits<Real>::max());
+    Point<dim> cell_high = -cell_low;
+    for (int a = 0; a < source.nodes_per_cell(); ++a) {
+      cell_low = cell_low.cwiseMin(source.nodes.col(source.cells(a, cell)));
+      cell_high = cell_high.cwiseMax(source.nodes.col(source.cells(a, cell)));
+    }
+    const Point<dim> margin = 1e-6 * (cell_high - cell_low) + Point<dim>::Constant(1e-12);
+    cell_low -= margin, cell_high += margin;
+    std::array<int, dim> first, last, index;
+    for (int d = 0; d < dim; ++d) first[d] = bucket_of(cell_low, d), last[d] = bucket_of(cell_high, d);
+    index = first;
+    while (true) {
+      buckets[flat(index)].push_back(cell);
+      int d = 0;
+      while (d < dim && ++index[d] > last[d]) index[d] = first[d], ++d;
+      if (d == dim) break;
+    }
+  }
+
+  VectorX result(target.n_nodes() * components);
+  VectorX values;
+  Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
+  for (Index node = 0; node < target.n_nodes(); ++node) {
+    const Point<dim> x = target.nodes.col(node);
+    std::array<int, dim> index;
+    for (int d = 0; d < dim; ++d) index[d] = bucket_of(x, d);
+    // The cell containing x, or the one it lies least outside of: first in its
+    // bucket, then (a boundary node of a curved outline) in every cell.
+    Index best_cell = -1;
+    Point<dim> best_xi;
+    Real best_outside = std::numeric_limits<Real>::max();
+    auto try_cells = [&](const std::vector<Index>& cells) {
+      for (Index cell : cells) {
+        Real outside = 0;
+        const Point<dim> xi = reference_coordinates(source, cell, x, outside);
+        if (outside < best_outside) best_outside = outside, best_cell = cell, best_xi = xi;
+        if (outside <= 1e-9) return;
+      }
+    };
+    try_cells(buckets[flat(index)]);
+    if (best_outside > 1e-9) {
+      // The neighbouring buckets (a node just outside a curved source outline).
+      std::array<int, dim> offset;
+      offset.fill(-1);
+      while (true) {
+        std::array<int, dim> neighbour;
+        bool inside = true;
+        for (int d = 0; d < dim; ++d) {
+          neighbour[d] = index[d] + offset[d];
+          inside = inside && neighbour[d] >= 0 && neighbour[d] < n_buckets;
+        }
+        if (inside) try_cells(buckets[flat(neighbour)]);
+        int d = 0;
+        while (d < dim && ++offset[d] > 1) offset[d] = -1, ++d;
+        if (d == dim) break;
+      }
+    }
+    FF_ASSERT(best_cell >= 0, "every target node lies near some source cell");
+    tabulate_shape<dim>(source.order, best_xi, values, gradients);
+    for (int c = 0; c < components; ++c) {
+      Real value = 0;
+      for (int a = 0; a < source.nodes_per_cell(); ++a)
+        value += values[a] * source_values[source.cells(a, best_cell) * components + c];
+      result[node * components + c] = value;
+    }
+  }
+  return result;
+}
+
+template VectorX interpolate_nodal_field<2>(const mesh::Mesh<2>&, const VectorX&, int,
+                                            const mesh::Mesh<2>&);
+template VectorX interpolate_nodal_field<3>(const mesh::Mesh<3>&, const VectorX&, int,
+                                            const mesh::Mesh<3>&);
+
+}  // namespace formflow::fem
