@@ -4,32 +4,26 @@
 
 #include "formflow/assembly/saddle_point_system.hpp"
 #include "formflow/core/error.hpp"
-#include "formflow/solvers/stop_rule.hpp"
+#include "formflow/solvers/lagged_iteration.hpp"
 
-#include <chrono>
 #include <cmath>
 
 namespace formflow::solvers {
 
 namespace {
 
-struct SaddleStep {
-  std::optional<StopReason> stop;
-  bool constraints_converged = false;
-};
-
 /// One secant step at the lagged velocity `w` (null: constant viscosity):
 /// factorise the saddle-point matrix once, solve for (u, δp), and with exact
 /// contact repeat the solve after each multiplier update until they settle.
 template <int dim>
-SaddleStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+LaggedStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                               assembly::SaddlePointSystem<dim>& saddle, const VectorX* w,
                               assembly::LinearSystem& system, bool analyse, VectorX& velocity,
                               PhaseTimes& times) {
   assembly::ConstraintMultipliers<dim>& multipliers = *problem.multipliers();
   const assembly::Formulation& formulation = multipliers.formulation();
   const int max_steps = multipliers.is_exact_contact() ? formulation.uzawa_max_steps : 1;
-  SaddleStep result;
+  LaggedStep result{std::nullopt, false};
   for (int step = 0; step < max_steps; ++step) {
     {
       ScopedTimer timer(times, "assembly");
@@ -90,49 +84,19 @@ saddle_point_secant_iteration(const assembly::FormingProblem<dim>& problem, Line
                               PhaseTimes& times) {
   FF_ASSERT(problem.multipliers() && problem.multipliers()->has_global_pressure(),
             "a saddle-point solve needs a global pressure");
-  SecantOutcome outcome;
   assembly::LinearSystem system = problem.plan().make_system();
   std::optional<assembly::SaddlePointSystem<dim>> saddle;
   {
     ScopedTimer timer(times, "setup");
     saddle.emplace(problem, *problem.multipliers(), system);
   }
-  outcome.velocity = problem.constraints().values;
-  if (auto first = solve_saddle_point(problem, solver, *saddle, nullptr, system, true,
-                                      outcome.velocity, times);
-      first.stop) {
-    outcome.stop_reason = *first.stop;
-    return outcome;
-  }
-  for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
-    const auto start = std::chrono::steady_clock::now();
-    VectorX next;
-    const SaddleStep step =
-        solve_saddle_point(problem, solver, *saddle, &outcome.velocity, system, false, next, times);
-    if (step.stop) {
-      outcome.stop_reason = *step.stop;
-      return outcome;
-    }
-    const Real change = (next - outcome.velocity).norm() / next.norm();
-    IterationRecord record;
-    record.iteration = iteration;
-    record.relative_change = change;
-    // Reaction of the last system solved, its pressure load included: K_c· u + B_cᵀ p.
-    record.pressure = problem.driven_force(system, next) / problem.driven_height();
-    record.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    outcome.velocity = std::move(next);
-    outcome.history.push_back(record);
-    if (on_iteration)
-      on_iteration(record);
-    if (const auto stop = stop_after_iteration(change, change, record.pressure, control.tolerance,
-                                               step.constraints_converged)) {
-      outcome.stop_reason = *stop;
-      return outcome;
-    }
-  }
-  outcome.stop_reason = StopReason::MaxIterations;
-  return outcome;
+  bool analyse = true;  // the first solve analyses the pattern
+  return run_lagged_iteration(
+      problem, system, control, on_iteration, nullptr, [&](const VectorX* w, VectorX& next) {
+        const LaggedStep step = solve_saddle_point(problem, solver, *saddle, w, system, analyse, next, times);
+        analyse = false;
+        return step;
+      });
 }
 
 template SecantOutcome

@@ -1,16 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The secant-modulus loop with its stop reasons.
 #include "formflow/solvers/secant_iteration.hpp"
-#include "formflow/solvers/stop_rule.hpp"
-
-#include <chrono>
-#include <cmath>
+#include "formflow/solvers/lagged_iteration.hpp"
 
 namespace formflow::solvers {
 
 namespace {
-
-/// A relative change this large means the iterates run away, not converge.
 
 /// Assembles K(w), factorises and solves; returns the full velocity or a stop reason.
 template <int dim>
@@ -50,47 +45,15 @@ SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, Lin
                                PhaseTimes& times,
                                const assembly::FrictionMultipliers<dim>* multipliers,
                                const VectorX* start) {
-  SecantOutcome outcome;
   assembly::LinearSystem system = problem.plan().make_system();
-  outcome.velocity = problem.constraints().values;  // u = 0 except prescribed values
-  bool analysed = false;
-  if (start) {
-    outcome.velocity = *start;
-  } else {
-    if (auto stop = solve_linearised(problem, solver, nullptr, system, true, outcome.velocity,
-                                     times, multipliers)) {
-      outcome.stop_reason = *stop;
-      return outcome;
-    }
-    analysed = true;
-  }
-  for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
-    const auto start_time = std::chrono::steady_clock::now();
-    VectorX next;
-    if (auto stop = solve_linearised(problem, solver, &outcome.velocity, system, !analysed, next,
-                                     times, multipliers)) {
-      outcome.stop_reason = *stop;
-      return outcome;
-    }
-    analysed = true;
-    const Real change = (next - outcome.velocity).norm() / next.norm();
-    IterationRecord record;
-    record.iteration = iteration;
-    record.relative_change = change;
-    // The reaction of the linear system just solved: K_c·(uⁿ) uⁿ⁺¹.
-    record.pressure = problem.driven_force(system, next) / problem.driven_height();
-    record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
-    outcome.velocity = std::move(next);
-    outcome.history.push_back(record);
-    if (on_iteration) on_iteration(record);
-    if (const auto stop = stop_after_iteration(change, change, record.pressure,
-                                             control.tolerance)) {
-      outcome.stop_reason = *stop;
-      return outcome;
-    }
-  }
-  outcome.stop_reason = StopReason::MaxIterations;
-  return outcome;
+  bool analysed = false;  // the first solve analyses the pattern, warm start or not
+  return run_lagged_iteration(
+      problem, system, control, on_iteration, start, [&](const VectorX* w, VectorX& next) {
+        const std::optional<StopReason> stop =
+            solve_linearised(problem, solver, w, system, !analysed, next, times, multipliers);
+        analysed = true;
+        return LaggedStep{stop, true};
+      });
 }
 
 template SecantOutcome secant_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,

@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Secant steps around Uzawa multiplier updates that reuse one factorisation.
 #include "formflow/solvers/uzawa_iteration.hpp"
-#include "formflow/solvers/stop_rule.hpp"
+#include "formflow/solvers/lagged_iteration.hpp"
 
 #include "formflow/core/error.hpp"
 
-#include <chrono>
 #include <cmath>
 
 namespace formflow::solvers {
@@ -13,20 +12,15 @@ namespace formflow::solvers {
 namespace {
 
 
-struct UzawaStep {
-  std::optional<StopReason> stop;
-  bool constraints_converged = false;
-};
-
 /// One secant step at the lagged velocity `w` (null: constant viscosity):
 /// factorise K_r(w) once, then Uzawa steps until the multipliers settle.
 template <int dim>
-UzawaStep solve_with_multipliers(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+LaggedStep solve_with_multipliers(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                  const VectorX* w, assembly::LinearSystem& system, bool analyse,
                                  VectorX& velocity, PhaseTimes& times) {
   assembly::ConstraintMultipliers<dim>& multipliers = *problem.multipliers();
   const assembly::Formulation& formulation = multipliers.formulation();
-  UzawaStep result;
+  LaggedStep result{std::nullopt, false};
   for (int step = 0; step < formulation.uzawa_max_steps; ++step) {
     {
       ScopedTimer timer(times, "assembly");
@@ -78,44 +72,14 @@ uzawa_secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolve
                        PhaseTimes& times) {
   FF_ASSERT(problem.multipliers() && problem.multipliers()->needs_uzawa(),
             "Uzawa steps need exact-constraint multipliers");
-  SecantOutcome outcome;
   assembly::LinearSystem system = problem.plan().make_system();
-  outcome.velocity = problem.constraints().values;
-  if (auto first =
-          solve_with_multipliers(problem, solver, nullptr, system, true, outcome.velocity, times);
-      first.stop) {
-    outcome.stop_reason = *first.stop;
-    return outcome;
-  }
-  for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
-    const auto start = std::chrono::steady_clock::now();
-    VectorX next;
-    const UzawaStep step =
-        solve_with_multipliers(problem, solver, &outcome.velocity, system, false, next, times);
-    if (step.stop) {
-      outcome.stop_reason = *step.stop;
-      return outcome;
-    }
-    const Real change = (next - outcome.velocity).norm() / next.norm();
-    IterationRecord record;
-    record.iteration = iteration;
-    record.relative_change = change;
-    // Reaction of the last system solved, its pressure load included: K_c· u − (−Bᵀλ)_c.
-    record.pressure = problem.driven_force(system, next) / problem.driven_height();
-    record.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    outcome.velocity = std::move(next);
-    outcome.history.push_back(record);
-    if (on_iteration)
-      on_iteration(record);
-    if (const auto stop = stop_after_iteration(change, change, record.pressure,
-                                             control.tolerance, step.constraints_converged)) {
-      outcome.stop_reason = *stop;
-      return outcome;
-    }
-  }
-  outcome.stop_reason = StopReason::MaxIterations;
-  return outcome;
+  bool analyse = true;  // the first solve analyses the pattern
+  return run_lagged_iteration(
+      problem, system, control, on_iteration, nullptr, [&](const VectorX* w, VectorX& next) {
+        const LaggedStep step = solve_with_multipliers(problem, solver, w, system, analyse, next, times);
+        analyse = false;
+        return step;
+      });
 }
 
 template SecantOutcome uzawa_secant_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
