@@ -360,6 +360,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
                                         {"solver.initial_rate", "0.5"},
                                         {"solver.method", "\"secant\""},
                                         {"solver.newton_start", "0.2"},
+                                        {"solver.coarse_levels", "2"},
                                         {"verification.solution", "\"smooth\""},
                                         {"verification.distortion", "\"random\""},
                                         {"verification.amplitude", "0.2"},
