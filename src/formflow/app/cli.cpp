@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cstdio>
 
@@ -72,6 +73,10 @@ int run_case(const Options& options) {
                results.pressure.ram_reaction,
                results.pressure.power_balance, results.pressure.total_power,
                results.pressure.mean_hydrostatic_near_ram, options.output_directory);
+  if (show && !results.coarse_iterations.empty())
+    fmt::print("coarse start (solver.coarse_levels): mesh.size {} took {} Newton iterations "
+               "(not counted above; their time is in the solver phases)\n",
+               fmt::join(results.coarse_mesh_sizes, ", "), fmt::join(results.coarse_iterations, ", "));
   if (show && simulation.errors)
     fmt::print("manufactured solution: error V-norm {:.6e}  L2 {:.6e}  hydrostatic L2 {:.6e}\n",
                simulation.errors->v_norm, simulation.errors->l2, simulation.errors->hydrostatic_l2);
