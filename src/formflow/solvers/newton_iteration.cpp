@@ -186,7 +186,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
   // solution, with the stress that solve balanced as the dual (secant_duals), the
   // tangent is stiff where that stress is below yield, so the step cannot blow
   // the near-rigid zones apart as the primal tangent (α-soft along ė) does.
-  problem.secant_duals(initial ? &outcome.velocity : nullptr, outcome.velocity, work.duals);
+  problem.secant_duals(nullptr, outcome.velocity, work.duals);
   Real step_change = 0.0;
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start = std::chrono::steady_clock::now();
