@@ -26,14 +26,13 @@ TEST_P(CoarseStartFineMesh, ConvergesWithReactionEqualToThePower) {
   ASSERT_EQ(results.coarse_mesh_sizes.size(), 2u);
   EXPECT_DOUBLE_EQ(results.coarse_mesh_sizes[0], 0.5);
   EXPECT_DOUBLE_EQ(results.coarse_mesh_sizes[1], 0.25);
-  // Measured: 10, 10, 11 fine iterations (after 5 + 4, 5 + 4, 6 + 4 coarse ones)
-  // against 11, 13, 14 from the constant-viscosity start. Issue 6 asks for ≤ 8:
-  // NOT MET; this bound guards what is achieved.
-  EXPECT_LE(results.iterations, 11);
+  // Issue 6's target, ≤ 8 iterations at ~100 k dofs: measured 6, 6, 6 fine
+  // iterations (after 5 + 4, 5 + 4, 6 + 4 coarse ones) against 11, 13, 14 from
+  // the constant-viscosity start.
+  EXPECT_LE(results.iterations, 8);
   // The identity reaction = total power holds at the discrete solution. From the
   // constant-viscosity start Newton stops (δ = 1e-4) 2.3e-3 (μ = 0) and 1.5e-3
-  // (μ = 0.2) away from it; from the coarse solution ≤ 6e-7 (measured): the
-  // fine iterations end in the quadratic regime. Asserted at δ.
+  // (μ = 0.2) away from it; from the coarse solution ≤ 2e-6 (measured). Asserted at δ.
   EXPECT_LT(std::abs(results.pressure.ram_reaction - results.pressure.total_power) /
                 results.pressure.ram_reaction,
             delta);

@@ -40,6 +40,8 @@ TEST_P(CoarseStart, ReachesTheSameSolutionAndReportsTheCoarseLevel) {
   // The fine iterations are counted alone; the start does not replace them.
   EXPECT_EQ(nested.iterations, static_cast<int>(nested.history.size()));
   EXPECT_GE(nested.iterations, 2);
+  // Measured: 8 for μ = 0 and 0.2 (from mesh II, whose solution is 6 % away).
+  EXPECT_LE(nested.iterations, 8);
   EXPECT_GT(nested.timing.get("coarse start"), 0.0);
 
   const VectorX& u = nested.fields.velocity;

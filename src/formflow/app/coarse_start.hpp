@@ -27,7 +27,8 @@ struct CoarseStart {
 /// nodes (fem/nodal_interpolation.hpp), and returns the last one interpolated to
 /// `fine`. Why: Newton's count from the constant-viscosity start grows with
 /// refinement (the plastic zones settle over 5–6 damped steps, docs/benchmarks.md);
-/// from a converged 2h solution the plastic zones are nearly in place.
+/// from a 2h solution the plastic zones are nearly in place (measured: 6 fine
+/// iterations at 77 762 dofs for L = 2, against 11–14).
 /// Each coarse level stops at max(δ, 1e-2) (finer is wasted: the levels' solutions
 /// differ by more). Only the levels whose mesh the geometry admits are used
 /// (2^L h must divide its lengths; mesh II, h = 1, has none). All phases are timed into `times`

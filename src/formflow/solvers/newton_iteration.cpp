@@ -186,6 +186,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
   // solution, with the stress that solve balanced as the dual (secant_duals), the
   // tangent is stiff where that stress is below yield, so the step cannot blow
   // the near-rigid zones apart as the primal tangent (α-soft along ė) does.
+  // From a given first iterate (a coarse solution) the same dual: ν(initial_rate) ė.
   problem.secant_duals(nullptr, outcome.velocity, work.duals);
   Real step_change = 0.0;
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {

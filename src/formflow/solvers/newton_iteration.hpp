@@ -43,8 +43,11 @@ namespace formflow::solvers {
 ///
 /// `initial` (full dof vector; its prescribed values are replaced by the problem's)
 /// replaces the constant-viscosity solve, e.g. a coarse-mesh solution prolonged
-/// (app/coarse_start.hpp); the duals then start from the primal stress there,
-/// w = ν(ε̄̇(initial)) ė(initial) capped to yield.
+/// (app/coarse_start.hpp). The duals start as in the usual start, from the
+/// constant-viscosity stress at that velocity, w = ν(initial_rate) ė(initial) capped
+/// to yield: stiff in the near-rigid zones. (The primal stress there, at yield in
+/// the plastic zones, made the tangent α-soft along ė and the tail linear: measured
+/// at 77 762 dofs 10, 10, 11 iterations for μ = 0, 0.1, 0.2 against 6, 6, 6.)
 template <int dim>
 SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
