@@ -134,5 +134,25 @@ TEST(MixedFormulation, Q1P0PressureHasACheckerboardThatDoesNotShrinkWithTheMesh)
   EXPECT_LT(q2_fine, 0.5 * q2_coarse);
 }
 
+TEST(MixedFormulation, UzawaStepsStopAtTheirRoundOffFloorOnTheWedgeDrawingCase) {
+  // Q2–P1disc with d = 0 on the shipped wedge-die drawing case: the multiplier
+  // change settles between 1e-8 and 1e-7 (round-off amplified by the augmentation),
+  // above formulation.uzawa_tolerance = 1e-8. Before the floor was recognised every
+  // secant step spent all its Uzawa steps and the run took minutes.
+  const std::string path = std::string(FORMFLOW_SOURCE_DIR) + "/cases/wedge-die-drawing.toml";
+  io::Case case_ = io::load_case(path, {{"formulation.type", "mixed"}, {"penalty.d", "0"},
+                                        {"solver.max_iterations", "150"}});
+  const post::Results results = app::simulate(case_).results;
+  ASSERT_TRUE(results.converged());
+  // Settled multipliers: the reaction is the total power of the exactly
+  // incompressible field, as for every converged Uzawa run.
+  EXPECT_TRUE(approx(results.pressure.ram_reaction, results.pressure.total_power, 1e-4));
+  // Against the penalty problem on the same mesh (d = 1e-3): the same limit up to O(d).
+  const post::Results penalty = app::simulate(io::load_case(path, {})).results;
+  ASSERT_TRUE(penalty.converged());
+  EXPECT_NEAR(results.pressure.ram_reaction, penalty.pressure.ram_reaction,
+              2e-3 * penalty.pressure.ram_reaction);
+}
+
 } // namespace
 } // namespace formflow

@@ -292,7 +292,7 @@ std::vector<CaseKey> discretisation_keys() {
           .above(0)
           .below(1)
           .doc("Uzawa steps (d = 0 or dN = 0) end when the multipliers change by less than "
-               "this, relative"),
+               "this, relative, or stop changing at a round-off floor below its square root"),
       integer_key("formulation.uzawa_max_steps", 50,
                   [](auto& c) -> auto& { return c.formulation.uzawa_max_steps; })
           .at_least(1)

@@ -5,6 +5,7 @@
 #include "formflow/assembly/saddle_point_system.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/lagged_iteration.hpp"
+#include "formflow/solvers/uzawa_settling.hpp"
 
 #include <cmath>
 
@@ -24,6 +25,7 @@ LaggedStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
   const assembly::Formulation& formulation = multipliers.formulation();
   const int max_steps = multipliers.is_exact_contact() ? formulation.uzawa_max_steps : 1;
   LaggedStep result{std::nullopt, false};
+  UzawaSettling settling(formulation.uzawa_tolerance);
   for (int step = 0; step < max_steps; ++step) {
     {
       ScopedTimer timer(times, "assembly");
@@ -66,7 +68,7 @@ LaggedStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
     const Real change = multipliers.update(velocity, normal_velocity);
     if (!std::isfinite(change))
       return {StopReason::NonFinite, false};
-    if (change < formulation.uzawa_tolerance) {
+    if (settling.settled(change)) {
       result.constraints_converged = true;
       break;
     }

@@ -2,6 +2,7 @@
 // Secant steps around Uzawa multiplier updates that reuse one factorisation.
 #include "formflow/solvers/uzawa_iteration.hpp"
 #include "formflow/solvers/lagged_iteration.hpp"
+#include "formflow/solvers/uzawa_settling.hpp"
 
 #include "formflow/core/error.hpp"
 
@@ -21,6 +22,7 @@ LaggedStep solve_with_multipliers(const assembly::FormingProblem<dim>& problem, 
   assembly::ConstraintMultipliers<dim>& multipliers = *problem.multipliers();
   const assembly::Formulation& formulation = multipliers.formulation();
   LaggedStep result{std::nullopt, false};
+  UzawaSettling settling(formulation.uzawa_tolerance);
   for (int step = 0; step < formulation.uzawa_max_steps; ++step) {
     {
       ScopedTimer timer(times, "assembly");
@@ -54,7 +56,7 @@ LaggedStep solve_with_multipliers(const assembly::FormingProblem<dim>& problem, 
     const Real change = multipliers.update(velocity, normal_velocity);
     if (!std::isfinite(change))
       return {StopReason::NonFinite, false};
-    if (change < formulation.uzawa_tolerance) {
+    if (settling.settled(change)) {
       result.constraints_converged = true;
       break;
     }
