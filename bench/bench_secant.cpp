@@ -59,6 +59,9 @@ void method_solve(benchmark::State& state) {
   for (auto _ : state) results = app::simulate(case_).results;
   state.counters["dofs"] = results.n_dofs;
   state.counters["iterations"] = results.iterations;
+  int coarse_iterations = 0;  // Newton's mesh-sequencing start (solver.coarse_levels)
+  for (const int count : results.coarse_iterations) coarse_iterations += count;
+  state.counters["coarse_iterations"] = coarse_iterations;
   state.counters["converged"] = results.converged() ? 1 : 0;
   state.counters["total_s"] = results.timing.get("total");
   state.counters["solver_s"] = solver_seconds(results);

@@ -30,7 +30,7 @@ for k in (1, 2, 4, 8, 16):
 
 # Secant vs Newton (bench/run_benchmarks.sh: method_solve/k/10μ/method).
 print()
-print("| refinement | dofs | μ | secant its | secant solver [s] | Newton its | Newton solver [s] |"
+print("| refinement | dofs | μ | secant its | secant solver [s] | Newton its (+ coarse) | Newton solver [s] |"
       " Newton total [s] | Newton factorisation [s] | bare factorisation [s] | Newton / bare |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
 for k in (1, 2, 4, 8, 16):
@@ -45,10 +45,12 @@ for k in (1, 2, 4, 8, 16):
         if not newton:
             continue
         sec_its = f"{int(secant['iterations'])}" if secant else "—"
+        coarse = int(newton.get("coarse_iterations", 0))
+        newton_its = f"{int(newton['iterations'])}" + (f" (+{coarse})" if coarse else "")
         sec_time = f"{secant['solver_s']:.3f}" if secant else "—"
         bare_s = bare["real_time"] / 1e3 if bare else None
         ratio = f"{newton['solver_s'] / bare_s:.1f}" if bare_s else "—"
         bare_text = f"{bare_s:.3f}" if bare_s else "—"
         print(f"| {k} | {int(newton['dofs'])} | {mu / 10:g} | {sec_its} | {sec_time} |"
-              f" {int(newton['iterations'])} | {newton['solver_s']:.3f} | {newton['total_s']:.2f} |"
+              f" {newton_its} | {newton['solver_s']:.3f} | {newton['total_s']:.2f} |"
               f" {newton['factorization_s']:.3f} | {bare_text} | {ratio} |")

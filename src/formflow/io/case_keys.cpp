@@ -455,13 +455,14 @@ std::vector<CaseKey> solver_keys() {
           .above(0)
           .doc("newton only: secant steps are taken while the relative change exceeds this "
                "(safeguard far from the solution)"),
-      integer_key("solver.coarse_levels", 0,
+      integer_key("solver.coarse_levels", 2,
                   [](auto& c) -> auto& { return c.solver.coarse_levels; })
           .at_least(0)
           .at_most(6)
           .doc("newton only: first solve on this many coarser meshes (mesh.size times 2^L, ..., 2), "
                "each started from the previous one, and start from the last; 0: from the "
-               "constant-viscosity solution; ignored for mesh.source = \"file\""),
+               "constant-viscosity solution; levels the geometry does not admit (or a mesh from a "
+               "file) are skipped, and summary.json coarse_mesh_sizes lists those used"),
   };
 }
 

@@ -36,7 +36,7 @@ struct IterationControl {
   Real newton_start = 0.5;
   /// Newton only: solve first on this many coarser meshes (sizes 2^L h, ..., 2h)
   /// and start from the last coarse solution (app/coarse_start.hpp); 0: no.
-  int coarse_levels = 0;
+  int coarse_levels = 2;
 };
 
 /// One line of the iteration history.
