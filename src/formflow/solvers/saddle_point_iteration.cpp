@@ -5,9 +5,8 @@
 #include "formflow/assembly/saddle_point_system.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/lagged_iteration.hpp"
-#include "formflow/solvers/uzawa_settling.hpp"
+#include "formflow/solvers/uzawa_update.hpp"
 
-#include <cmath>
 
 namespace formflow::solvers {
 
@@ -62,16 +61,10 @@ LaggedStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
       result.constraints_converged = true;
       break;
     }
-    std::vector<Real> normal_velocity;
-    for (const auto& point : problem.contact_state(velocity))
-      normal_velocity.push_back(point.normal_velocity);
-    const Real change = multipliers.update(velocity, normal_velocity);
-    if (!std::isfinite(change))
-      return {StopReason::NonFinite, false};
-    if (settling.settled(change)) {
-      result.constraints_converged = true;
+    if (const auto stop = update_multipliers(problem, velocity, settling, result.constraints_converged))
+      return {stop, false};
+    if (result.constraints_converged)
       break;
-    }
   }
   return result;
 }

@@ -2,11 +2,10 @@
 // Secant steps around Uzawa multiplier updates that reuse one factorisation.
 #include "formflow/solvers/uzawa_iteration.hpp"
 #include "formflow/solvers/lagged_iteration.hpp"
-#include "formflow/solvers/uzawa_settling.hpp"
+#include "formflow/solvers/uzawa_update.hpp"
 
 #include "formflow/core/error.hpp"
 
-#include <cmath>
 
 namespace formflow::solvers {
 
@@ -47,19 +46,10 @@ LaggedStep solve_with_multipliers(const assembly::FormingProblem<dim>& problem, 
     if (!free_velocity.allFinite())
       return {StopReason::NonFinite, false};
     velocity = problem.plan().expand(free_velocity, problem.constraints().values);
-    std::vector<Real> normal_velocity;
-    if (multipliers.is_exact_contact()) {
-      const auto contact = problem.contact_state(velocity);
-      for (const auto& point : contact)
-        normal_velocity.push_back(point.normal_velocity);
-    }
-    const Real change = multipliers.update(velocity, normal_velocity);
-    if (!std::isfinite(change))
-      return {StopReason::NonFinite, false};
-    if (settling.settled(change)) {
-      result.constraints_converged = true;
+    if (const auto stop = update_multipliers(problem, velocity, settling, result.constraints_converged))
+      return {stop, false};
+    if (result.constraints_converged)
       break;
-    }
   }
   return result;
 }
