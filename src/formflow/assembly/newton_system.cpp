@@ -52,22 +52,22 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
   }
   std::vector<ContactPoint<dim>> state = contact_state(u);
   const bool with_friction = settings_.friction.mu > 0;
+  if (coupling && with_friction) {
+    // dτ_f = μ_f dσ̄_N where τ_f > 0 (its own σ̄_N at u, read before the given
+    // thresholds replace it below).
+    coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      if (state[k].friction_threshold <= 0) continue;
+      const Real s = std::sqrt(state[k].tangential_velocity.squaredNorm() +
+                               settings_.friction.d_t * settings_.friction.d_t);
+      coupling->threshold_slip[k] = settings_.friction.mu / s * state[k].tangential_velocity;
+      coupling->has_friction = true;
+    }
+  }
   for (std::size_t k = 0; k < state.size(); ++k) {
     state[k].friction_threshold = thresholds[k];
     state[k].friction_weight = physics::friction_weight(
         thresholds[k], state[k].tangential_velocity.norm(), settings_.friction.d_t);
-  }
-  if (coupling && with_friction) {
-    // dτ_f = μ_f dσ̄_N where τ_f > 0 (its own σ̄_N at u, not the frozen thresholds).
-    const std::vector<ContactPoint<dim>> own = contact_state(u);
-    coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
-    for (std::size_t k = 0; k < state.size(); ++k) {
-      if (own[k].friction_threshold <= 0) continue;
-      const Real s = std::sqrt(own[k].tangential_velocity.squaredNorm() +
-                               settings_.friction.d_t * settings_.friction.d_t);
-      coupling->threshold_slip[k] = settings_.friction.mu / s * own[k].tangential_velocity;
-      coupling->has_friction = true;
-    }
   }
 
   fem::CellValues<dim> full_values(mesh_.order, full_rule_);
@@ -77,6 +77,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
   const int n_local = mesh_.nodes_per_cell() * dim;
   MatrixX local_tangent(n_local, n_local);
   CellVector local_force(n_local), divergence_row(n_local), deviator_row(n_local);
+  VectorX unused_load(n_local);  // contact loads come only from multipliers, absent here
   const int n_q = full_rule_.size(), n_face_q = facet_rule_.size();
   std::vector<Real> viscosity(n_q), coefficient_a(n_q), coefficient_b(n_q), weight(n_face_q);
   std::vector<Tensor3> rates(n_q), deviators(n_q), cell_duals(n_q);
@@ -135,7 +136,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       }
       if (!axisymmetric())
         add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_tangent);
-      VectorX unused_load = VectorX::Zero(n_local);
+      unused_load.setZero();
       assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
                        local_tangent, unused_load);
       local_force.noalias() = local_tangent * local_velocity;
