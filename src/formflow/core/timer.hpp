@@ -24,6 +24,7 @@ class PhaseTimes {
     return it == seconds_.end() ? 0.0 : it->second;
   }
   const std::map<std::string, double>& all() const { return seconds_; }
+  const std::map<std::string, long>& all_counts() const { return counts_; }
 
  private:
   std::map<std::string, double> seconds_;

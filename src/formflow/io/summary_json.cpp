@@ -140,6 +140,10 @@ json summary_document(const Case& case_, const post::Results& results) {
   // included) and the GMRES iterations of Newton's unsymmetric steps.
   out["linear_algebra"] = {{"factorizations", results.timing.counted("factorization")},
                            {"krylov_iterations", results.timing.counted("krylov iterations")}};
+  // How often each timed phase ran (timing_s / timing_calls = cost per call).
+  json calls = json::object();
+  for (const auto& [phase, seconds] : results.timing.all()) calls[phase] = results.timing.counted(phase);
+  out["timing_calls"] = std::move(calls);
   out["history"] = std::move(history);
   out["history_pressure"] = std::move(history_pressure);
   out["case"] = case_json(case_);

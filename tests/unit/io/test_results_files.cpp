@@ -257,6 +257,9 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   const auto& linear_algebra = summary.at("linear_algebra");
   EXPECT_EQ(linear_algebra.at("factorizations"), 9);
   EXPECT_EQ(linear_algebra.at("krylov_iterations"), 12);
+  // Phases added as seconds only (no timer) ran 0 counted times; every timed phase is listed.
+  EXPECT_EQ(summary.at("timing_calls").at("assembly"), 0);
+  EXPECT_EQ(summary.at("timing_calls").size(), 3u);  // total, assembly, mesh
   EXPECT_EQ(summary.at("case"), nlohmann::json(io::case_to_json(case_)));
   // Read in file order, the case block keeps the key table's order.
   const auto ordered = nlohmann::ordered_json::parse(io::summary_json(case_, results_));
