@@ -137,3 +137,73 @@ TEST(MethodReported, NamesTheLoopThatRan) {
 
 }  // namespace
 }  // namespace formflow
+
+namespace formflow {
+namespace {
+
+// The mixed formulation (3.7) with a discontinuous pressure condensed at d > 0
+// runs Newton too (the condensation is linear in u). Measured on mesh II, μ = 0.1:
+// Q2–P1disc 8, Q1–P0 7 iterations (the secant iteration to 1e-8: ~220).
+using MixedVariant = std::tuple<fem::ElementKind, fem::PressureSpace>;
+class MixedNewtonVsSecant : public ::testing::TestWithParam<MixedVariant> {};
+
+TEST_P(MixedNewtonVsSecant, SameSolutionToDeltaInAtMostEightIterations) {
+  const double delta = 1e-4;
+  auto solve = [&](solvers::NonlinearMethod method, double tolerance) {
+    return testing::solve_benchmark([&](io::Case& c) {
+      c.element = std::get<0>(GetParam());
+      c.formulation.type = assembly::FormulationType::Mixed;
+      c.formulation.pressure = std::get<1>(GetParam());
+      c.friction.mu = 0.1;
+      c.solver.method = method;
+      c.solver.tolerance = tolerance;
+      c.solver.max_iterations = 2000;
+    });
+  };
+  const post::Results newton = solve(solvers::NonlinearMethod::Newton, delta);
+  const post::Results reference = solve(solvers::NonlinearMethod::Secant, 1e-8);
+  ASSERT_TRUE(newton.converged());
+  ASSERT_TRUE(reference.converged());
+  EXPECT_EQ(newton.method, "newton");
+  EXPECT_LE(newton.iterations, 8);
+  EXPECT_EQ(newton.timing.counted("factorization"), newton.iterations + 1);
+  const VectorX& u = newton.fields.velocity;
+  const VectorX& u_ref = reference.fields.velocity;
+  EXPECT_LT((u - u_ref).norm() / u_ref.norm(), delta);
+  EXPECT_NEAR(newton.pressure.ram_reaction, reference.pressure.ram_reaction,
+              20 * delta * reference.pressure.ram_reaction);
+  // The mixed pressure field is that of the secant solution (σ_H from the same
+  // condensation), not the penalty problem's.
+  EXPECT_NEAR(newton.pressure.mean_hydrostatic_near_ram, reference.pressure.mean_hydrostatic_near_ram,
+              20 * delta * std::abs(reference.pressure.mean_hydrostatic_near_ram));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    MeshII, MixedNewtonVsSecant,
+    ::testing::Values(MixedVariant{fem::ElementKind::Q2, fem::PressureSpace::P1disc},
+                      MixedVariant{fem::ElementKind::Q1, fem::PressureSpace::P0}));
+
+// Mesh sequencing keeps the formulation: the coarse meshes solve the mixed problem
+// too, and the fine solution is the mixed one (against the plain start).
+TEST(MixedNewton, CoarseStartSolvesTheSameMixedProblem) {
+  auto solve = [](int coarse_levels) {
+    return testing::solve_benchmark([&](io::Case& c) {
+      c.mesh_size = 0.5;
+      c.formulation.type = assembly::FormulationType::Mixed;
+      c.friction.mu = 0.1;
+      c.solver.coarse_levels = coarse_levels;
+      c.solver.tolerance = 1e-6;
+    });
+  };
+  const post::Results coarse = solve(2), plain = solve(0);
+  ASSERT_TRUE(coarse.converged());
+  ASSERT_TRUE(plain.converged());
+  EXPECT_EQ(coarse.method, "newton from coarse meshes");
+  EXPECT_EQ(coarse.coarse_iterations.size(), 1u);  // h = 1 (h = 2 does not nest the die)
+  EXPECT_NEAR(coarse.pressure.ram_reaction, plain.pressure.ram_reaction,
+              1e-5 * plain.pressure.ram_reaction);
+  EXPECT_LT(coarse.iterations, plain.iterations);
+}
+
+}  // namespace
+}  // namespace formflow

@@ -58,11 +58,20 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
     coarse.solver.tolerance = std::max(case_.solver.tolerance, coarse_tolerance);
     mesh::Mesh<2> mesh;
     std::unique_ptr<assembly::FormingProblem<2>> problem;
+    std::unique_ptr<assembly::ConstraintMultipliers<2>> mixed_pressure;
     VectorX guess;
     {
       ScopedTimer timer(times, "coarse start");
       mesh = io::load_mesh(coarse);
       problem = std::make_unique<assembly::FormingProblem<2>>(mesh, problem_settings(coarse));
+      // The same discrete problem on the coarse mesh: the mixed formulation keeps its
+      // condensed pressure (Newton runs mixed cases only with d > 0, d_N > 0).
+      if (coarse.formulation.type == assembly::FormulationType::Mixed) {
+        mixed_pressure = std::make_unique<assembly::ConstraintMultipliers<2>>(
+            mesh, coarse.penalty, coarse.formulation, problem->full_rule(),
+            problem->n_contact_points());
+        problem->attach_multipliers(mixed_pressure.get());
+      }
       if (level < levels)
         guess = fem::interpolate_nodal_field(previous_mesh, previous_velocity, 2, mesh);
     }

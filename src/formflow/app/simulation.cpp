@@ -90,9 +90,9 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
                                               results.timing);
     results.method = "uzawa around secant";
   } else if (case_.solver.method == solvers::NonlinearMethod::Newton &&
-             case_.formulation.type == assembly::FormulationType::Penalty) {
-    // Newton's tangent (plane and axisymmetric) has no condensed mixed pressure
-    // yet: mixed cases run the secant iteration.
+             (!constraint_multipliers || constraint_multipliers->is_condensed_penalty())) {
+    // The penalty problem (plane and axisymmetric) and the mixed one with its
+    // pressure condensed at d > 0 (the condensation is linear in u).
     // Mesh sequencing (solver.coarse_levels): start from the coarse solution.
     const std::optional<CoarseStart> coarse = coarse_start(case_, simulation.mesh, results.timing);
     if (coarse) {

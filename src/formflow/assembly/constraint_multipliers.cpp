@@ -104,6 +104,14 @@ void ConstraintMultipliers<dim>::add_cell_terms(Index cell, std::span<const Real
 }
 
 template <int dim>
+void ConstraintMultipliers<dim>::add_cell_force(Index cell, const Eigen::Ref<const VectorX>& velocity,
+                                                Eigen::Ref<VectorX> force) const {
+  FF_ASSERT(is_condensed_penalty(), "the force of the condensed pressure needs d > 0");
+  const VectorX pressure = inverse_mass_[cell] * (divergence_[cell] * velocity) / penalty_.d;
+  force.noalias() += divergence_[cell].transpose() * pressure;  // Bᵀ c, c = (1/d) M⁻¹ B u
+}
+
+template <int dim>
 void ConstraintMultipliers<dim>::add_contact_terms(Index first_point,
                                                    const fem::FacetValues<dim>& values,
                                                    MatrixX& local_matrix, VectorX& local_load) {

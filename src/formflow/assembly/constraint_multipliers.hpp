@@ -66,6 +66,12 @@ public:
   bool needs_uzawa() const {
     return (is_exact_pressure() && !has_global_pressure()) || is_exact_contact();
   }
+  /// True when the pressure is condensed with d > 0 and no constraint is exact: the
+  /// mixed term is then the fixed SPD matrix (1/d) Bᵀ M⁻¹ B per cell, linear in u,
+  /// so Newton's tangent and residual take it as it is (no multiplier loop).
+  bool is_condensed_penalty() const {
+    return has_pressure_space() && !has_global_pressure() && !needs_uzawa();
+  }
   /// True when the cell loop must scatter the local loads (multiplier loads −Bᵀλ,
   /// −λ_N v_N, or the global pressure's −Bᵀp).
   bool has_cell_loads() const { return needs_uzawa() || has_global_pressure(); }
@@ -76,6 +82,10 @@ public:
   /// r_e, remembered for the next update (so call update after assembling).
   void add_cell_terms(Index cell, std::span<const Real> viscosity, MatrixX& local_matrix,
                       VectorX& local_load);
+  /// The condensed pressure's force on `cell`, (1/d) Bᵀ M⁻¹ B u_e, added to `force`
+  /// for the cell's velocities `velocity` (node-major local dofs); is_condensed_penalty only.
+  void add_cell_force(Index cell, const Eigen::Ref<const VectorX>& velocity,
+                      Eigen::Ref<VectorX> force) const;
   /// Exact contact on one Γ3 face whose first quadrature point is `first_point`.
   void add_contact_terms(Index first_point, const fem::FacetValues<dim>& values,
                          MatrixX& local_matrix, VectorX& local_load);

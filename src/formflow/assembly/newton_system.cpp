@@ -39,9 +39,11 @@ template <int dim>
 void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real> thresholds,
                                           const NewtonDuals<dim>& duals, VectorX& internal_force,
                                           LinearSystem* tangent, UnsymmetricTangent<dim>* coupling) const {
-  // Plane strain with regularised friction only: no hoop terms, no multipliers, no loads.
-  FF_ASSERT(!has_exact_friction() && !multipliers_ && !body_force_,
-            "Newton covers the regularised penalty problem");
+  // Regularised friction, no loads; the mixed formulation only with its pressure
+  // condensed at d > 0 (a fixed matrix per cell: no multiplier loop).
+  FF_ASSERT(!has_exact_friction() && !body_force_ && (!multipliers_ || multipliers_->is_condensed_penalty()),
+            "Newton covers the regularised penalty problem and the condensed mixed one");
+  const bool mixed = multipliers_ != nullptr;
   FF_ASSERT(!coupling || tangent, "the coupling is part of the tangent");
   internal_force.setZero(n_dofs());
   if (tangent) ScatterPlan::clear(*tangent);
@@ -113,7 +115,9 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
                                             local_force);
         }
       }
-      if (!axisymmetric())
+      if (mixed)
+        multipliers_->add_cell_force(cell, local_velocity, local_force);
+      else if (!axisymmetric())
         add_volumetric_force<dim>(volumetric_values, settings_.penalty.d, velocities, local_force);
       for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
         const Index position = cell_contact_[k];
@@ -134,9 +138,11 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
           add_volumetric_penalty_axisymmetric(volumetric_values, settings_.penalty.d, local_tangent);
         }
       }
-      if (!axisymmetric())
-        add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_tangent);
       unused_load.setZero();
+      if (mixed)  // (1/d) Bᵀ M⁻¹ B, as in the secant matrix (case validation: plane only)
+        multipliers_->add_cell_terms(cell, viscosity, local_tangent, unused_load);
+      else if (!axisymmetric())
+        add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_tangent);
       assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
                        local_tangent, unused_load);
       local_force.noalias() = local_tangent * local_velocity;

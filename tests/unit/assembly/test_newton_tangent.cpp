@@ -274,6 +274,16 @@ struct SmallExtrusion {
     for (Index dof = 0; dof < plan.n_dofs(); ++dof)
       if (plan.free_index(dof) < 0) u[dof] = problem->constraints().values[dof];
   }
+  /// The mixed formulation (3.7) with its pressure condensed at d = settings.penalty.d.
+  void attach_mixed_pressure(fem::PressureSpace space) {
+    assembly::Formulation formulation;
+    formulation.type = assembly::FormulationType::Mixed;
+    formulation.pressure = space;
+    mixed_pressure = std::make_unique<assembly::ConstraintMultipliers<2>>(
+        mesh, settings.penalty, formulation, problem->full_rule(), problem->n_contact_points());
+    problem->attach_multipliers(mixed_pressure.get());
+  }
+  std::unique_ptr<assembly::ConstraintMultipliers<2>> mixed_pressure;
   VectorX free_part(const VectorX& full) const {
     VectorX free_values(problem->plan().n_free());
     for (Index dof = 0; dof < problem->plan().n_dofs(); ++dof)
@@ -372,6 +382,36 @@ TEST(NewtonSystem, JacobianWithNodalContactNormalsMatchesFiniteDifferences) {
   const VectorX free_u = extrusion.free_part(extrusion.u);
   const VectorX expected = secant.matrix.selfadjointView<Eigen::Lower>() * free_u - secant.rhs;
   EXPECT_LE((extrusion.free_residual(free_u, &thresholds) - expected).norm(), 1e-12 * expected.norm());
+}
+
+TEST(NewtonSystem, MixedCondensedPressureJacobianAndResidualMatchTheSecantSystem) {
+  // The mixed formulation with a discontinuous pressure condensed at d > 0: the
+  // cell term (1/d) Bᵀ M⁻¹ B replaces the volumetric penalty in the residual (both
+  // paths) and, being linear in u, enters the tangent unchanged.
+  for (const auto space : {fem::PressureSpace::P1disc, fem::PressureSpace::P0}) {
+    SmallExtrusion extrusion(physics::ViscousStrain::Full);
+    extrusion.attach_mixed_pressure(space);
+    const assembly::FormingProblem<2>& problem = *extrusion.problem;
+    const std::vector<Real> thresholds = problem.friction_thresholds(extrusion.u);
+    const MatrixX exact = extrusion.jacobian(thresholds);
+    const MatrixX fd = finite_difference_jacobian(
+        [&](const VectorX& free_u) { return extrusion.free_residual(free_u, nullptr); },
+        extrusion.free_part(extrusion.u), 1e-6);
+    EXPECT_LE((exact - fd).norm(), fd_tolerance * exact.norm());
+
+    assembly::LinearSystem secant = problem.plan().make_system();
+    problem.assemble(&extrusion.u, secant);
+    const VectorX free_u = extrusion.free_part(extrusion.u);
+    const VectorX expected = secant.matrix.selfadjointView<Eigen::Lower>() * free_u - secant.rhs;
+    VectorX with_tangent;
+    assembly::LinearSystem tangent = problem.plan().make_system();
+    problem.assemble_newton(extrusion.u, thresholds, {}, with_tangent, &tangent);
+    EXPECT_LE((extrusion.free_residual(free_u, &thresholds) - expected).norm(), 1e-12 * expected.norm());
+    EXPECT_LE((extrusion.free_part(with_tangent) - expected).norm(), 1e-12 * expected.norm());
+    // Against the penalty problem's residual: the pressure term really changed.
+    const SmallExtrusion penalty(physics::ViscousStrain::Full);
+    EXPECT_GT((penalty.free_residual(free_u, &thresholds) - expected).norm(), 1e-3 * expected.norm());
+  }
 }
 
 TEST(NewtonSystem, ResidualOnlyAssemblyEqualsTheSecantSystemAppliedToTheVelocity) {
