@@ -6,6 +6,7 @@
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
+#include "formflow/solvers/augmented_newton.hpp"
 #include "formflow/solvers/condition_estimate.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/saddle_point_iteration.hpp"
@@ -66,9 +67,29 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   auto solver = solvers::make_cholmod_solver();
   solvers::SecantOutcome outcome;
   assembly::FrictionMultipliers<2> multipliers;
-  if (problem->has_exact_friction()) {
-    // Exact Coulomb friction: the augmented-Lagrangian loop with secant inner
-    // solves (Newton is not wired into it yet; solver.method is ignored here).
+  const bool newton_penalty = case_.solver.method == solvers::NonlinearMethod::Newton &&
+                              case_.formulation.type == assembly::FormulationType::Penalty &&
+                              !constraint_multipliers;
+  if (problem->has_exact_friction() && newton_penalty) {
+    // Exact Coulomb friction by Newton, multipliers updated between its steps
+    // (solvers/augmented_newton.hpp). The coarse levels solve the Coulomb law with
+    // λ̂ = 0, i.e. stick penalty r (multipliers live at the fine Γ3 points only).
+    const std::optional<CoarseStart> coarse = coarse_start(case_, simulation.mesh, results.timing);
+    if (coarse) {
+      results.coarse_iterations = coarse->iterations;
+      results.coarse_mesh_sizes = coarse->mesh_sizes;
+    }
+    auto augmented =
+        solvers::augmented_newton(*problem, *solver, case_.solver, on_iteration, results.timing,
+                                  coarse ? &coarse->velocity : nullptr);
+    outcome = std::move(augmented.solve);
+    multipliers = std::move(augmented.multipliers);
+    results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+    results.method = coarse ? "augmented-lagrangian friction around newton from coarse meshes"
+                            : "augmented-lagrangian friction around newton";
+  } else if (problem->has_exact_friction()) {
+    // Exact Coulomb friction, paper's method (or a mixed formulation): the
+    // augmented-Lagrangian loop with secant inner solves.
     auto augmented = solvers::augmented_lagrangian(
         *problem, solvers::secant_inner_solve(*problem, *solver, results.timing), case_.solver,
         on_iteration);

@@ -55,6 +55,12 @@ struct ContactPoint {
   bool sticking = false;
 };
 
+/// Exact friction at one point for the frozen multiplier λ̂ (its tangential part)
+/// and τ_f = point.friction_threshold: friction_traction = proj(λ̂_T + r u_T) = s t,
+/// friction_weight = s r, friction_load = s λ̂_T, sticking = |t| ≤ τ_f (τ_f > 0).
+template <int dim>
+void exact_friction_point(const Point<dim>& multiplier, Real augmentation, ContactPoint<dim>& point);
+
 /// Dual variables of the primal–dual Newton linearisation (assembly/newton_system.cpp):
 /// the viscous stress w ≈ ν ė per cell and full-rule point (cell-major) and the slip
 /// direction λ ≈ u_T/√(|u_T|² + d_T²) per Γ3 point (contact_state() order). Empty:
@@ -119,10 +125,14 @@ class FormingProblem {
   /// full-ε̇ term and dτ_f; empty for the deviatoric form without friction).
   /// Without `tangent` no matrix is built: a residual costs one pass over the
   /// quadrature points (the line search). The exact residual has thresholds = τ_f(u).
+  /// Exact friction: the traction proj(λ̂ + r u_T) with `friction_multipliers` λ̂
+  /// frozen (null: 0); its semismooth derivative at fixed τ_f goes into `tangent`
+  /// (r P at stick, s r (P − t̂ t̂ᵀ) at slip), its τ_f derivative t̂ dτ_f into `coupling`.
   void assemble_newton(const VectorX& u, std::span<const Real> thresholds,
                        const NewtonDuals<dim>& duals, VectorX& internal_force,
                        LinearSystem* tangent = nullptr,
-                       UnsymmetricTangent<dim>* coupling = nullptr) const;
+                       UnsymmetricTangent<dim>* coupling = nullptr,
+                       const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
 
   /// y_f += N x_f for the coupling N of assemble_newton (free dof vectors).
   void apply_coupling(const UnsymmetricTangent<dim>& coupling, const VectorX& x_free,

@@ -27,6 +27,25 @@
 
 namespace formflow::assembly {
 
+namespace {
+
+/// Exact friction's lagged part of the traction on one Γ3 face: ∫ s λ̂_T·φ_a e_i dΓ
+/// (the rest, s r u_T, is the friction weight of the contact force/matrix).
+template <int dim>
+void add_friction_load_force(const fem::FacetValues<dim>& values,
+                             const std::vector<ContactPoint<dim>>& state, Index position,
+                             CellVector& local_force) {
+  const int n_q = values.n_points();
+  for (int q = 0; q < n_q; ++q) {
+    const Point<dim>& load = state[position * n_q + q].friction_load;
+    if (load.isZero(0.0)) continue;
+    for (int a = 0; a < static_cast<int>(values.shape(q).size()); ++a)
+      local_force.template segment<dim>(a * dim) += (values.shape(q)[a] * values.JxW(q)) * load;
+  }
+}
+
+}  // namespace
+
 template <int dim>
 std::vector<Real> FormingProblem<dim>::friction_thresholds(const VectorX& w) const {
   const std::vector<ContactPoint<dim>> state = contact_state(w);
@@ -38,10 +57,11 @@ std::vector<Real> FormingProblem<dim>::friction_thresholds(const VectorX& w) con
 template <int dim>
 void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real> thresholds,
                                           const NewtonDuals<dim>& duals, VectorX& internal_force,
-                                          LinearSystem* tangent, UnsymmetricTangent<dim>* coupling) const {
-  // Plane strain with regularised friction only: no hoop terms, no multipliers, no loads.
-  FF_ASSERT(!has_exact_friction() && !multipliers_ && !body_force_,
-            "Newton covers the regularised penalty problem");
+                                          LinearSystem* tangent, UnsymmetricTangent<dim>* coupling,
+                                          const FrictionMultipliers<dim>* friction_multipliers) const {
+  // The penalty problem, friction regularised or exact with frozen multipliers
+  // (null: λ̂ = 0): no constraint multipliers, no loads.
+  FF_ASSERT(!multipliers_ && !body_force_, "Newton covers the penalty problem");
   FF_ASSERT(!coupling || tangent, "the coupling is part of the tangent");
   internal_force.setZero(n_dofs());
   if (tangent) ScatterPlan::clear(*tangent);
@@ -50,9 +70,28 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
     coupling->clear();
     coupling->n_local = mesh_.nodes_per_cell() * dim;
   }
-  std::vector<ContactPoint<dim>> state = contact_state(u);
+  std::vector<ContactPoint<dim>> state = contact_state(u, friction_multipliers);
   const bool with_friction = settings_.friction.mu > 0;
-  if (coupling && with_friction) {
+  const bool exact_friction = with_friction && has_exact_friction();
+  if (exact_friction) {
+    // Exact friction: traction proj(λ̂ + r u_T) at the given τ_f; the coupling
+    // keeps dτ_f's direction t̂ = t/|t| at slip points (the projection's τ_f
+    // derivative), zero at stick points and where σ̄_N(u) ≤ 0.
+    if (coupling) coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
+    const bool given = friction_multipliers && !friction_multipliers->traction.empty();
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      if (state[k].friction_threshold <= 0 && thresholds[k] <= 0) continue;  // friction off here
+      const bool own_threshold_positive = state[k].friction_threshold > 0;
+      state[k].friction_threshold = thresholds[k];
+      exact_friction_point(given ? friction_multipliers->traction[k] : Point<dim>::Zero(),
+                           augmentation(), state[k]);
+      const bool slipping = thresholds[k] > 0 && !state[k].sticking;
+      if (!coupling || !slipping || !own_threshold_positive) continue;
+      coupling->threshold_slip[k] = settings_.friction.mu * state[k].friction_traction.normalized();
+      coupling->has_friction = true;
+    }
+  }
+  if (coupling && with_friction && !exact_friction) {
     // dτ_f = μ_f dσ̄_N where τ_f > 0 (its own σ̄_N at u, read before the given
     // thresholds replace it below).
     coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
@@ -64,7 +103,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       coupling->has_friction = true;
     }
   }
-  for (std::size_t k = 0; k < state.size(); ++k) {
+  for (std::size_t k = 0; k < state.size() && !exact_friction; ++k) {
     state[k].friction_threshold = thresholds[k];
     state[k].friction_weight = physics::friction_weight(
         thresholds[k], state[k].tangential_velocity.norm(), settings_.friction.d_t);
@@ -123,6 +162,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
         add_contact_force<dim>(facet_values, settings_.penalty.d_n, velocities,
                                with_friction ? std::span<const Real>(weight) : std::span<const Real>(),
                                local_force);
+        if (exact_friction) add_friction_load_force(facet_values, state, position, local_force);
       }
     } else {
       // The secant matrix K_e(u) gives the residual K_e u_e; the tangent adds to it.
@@ -140,6 +180,11 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
                        local_tangent, unused_load);
       local_force.noalias() = local_tangent * local_velocity;
+      for (Index k = cell_contact_offsets_[cell]; exact_friction && k < cell_contact_offsets_[cell + 1];
+           ++k) {
+        reinit_contact(facet_values, coordinates, cell_contact_[k]);
+        add_friction_load_force(facet_values, state, cell_contact_[k], local_force);
+      }
       if constexpr (dim == 2) {
         if (axisymmetric())
           add_viscous_tangent_axisymmetric(full_values, deviators, cell_duals, coefficient_a,
@@ -152,7 +197,16 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
            ++k) {
         const Index position = cell_contact_[k];
         reinit_contact(facet_values, coordinates, position);
-        for (int q = 0; q < n_face_q; ++q) {
+        for (int q = 0; q < n_face_q && exact_friction; ++q) {
+          // Semismooth derivative of proj(t), t = λ̂ + r u_T, at fixed τ_f: r P at
+          // stick (the secant term s r P already), s r (P − t̂ t̂ᵀ) at slip: add −s r t̂ t̂ᵀ.
+          const ContactPoint<dim>& point = state[position * n_face_q + q];
+          const Real trial_norm = point.friction_traction.norm();
+          const bool slipping = !point.sticking && point.friction_weight > 0 && trial_norm > 0;
+          slip[q] = dual_slip[q] = slipping ? Point<dim>(point.friction_traction) : Point<dim>::Zero();
+          friction_coefficient[q] = slipping ? point.friction_weight / (trial_norm * trial_norm) : 0.0;
+        }
+        for (int q = 0; q < n_face_q && !exact_friction; ++q) {
           const ContactPoint<dim>& point = state[position * n_face_q + q];
           const Real slip_speed = point.tangential_velocity.norm();
           const Real s2 = slip_speed * slip_speed + settings_.friction.d_t * settings_.friction.d_t;
@@ -371,10 +425,10 @@ template std::vector<Real> FormingProblem<2>::friction_thresholds(const VectorX&
 template std::vector<Real> FormingProblem<3>::friction_thresholds(const VectorX&) const;
 template void FormingProblem<2>::assemble_newton(const VectorX&, std::span<const Real>,
                                                  const NewtonDuals<2>&, VectorX&, LinearSystem*,
-                                                 UnsymmetricTangent<2>*) const;
+                                                 UnsymmetricTangent<2>*, const FrictionMultipliers<2>*) const;
 template void FormingProblem<3>::assemble_newton(const VectorX&, std::span<const Real>,
                                                  const NewtonDuals<3>&, VectorX&, LinearSystem*,
-                                                 UnsymmetricTangent<3>*) const;
+                                                 UnsymmetricTangent<3>*, const FrictionMultipliers<3>*) const;
 template void FormingProblem<2>::apply_coupling(const UnsymmetricTangent<2>&, const VectorX&,
                                                 VectorX&) const;
 template void FormingProblem<3>::apply_coupling(const UnsymmetricTangent<3>&, const VectorX&,

@@ -51,6 +51,10 @@ struct NewtonWork {
   assembly::NewtonDuals<dim> duals;  ///< empty = primal (the exact tangent)
   int factorizations = 0;
   Real forcing = max_forcing;        ///< GMRES tolerance η of the next Newton step
+  const FrictionMultiplierHook<dim>* friction = nullptr;  ///< exact friction's λ̂ (may be null)
+  const assembly::FrictionMultipliers<dim>* multipliers() const {
+    return friction ? friction->multipliers : nullptr;
+  }
 };
 
 /// K(w) u = F (w = nullptr: constant viscosity): returns the full velocity, or a stop reason.
@@ -58,7 +62,7 @@ template <int dim>
 std::optional<StopReason> secant_step(NewtonWork<dim>& work, const VectorX* w, VectorX& velocity) {
   {
     ScopedTimer timer(work.times, "assembly");
-    work.problem.assemble(w, work.secant);
+    work.problem.assemble(w, work.secant, work.multipliers());
   }
   {
     ScopedTimer timer(work.times, "factorization");
@@ -81,7 +85,8 @@ template <int dim>
 Real slope_at(NewtonWork<dim>& work, const VectorX& velocity, const VectorX& step, Real t,
               const VectorX& free_step) {
   const VectorX trial = velocity + t * step;
-  work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), work.duals, work.force);
+  work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), work.duals, work.force,
+                               nullptr, nullptr, work.multipliers());
   return free_step.dot(free_part(work.problem.plan(), work.force));
 }
 
@@ -97,7 +102,7 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   {
     ScopedTimer timer(work.times, "assembly");
     work.problem.assemble_newton(velocity, thresholds, work.duals, work.force, &work.tangent,
-                                 &work.coupling);
+                                 &work.coupling, work.multipliers());
     gradient = free_part(plan, work.force);
   }
   {
@@ -158,10 +163,12 @@ template <int dim>
 SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times, const VectorX* initial) {
+                               PhaseTimes& times, const VectorX* initial,
+                               const FrictionMultiplierHook<dim>* friction) {
   SecantOutcome outcome;
   NewtonWork<dim> work{problem, solver, times, problem.plan().make_system(),
                        problem.plan().make_system(), {}, {}, {}, 0};
+  work.friction = friction;
   outcome.velocity = problem.constraints().values;
   {
     // The pattern alone (work.secant is still the zeroed system): no assembly here.
@@ -217,8 +224,10 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     outcome.velocity = std::move(*next);
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
+    const bool settled =
+        !friction || !friction->after_iteration || friction->after_iteration(outcome.velocity, change);
     if (const auto stop = stop_after_iteration(change, step_change, record.pressure,
-                                             control.tolerance)) {
+                                             control.tolerance, settled)) {
       outcome.stop_reason = *stop;
       return outcome;
     }
@@ -230,10 +239,12 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
 template SecantOutcome newton_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&, const VectorX*);
+                                           PhaseTimes&, const VectorX*,
+                                           const FrictionMultiplierHook<2>*);
 template SecantOutcome newton_iteration<3>(const assembly::FormingProblem<3>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&, const VectorX*);
+                                           PhaseTimes&, const VectorX*,
+                                           const FrictionMultiplierHook<3>*);
 
 }  // namespace formflow::solvers
