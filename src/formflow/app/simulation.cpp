@@ -17,6 +17,12 @@
 
 namespace formflow::app {
 
+bool exact_friction_by_newton(const io::Case& case_) {
+  return case_.friction.regularization == physics::FrictionRegularization::None &&
+         case_.solver.method == solvers::NonlinearMethod::Newton &&
+         case_.formulation.type == assembly::FormulationType::Penalty && case_.penalty.d_n > 0;
+}
+
 assembly::ProblemSettings problem_settings(const io::Case& case_) {
   assembly::ProblemSettings settings;
   settings.process = case_.process;
@@ -24,6 +30,8 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   settings.viscous_strain = case_.viscous_strain;
   settings.penalty = case_.penalty;
   settings.friction = case_.friction;
+  // Newton's exact-friction loop has its own augmentation (friction.newton_augmentation).
+  if (exact_friction_by_newton(case_)) settings.friction.augmentation = case_.friction.newton_augmentation;
   settings.volumetric_points = case_.volumetric_points;
   settings.initial_rate = case_.solver.initial_rate;
   settings.symmetry = case_.symmetry;
@@ -67,10 +75,7 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   auto solver = solvers::make_cholmod_solver();
   solvers::SecantOutcome outcome;
   assembly::FrictionMultipliers<2> multipliers;
-  const bool newton_penalty = case_.solver.method == solvers::NonlinearMethod::Newton &&
-                              case_.formulation.type == assembly::FormulationType::Penalty &&
-                              !constraint_multipliers;
-  if (problem->has_exact_friction() && newton_penalty) {
+  if (exact_friction_by_newton(case_)) {
     // Exact Coulomb friction by Newton, multipliers updated between its steps
     // (solvers/augmented_newton.hpp). The coarse levels solve the Coulomb law with
     // λ̂ = 0, i.e. stick penalty r (multipliers live at the fine Γ3 points only).

@@ -200,10 +200,16 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
         for (int q = 0; q < n_face_q && exact_friction; ++q) {
           // Semismooth derivative of proj(t), t = λ̂ + r u_T, at fixed τ_f: r P at
           // stick (the secant term s r P already), s r (P − t̂ t̂ᵀ) at slip: add −s r t̂ t̂ᵀ.
+          // Primal–dual as for the regularised law: with the dual λ ≈ t/|t| (the
+          // traction over τ_f, |λ| ≤ 1) the slip part is −s r/|t| ½(λ t̂ᵀ + t̂ λᵀ):
+          // exact for λ = t̂, PSD with the secant term s r P for any capped λ.
           const ContactPoint<dim>& point = state[position * n_face_q + q];
           const Real trial_norm = point.friction_traction.norm();
           const bool slipping = !point.sticking && point.friction_weight > 0 && trial_norm > 0;
-          slip[q] = dual_slip[q] = slipping ? Point<dim>(point.friction_traction) : Point<dim>::Zero();
+          slip[q] = slipping ? Point<dim>(point.friction_traction) : Point<dim>::Zero();
+          dual_slip[q] = duals.empty() || !slipping
+                             ? slip[q]
+                             : Point<dim>(trial_norm * duals.slip[position * n_face_q + q]);
           friction_coefficient[q] = slipping ? point.friction_weight / (trial_norm * trial_norm) : 0.0;
         }
         for (int q = 0; q < n_face_q && !exact_friction; ++q) {
@@ -326,11 +332,58 @@ void FormingProblem<dim>::update_slip_duals(const VectorX& u, const VectorX& ste
 }
 
 template <int dim>
+std::vector<Point<dim>> FormingProblem<dim>::trial_tractions(
+    const std::vector<ContactPoint<dim>>& state,
+    const FrictionMultipliers<dim>* friction_multipliers) const {
+  const bool given = friction_multipliers && !friction_multipliers->traction.empty();
+  std::vector<Point<dim>> trial(state.size());
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    const Point<dim>& n = state[k].normal;
+    const Point<dim> lambda =
+        given ? Point<dim>(friction_multipliers->traction[k] - friction_multipliers->traction[k].dot(n) * n)
+              : Point<dim>::Zero();
+    trial[k] = lambda + augmentation() * state[k].tangential_velocity;
+  }
+  return trial;
+}
+
+template <int dim>
+void FormingProblem<dim>::update_exact_slip_duals(const VectorX& u, const VectorX& step, bool primal,
+                                                  const FrictionMultipliers<dim>* friction_multipliers,
+                                                  std::vector<Point<dim>>& slip_duals) const {
+  const std::vector<ContactPoint<dim>> state = contact_state(u), change = contact_state(step);
+  const std::vector<Point<dim>> trial = trial_tractions(state, friction_multipliers);
+  slip_duals.resize(state.size());
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    Point<dim>& lambda = slip_duals[k];
+    const Real threshold = state[k].friction_threshold;
+    if (threshold <= 0) {
+      lambda.setZero();
+      continue;
+    }
+    const Point<dim> trial_change = augmentation() * change[k].tangential_velocity;  // δt
+    const Real size = trial[k].norm();
+    if (size <= threshold) {
+      lambda = (trial[k] + trial_change) / threshold;  // stick: λ = t/τ_f is linear in t
+    } else {
+      if (primal) lambda = trial[k] / size;
+      // Newton on |t| λ − t = 0: λ + δλ = (t + δt)/|t| − λ (t·δt)/|t|².
+      lambda = (trial[k] + trial_change) / size - lambda * (trial[k].dot(trial_change) / (size * size));
+    }
+    if (lambda.norm() > 1.0) lambda.normalize();
+  }
+}
+
+template <int dim>
 void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
-                                       NewtonDuals<dim>& all_duals) const {
+                                       NewtonDuals<dim>& all_duals,
+                                       const FrictionMultipliers<dim>* friction_multipliers) const {
   const int n_q = full_rule_.size();
   const bool primal = all_duals.empty();
-  update_slip_duals(u, step, primal, all_duals.slip);
+  if (has_exact_friction())
+    update_exact_slip_duals(u, step, primal, friction_multipliers, all_duals.slip);
+  else
+    update_slip_duals(u, step, primal, all_duals.slip);
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(mesh_.n_cells()) * n_q);
   fem::CellValues<dim> values(mesh_.order, full_rule_);
@@ -372,7 +425,8 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
 
 template <int dim>
 void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& next,
-                                       NewtonDuals<dim>& all_duals) const {
+                                       NewtonDuals<dim>& all_duals,
+                                       const FrictionMultipliers<dim>* friction_multipliers) const {
   const int n_q = full_rule_.size();
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(mesh_.n_cells()) * n_q);
@@ -407,6 +461,20 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
   const std::vector<ContactPoint<dim>> before = previous ? contact_state(*previous) : after;
   const Real d_t = settings_.friction.d_t;
   all_duals.slip.assign(after.size(), Point<dim>::Zero());
+  if (has_exact_friction()) {
+    // The traction that secant step used over τ_f: s(previous) t(next)/τ_f = t(next)/max(τ_f, |t|)(previous).
+    if (!previous) return;
+    const std::vector<Point<dim>> trial_after = trial_tractions(after, friction_multipliers);
+    const std::vector<Point<dim>> trial_before = trial_tractions(before, friction_multipliers);
+    for (std::size_t k = 0; k < after.size(); ++k) {
+      const Real threshold = before[k].friction_threshold;
+      if (threshold <= 0) continue;
+      Point<dim>& lambda = all_duals.slip[k];
+      lambda = trial_after[k] / std::max(threshold, trial_before[k].norm());
+      if (lambda.norm() > 1.0) lambda.normalize();
+    }
+    return;
+  }
   for (std::size_t k = 0; k < after.size() && previous; ++k) {
     const Real s = std::sqrt(before[k].tangential_velocity.squaredNorm() + d_t * d_t);
     Point<dim>& lambda = all_duals.slip[k];
@@ -415,12 +483,14 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
   }
 }
 
-template void FormingProblem<2>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<2>&) const;
-template void FormingProblem<3>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<3>&) const;
+template void FormingProblem<2>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<2>&,
+                                              const FrictionMultipliers<2>*) const;
+template void FormingProblem<3>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<3>&,
+                                              const FrictionMultipliers<3>*) const;
 template void FormingProblem<2>::update_duals(const VectorX&, const VectorX&, const VectorX&,
-                                              NewtonDuals<2>&) const;
+                                              NewtonDuals<2>&, const FrictionMultipliers<2>*) const;
 template void FormingProblem<3>::update_duals(const VectorX&, const VectorX&, const VectorX&,
-                                              NewtonDuals<3>&) const;
+                                              NewtonDuals<3>&, const FrictionMultipliers<3>*) const;
 template std::vector<Real> FormingProblem<2>::friction_thresholds(const VectorX&) const;
 template std::vector<Real> FormingProblem<3>::friction_thresholds(const VectorX&) const;
 template void FormingProblem<2>::assemble_newton(const VectorX&, std::span<const Real>,

@@ -10,9 +10,8 @@ namespace formflow::solvers {
 /// Exact friction (friction.regularization = "none") with solver.method = "newton":
 /// the Alart–Curnier law λ_T = proj_{|λ| ≤ τ_f}(λ̂ + r u_T) with λ̂ frozen inside
 /// each Newton iteration (its semismooth tangent, assembly/newton_system.cpp), and
-/// the Uzawa update λ̂ ← proj(λ̂ + r u_T) after every Newton iteration whose
-/// relative change is below `update_below` (an inexact augmented Lagrangian: no
-/// inner solve to δ per update). Stops, as the secant AL loop does, when a Newton
+/// the Uzawa update λ̂ ← proj(λ̂ + r u_T) after every Newton iteration (an inexact
+/// augmented Lagrangian: no inner solve to δ per update). Stops, as the secant AL loop does, when a Newton
 /// iteration changed the velocity by less than δ relative AND the multipliers it
 /// produced changed by less than δ relative in L²(Γ3). One Newton loop (one
 /// analysis, duals carried on) for the whole run; `initial` as in newton_iteration.

@@ -12,13 +12,13 @@ namespace formflow::solvers {
 
 /// Exact Coulomb friction inside the Newton loop (solvers/augmented_newton.hpp):
 /// `multipliers` λ̂ are frozen during each iteration (its assembly and line
-/// search); after the iteration, `after_iteration(velocity, change)` may update
-/// them and says whether they have settled. The loop stops as converged only
+/// search); after the iteration, `after_iteration(velocity)` may update them and
+/// says whether they have settled. The loop stops as converged only
 /// when its own change is below δ and they have settled.
 template <int dim>
 struct FrictionMultiplierHook {
   const assembly::FrictionMultipliers<dim>* multipliers = nullptr;
-  std::function<bool(const VectorX& velocity, Real change)> after_iteration;
+  std::function<bool(const VectorX& velocity)> after_iteration;
 };
 
 }  // namespace formflow::solvers

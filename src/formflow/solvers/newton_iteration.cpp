@@ -151,7 +151,7 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   VectorX next = velocity + t * step;
   {
     ScopedTimer dual_timer(work.times, "dual update");
-    work.problem.update_duals(velocity, step, next, work.duals);
+    work.problem.update_duals(velocity, step, next, work.duals, work.multipliers());
   }
   full_change = step.norm() / next.norm();
   return next;
@@ -194,7 +194,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
   // tangent is stiff where that stress is below yield, so the step cannot blow
   // the near-rigid zones apart as the primal tangent (α-soft along ė) does.
   // From a given first iterate (a coarse solution) the same dual: ν(initial_rate) ė.
-  problem.secant_duals(nullptr, outcome.velocity, work.duals);
+  problem.secant_duals(nullptr, outcome.velocity, work.duals, work.multipliers());
   Real step_change = 0.0;
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start = std::chrono::steady_clock::now();
@@ -210,7 +210,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
       }
       // After a secant step the duals restart from the stress it balanced (not
       // the primal w = ν ė, whose tangent is α-soft along ė in near-rigid zones).
-      problem.secant_duals(&outcome.velocity, *next, work.duals);
+      problem.secant_duals(&outcome.velocity, *next, work.duals, work.multipliers());
     }
     step_change = (*next - outcome.velocity).norm() / next->norm();
     const Real change = std::max(step_change, full_change);
@@ -225,7 +225,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
     const bool settled =
-        !friction || !friction->after_iteration || friction->after_iteration(outcome.velocity, change);
+        !friction || !friction->after_iteration || friction->after_iteration(outcome.velocity);
     if (const auto stop = stop_after_iteration(change, step_change, record.pressure,
                                              control.tolerance, settled)) {
       outcome.stop_reason = *stop;
