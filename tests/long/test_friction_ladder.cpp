@@ -26,6 +26,8 @@ io::Case benchmark(double mu, double radius, physics::FrictionRegularization reg
   case_.friction.radius = radius;
   case_.friction.regularization = regularization;
   case_.solver.max_iterations = 100000;
+  // The secant path: docs/friction.md's tables (bench/friction_table.py) are its numbers.
+  case_.solver.method = solvers::NonlinearMethod::Secant;
   return case_;
 }
 
