@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -106,10 +107,25 @@ TEST_P(ExactCoulomb, ConditionsHoldPointwiseAndReactionEqualsPower) {
             20 * case_.solver.tolerance);
 }
 
+std::string loop_name(solvers::NonlinearMethod method) {
+  return method == secant ? "Secant" : "Newton";
+}
+
+std::string variant_name(const ::testing::TestParamInfo<Variant>& info) {
+  const double mu = std::get<0>(info.param), radius = std::get<1>(info.param);
+  return std::string(mu == 0.1 ? "Mu01" : "Mu02") + (radius == 0.0 ? "Local" : "Nonlocal") +
+         loop_name(std::get<2>(info.param));
+}
+
+std::string method_name(const ::testing::TestParamInfo<solvers::NonlinearMethod>& info) {
+  return loop_name(info.param);
+}
+
 INSTANTIATE_TEST_SUITE_P(BenchmarkMeshOne, ExactCoulomb,
                          ::testing::Combine(::testing::Values(0.1, 0.2),
                                             ::testing::Values(0.0, mesh_one),
-                                            ::testing::Values(secant, newton)));
+                                            ::testing::Values(secant, newton)),
+                         variant_name);
 
 TEST_P(ExactFriction, RegularisedSolutionsConvergeAtLeastLikeSquareRootOfDT) {
   // Theorem 3.3: ‖u − u_dT‖ ≤ C √d_T. The discrete error measure is the relative
@@ -151,7 +167,7 @@ TEST_P(ExactFriction, RegularisedSolutionsConvergeAtLeastLikeSquareRootOfDT) {
         << "d_T = " << d_t[k];
 }
 
-INSTANTIATE_TEST_SUITE_P(BothLoops, ExactFriction, ::testing::Values(secant, newton));
+INSTANTIATE_TEST_SUITE_P(BothLoops, ExactFriction, ::testing::Values(secant, newton), method_name);
 
 } // namespace
 } // namespace formflow::testing

@@ -112,14 +112,14 @@ MatrixX finite_difference_jacobian(const std::function<VectorX(const VectorX&)>&
 // the stick/slip switch |t| = τ_f (checked by the both-sides test below).
 constexpr double fd_tolerance = 1e-7;
 
-TEST(ExactFrictionNewton, TheSampleHasStickingAndSlippingPoints) {
+TEST(ExactFrictionJacobian, TheSampleHasStickingAndSlippingPoints) {
   const ExactFrictionExtrusion extrusion(physics::ViscousStrain::Deviatoric);
   const auto [stick, slip] = extrusion.stick_and_slip();
   EXPECT_GT(stick, 0);
   EXPECT_GT(slip, 0);
 }
 
-TEST(ExactFrictionNewton, ResidualEqualsTheSecantSystemWithTheSameMultipliers) {
+TEST(ExactFrictionJacobian, ResidualEqualsTheSecantSystemWithTheSameMultipliers) {
   // K(u) u − F of the secant assembly (load s λ̂, penalty s r) is the residual;
   // the residual-only and the tangent path agree, and so do the reactions.
   for (const auto symmetry : {physics::Symmetry::Plane, physics::Symmetry::Axisymmetric}) {
@@ -147,7 +147,7 @@ TEST(ExactFrictionNewton, ResidualEqualsTheSecantSystemWithTheSameMultipliers) {
   }
 }
 
-TEST(ExactFrictionNewton, TangentAtFixedThresholdMatchesFiniteDifferences) {
+TEST(ExactFrictionJacobian, TangentAtFixedThresholdMatchesFiniteDifferences) {
   // Deviatoric form, τ_f frozen: T is the whole Jacobian; the coupling holds dτ_f.
   const ExactFrictionExtrusion extrusion(physics::ViscousStrain::Deviatoric);
   const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
@@ -161,7 +161,7 @@ TEST(ExactFrictionNewton, TangentAtFixedThresholdMatchesFiniteDifferences) {
   EXPECT_GT((with_coupling - symmetric).norm(), 1e3 * fd_tolerance * symmetric.norm());
 }
 
-TEST(ExactFrictionNewton, FullJacobianWithTheThresholdCouplingMatchesFiniteDifferences) {
+TEST(ExactFrictionJacobian, FullJacobianWithTheThresholdCouplingMatchesFiniteDifferences) {
   // τ_f(u) not frozen, both a-forms, plane and axisymmetric: T + N is exact.
   for (const auto symmetry : {physics::Symmetry::Plane, physics::Symmetry::Axisymmetric})
     for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
