@@ -82,7 +82,7 @@ TEST(ExactFrictionNewton, CoarseStartSolvesTheCoulombLawWithZeroMultipliersOnCoa
   auto run = [](int coarse_levels) {
     return testing::solve_benchmark([&](io::Case& c) {
       c.mesh_size = 0.5;
-      c.friction.mu = 0.2;
+      c.friction.mu = 0.1;  // μ = 0.2 is alike but takes twice as long (46 iterations)
       c.friction.regularization = physics::FrictionRegularization::None;
       c.solver.coarse_levels = coarse_levels;
     });
