@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Residual and consistent tangent of the regularised penalty problem (eq. 3.19) for Newton.
+// Residual and consistent tangent of the penalty problem (eq. 3.19) for Newton, with
+// regularised friction or exact friction at frozen multipliers λ̂ (the traction
+// proj(λ̂ + r u_T); its semismooth derivative in T, its τ_f derivative in N).
 //
 // The exact Jacobian is split as J = T + N so that CHOLMOD LLᵀ (one symbolic
 // analysis, the pattern of the secant system) still applies to T:

@@ -11,9 +11,9 @@ namespace formflow::solvers {
 /// the Alart–Curnier law λ_T = proj_{|λ| ≤ τ_f}(λ̂ + r u_T) with λ̂ frozen inside
 /// each Newton iteration (its semismooth tangent, assembly/newton_system.cpp), and
 /// the Uzawa update λ̂ ← proj(λ̂ + r u_T) after every Newton iteration (an inexact
-/// augmented Lagrangian: no inner solve to δ per update). Stops, as the secant AL loop does, when a Newton
-/// iteration changed the velocity by less than δ relative AND the multipliers it
-/// produced changed by less than δ relative in L²(Γ3). One Newton loop (one
+/// augmented Lagrangian: no inner solve to δ per update). Stops, as the secant AL
+/// loop does, when a Newton iteration changed the velocity by less than δ relative
+/// AND the multipliers it produced changed by less than δ relative in L²(Γ3). One Newton loop (one
 /// analysis, duals carried on) for the whole run; `initial` as in newton_iteration.
 /// AugmentedOutcome::augmentations counts the updates.
 template <int dim>
