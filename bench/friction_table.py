@@ -9,8 +9,14 @@ mollifier radius 0 (local) and 1 (one cell), with exact friction
 d_T = 1e-1 ... 1e-6 (relative to the ram speed u0 = 1). Every solve is iterated to
 solver.tolerance = 1e-8 so the differences to the exact solution are not
 iteration error. A first table compares exact and regularised (d_T = 1e-6)
-friction at the paper's tolerance 1e-4. Prints Markdown tables.
+friction at the paper's tolerance 1e-4. Prints Markdown tables. All of these run
+the paper's secant iteration (solver.method = "secant").
+
+With --newton-cost, prints instead the cost table of exact friction by Newton
+(solver.method = "newton", solvers/augmented_newton.hpp) against the secant loop,
+at delta = 1e-4 and 1e-8, for the same four cases.
 Usage: python3 bench/friction_table.py [--binary build/formflow] [--out /tmp/ff-friction]
+                                       [--newton-cost]
 """
 import argparse
 import json
@@ -23,10 +29,10 @@ LADDER = ["1e-1", "1e-2", "1e-3", "1e-4", "1e-5", "1e-6"]
 TOLERANCE = "1e-8"
 
 
-def solve(binary, out, name, settings, tolerance=TOLERANCE):
+def solve(binary, out, name, settings, tolerance=TOLERANCE, method="secant"):
     directory = Path(out) / name
     command = [binary, "run", "-q", "-o", str(directory), "--set", f"solver.tolerance={tolerance}",
-               "--set", "solver.max_iterations=100000", "--set", 'solver.method="secant"']
+               "--set", "solver.max_iterations=100000", "--set", f'solver.method="{method}"']
     for key, value in settings.items():
         command += ["--set", f"{key}={value}"]
     subprocess.run(command, check=False)  # exit 3 is reported in the table
@@ -99,11 +105,42 @@ def table(binary, out, mu, radius):
               f" {stick[1]:.3f} | {summary['iterations']} | {summary['stop_reason']} |")
 
 
+def newton_cost_table(binary, out):
+    print("| μ | radius h | δ | Newton iterations | multiplier updates | ram reaction |"
+          " total power | stick die | secant iterations | secant updates | secant ram reaction |"
+          " secant stick die | Newton s | secant s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for tolerance in ("1e-4", "1e-8"):
+        for mu in ("0.1", "0.2"):
+            for radius in ("0", "1"):
+                settings = {**base_settings(mu, radius), "friction.regularization": "none"}
+                runs = [solve(binary, out, f"cost-{method}-mu{mu}-h{radius}-tol{tolerance}",
+                              settings, tolerance=tolerance, method=method)[0]
+                        for method in ("newton", "secant")]
+                cells = []
+                for summary in runs:
+                    updates = summary["contact"]["augmented_lagrangian"]["outer_iterations"]
+                    cells.append((summary["iterations"], updates,
+                                  summary["pressure"]["ram_reaction"],
+                                  summary["pressure"]["total_power"],
+                                  summary["contact"]["die"]["stick_length"],
+                                  summary["timing_s"]["total"], summary["stop_reason"]))
+                newton, secant = cells
+                print(f"| {mu} | {radius} | {tolerance} | {newton[0]} | {newton[1]} | {newton[2]:.6f} |"
+                      f" {newton[3]:.6f} | {newton[4]:.3f} | {secant[0]} | {secant[1]} |"
+                      f" {secant[2]:.6f} | {secant[4]:.3f} | {newton[5]:.2f} | {secant[5]:.2f} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--binary", default="build/formflow")
     parser.add_argument("--out", default="/tmp/ff-friction")
+    parser.add_argument("--newton-cost", action="store_true",
+                        help="print only the Newton-vs-secant cost table of exact friction")
     args = parser.parse_args()
+    if args.newton_cost:
+        newton_cost_table(args.binary, args.out)
+        return
     paper_tolerance_table(args.binary, args.out)
     for mu in ("0.1", "0.2"):
         for radius in ("0", "1"):

@@ -55,6 +55,7 @@ const BadCase bad_cases[] = {
     {"bad-friction-regularization.toml", 4, "friction.regularization",
      "valid values: \"regularized\", \"none\""},
     {"zero-augmentation.toml", 5, "friction.augmentation", "must be"},
+    {"zero-newton-augmentation.toml", 5, "friction.newton_augmentation", "must be"},
     // Die geometry.
     {"die-angle-90.toml", 4, "geometry.die_angle", "0 < value < 90"},
     {"die-no-reduction.toml", 5, "geometry.exit_half_height", "< geometry.entry_half_height"},

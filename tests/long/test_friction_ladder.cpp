@@ -3,6 +3,7 @@
 // converges at the paper's δ = 1e-4 for μ = 0.1, 0.2 with the local and the
 // mollified pressure, satisfies the Coulomb conditions, and the regularised
 // solutions approach it as d_T → 0 at least like √d_T (Theorem 3.3). Minutes.
+// Both loops: the secant one (docs/friction.md's tables) and Newton.
 #include "support/approx.hpp"
 #include "support/friction_study.hpp"
 
@@ -10,33 +11,38 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <tuple>
 #include <vector>
 
 namespace formflow::testing {
 namespace {
 
-/// μ, mollifier radius (0 = local, 1 = one cell of mesh II).
-using Variant = std::tuple<double, double>;
+/// μ, mollifier radius (0 = local, 1 = one cell of mesh II), nonlinear loop.
+using Variant = std::tuple<double, double, solvers::NonlinearMethod>;
 class FrictionLadder : public ::testing::TestWithParam<Variant> {};
 
-io::Case benchmark(double mu, double radius, physics::FrictionRegularization regularization) {
+io::Case benchmark(double mu, double radius, physics::FrictionRegularization regularization,
+                   solvers::NonlinearMethod method) {
   io::Case case_; // defaults: Q2, 2×2 volumetric rule, mesh II, friction on container and die
   case_.friction.mu = mu;
   case_.friction.radius = radius;
   case_.friction.regularization = regularization;
   case_.solver.max_iterations = 100000;
+  // The secant path's numbers are docs/friction.md's tables (bench/friction_table.py).
+  case_.solver.method = method;
   return case_;
 }
 
 TEST_P(FrictionLadder, ExactConvergesAtThePapersToleranceWithStickAndSlip) {
-  const auto [mu, radius] = GetParam();
+  const auto [mu, radius, method] = GetParam();
   const FrictionSolve solve =
-      solve_friction_case(benchmark(mu, radius, physics::FrictionRegularization::None));
+      solve_friction_case(benchmark(mu, radius, physics::FrictionRegularization::None, method));
   ASSERT_TRUE(solve.converged());
   // The secant iteration alone needs ≈ 60 here; the multiplier updates add ≈ 30–45
-  // single secant steps. A bound that would catch a loop that stalls.
-  EXPECT_LT(solve.iterations, 200);
+  // single secant steps. Newton: 16–24 (docs/friction.md "Cost"). Bounds that
+  // would catch a loop that stalls.
+  EXPECT_LT(solve.iterations, method == solvers::NonlinearMethod::Newton ? 30 : 200);
   const auto& zones = solve.results.die_zones;
   EXPECT_GT(zones.stick_length, 0.0);
   EXPECT_GT(zones.slip_length(), 0.0);
@@ -46,15 +52,15 @@ TEST_P(FrictionLadder, ExactConvergesAtThePapersToleranceWithStickAndSlip) {
 }
 
 TEST_P(FrictionLadder, RegularisedApproachesExactAtLeastLikeSquareRootOfDT) {
-  const auto [mu, radius] = GetParam();
-  io::Case exact_case = benchmark(mu, radius, physics::FrictionRegularization::None);
+  const auto [mu, radius, method] = GetParam();
+  io::Case exact_case = benchmark(mu, radius, physics::FrictionRegularization::None, method);
   exact_case.solver.tolerance = 1e-9;
   const FrictionSolve reference = solve_friction_case(exact_case);
   ASSERT_TRUE(reference.converged());
   const std::vector<double> d_t = {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
   std::vector<double> velocity_error, pressure_error;
   for (double value : d_t) {
-    io::Case case_ = benchmark(mu, radius, physics::FrictionRegularization::Regularized);
+    io::Case case_ = benchmark(mu, radius, physics::FrictionRegularization::Regularized, method);
     case_.friction.d_t = value * case_.process.speed;
     case_.solver.tolerance = 1e-9;
     const FrictionSolve solve = solve_friction_case(case_);
@@ -77,7 +83,16 @@ TEST_P(FrictionLadder, RegularisedApproachesExactAtLeastLikeSquareRootOfDT) {
 
 INSTANTIATE_TEST_SUITE_P(MeshTwo, FrictionLadder,
                          ::testing::Combine(::testing::Values(0.1, 0.2),
-                                            ::testing::Values(0.0, 1.0)));
+                                            ::testing::Values(0.0, 1.0),
+                                            ::testing::Values(solvers::NonlinearMethod::Secant,
+                                                              solvers::NonlinearMethod::Newton)),
+                         [](const ::testing::TestParamInfo<Variant>& info) {
+                           return std::string(std::get<0>(info.param) == 0.1 ? "Mu01" : "Mu02") +
+                                  (std::get<1>(info.param) == 0.0 ? "Local" : "Nonlocal") +
+                                  (std::get<2>(info.param) == solvers::NonlinearMethod::Newton
+                                       ? "Newton"
+                                       : "Secant");
+                         });
 
 } // namespace
 } // namespace formflow::testing

@@ -7,6 +7,7 @@
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
+#include "formflow/solvers/augmented_newton.hpp"
 
 #include <cmath>
 #include <memory>
@@ -33,8 +34,10 @@ struct FrictionSolve {
 };
 
 /// The paper's benchmark from a Case (SPEC §4 defaults plus the caller's edits),
-/// solved by the same path as `formflow run`: augmented Lagrangian around the
-/// secant iteration when friction.regularization = "none", plain secant otherwise.
+/// solved by the loop `formflow run` takes for solver.method, from the
+/// constant-viscosity start (no coarse levels): exact friction by the augmented
+/// Lagrangian around Newton (app::exact_friction_by_newton) or around the secant
+/// iteration; regularised friction by Newton or the secant iteration.
 inline FrictionSolve solve_friction_case(const io::Case& case_) {
   FrictionSolve solve;
   solve.mesh = std::make_unique<mesh::Mesh<2>>(
@@ -42,7 +45,16 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
   solve.problem = std::make_unique<assembly::FormingProblem<2>>(*solve.mesh, app::problem_settings(case_));
   auto solver = solvers::make_cholmod_solver();
   PhaseTimes times;
-  if (solve.problem->has_exact_friction()) {
+  const bool newton = case_.solver.method == solvers::NonlinearMethod::Newton;
+  if (solve.problem->has_exact_friction() && app::exact_friction_by_newton(case_)) {
+    auto outcome = solvers::augmented_newton<2>(*solve.problem, *solver, case_.solver, {}, times);
+    solve.velocity = outcome.solve.velocity;
+    solve.stop_reason = outcome.solve.stop_reason;
+    solve.iterations = static_cast<int>(outcome.solve.history.size());
+    solve.multipliers = outcome.multipliers;
+    solve.augmentations = outcome.augmentations;
+    solve.multiplier_change = outcome.multiplier_change;
+  } else if (solve.problem->has_exact_friction()) {
     auto outcome = solvers::augmented_lagrangian<2>(
         *solve.problem, solvers::secant_inner_solve<2>(*solve.problem, *solver, times),
         case_.solver, {});
@@ -52,6 +64,11 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
     solve.multipliers = outcome.multipliers;
     solve.augmentations = outcome.augmentations;
     solve.multiplier_change = outcome.multiplier_change;
+  } else if (newton) {
+    auto outcome = solvers::newton_iteration<2>(*solve.problem, *solver, case_.solver, {}, times);
+    solve.velocity = outcome.velocity;
+    solve.stop_reason = outcome.stop_reason;
+    solve.iterations = static_cast<int>(outcome.history.size());
   } else {
     auto outcome = solvers::secant_iteration<2>(*solve.problem, *solver, case_.solver, {}, times);
     solve.velocity = outcome.velocity;

@@ -3,6 +3,8 @@
 // μ = 0 is the frictionless solution, the Coulomb conditions hold pointwise at the
 // Γ3 quadrature points, the ram reaction equals the total discrete power, and the
 // regularised solutions approach it as d_T → 0 at least as fast as √d_T (Thm 3.3).
+// Each for both loops: the augmented Lagrangian around the secant iteration (the
+// paper's method) and around Newton (solvers/augmented_newton.hpp).
 #include "support/approx.hpp"
 #include "support/friction_study.hpp"
 
@@ -10,6 +12,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -18,8 +21,10 @@ namespace {
 
 constexpr double mesh_one = 10.0 / 6.0;
 
-io::Case benchmark(double mu, double radius, physics::FrictionRegularization regularization) {
+io::Case benchmark(double mu, double radius, physics::FrictionRegularization regularization,
+                   solvers::NonlinearMethod method) {
   io::Case case_;
+  case_.solver.method = method;
   case_.mesh_size = mesh_one;
   case_.friction.mu = mu;
   case_.friction.radius = radius;
@@ -30,10 +35,15 @@ io::Case benchmark(double mu, double radius, physics::FrictionRegularization reg
 
 constexpr auto exact = physics::FrictionRegularization::None;
 constexpr auto regularized = physics::FrictionRegularization::Regularized;
+constexpr auto secant = solvers::NonlinearMethod::Secant;
+constexpr auto newton = solvers::NonlinearMethod::Newton;
 
-TEST(ExactFriction, WithZeroCoefficientIsTheFrictionlessSolution) {
-  const FrictionSolve frictionless = solve_friction_case(benchmark(0.0, 0.0, regularized));
-  const FrictionSolve exact_zero = solve_friction_case(benchmark(0.0, 0.0, exact));
+class ExactFriction : public ::testing::TestWithParam<solvers::NonlinearMethod> {};
+
+TEST_P(ExactFriction, WithZeroCoefficientIsTheFrictionlessSolution) {
+  const auto method = GetParam();
+  const FrictionSolve frictionless = solve_friction_case(benchmark(0.0, 0.0, regularized, method));
+  const FrictionSolve exact_zero = solve_friction_case(benchmark(0.0, 0.0, exact, method));
   ASSERT_TRUE(frictionless.converged());
   ASSERT_TRUE(exact_zero.converged());
   // τ_f = 0 makes the projection 0: no load, no penalty, the same linear systems,
@@ -43,16 +53,19 @@ TEST(ExactFriction, WithZeroCoefficientIsTheFrictionlessSolution) {
   EXPECT_TRUE(approx(exact_zero.results.pressure.ram_reaction,
                      frictionless.results.pressure.ram_reaction, 1e-12));
   EXPECT_EQ(exact_zero.results.power.friction, 0.0);
-  EXPECT_EQ(exact_zero.augmentations, 1);
+  // Secant: one inner solve, then nothing to update. Newton: an update after
+  // every iteration, each finding nothing to change.
+  EXPECT_EQ(exact_zero.augmentations, method == secant ? 1 : exact_zero.iterations);
+  EXPECT_EQ(exact_zero.multiplier_change, 0.0);
 }
 
-/// μ, mollifier radius.
-using Variant = std::tuple<double, double>;
+/// μ, mollifier radius, nonlinear loop.
+using Variant = std::tuple<double, double, solvers::NonlinearMethod>;
 class ExactCoulomb : public ::testing::TestWithParam<Variant> {};
 
 TEST_P(ExactCoulomb, ConditionsHoldPointwiseAndReactionEqualsPower) {
-  const auto [mu, radius] = GetParam();
-  io::Case case_ = benchmark(mu, radius, exact);
+  const auto [mu, radius, method] = GetParam();
+  io::Case case_ = benchmark(mu, radius, exact, method);
   case_.solver.tolerance = 1e-7;
   const FrictionSolve solve = solve_friction_case(case_);
   ASSERT_TRUE(solve.converged());
@@ -94,23 +107,40 @@ TEST_P(ExactCoulomb, ConditionsHoldPointwiseAndReactionEqualsPower) {
             20 * case_.solver.tolerance);
 }
 
+std::string loop_name(solvers::NonlinearMethod method) {
+  return method == secant ? "Secant" : "Newton";
+}
+
+std::string variant_name(const ::testing::TestParamInfo<Variant>& info) {
+  const double mu = std::get<0>(info.param), radius = std::get<1>(info.param);
+  return std::string(mu == 0.1 ? "Mu01" : "Mu02") + (radius == 0.0 ? "Local" : "Nonlocal") +
+         loop_name(std::get<2>(info.param));
+}
+
+std::string method_name(const ::testing::TestParamInfo<solvers::NonlinearMethod>& info) {
+  return loop_name(info.param);
+}
+
 INSTANTIATE_TEST_SUITE_P(BenchmarkMeshOne, ExactCoulomb,
                          ::testing::Combine(::testing::Values(0.1, 0.2),
-                                            ::testing::Values(0.0, mesh_one)));
+                                            ::testing::Values(0.0, mesh_one),
+                                            ::testing::Values(secant, newton)),
+                         variant_name);
 
-TEST(ExactFriction, RegularisedSolutionsConvergeAtLeastLikeSquareRootOfDT) {
+TEST_P(ExactFriction, RegularisedSolutionsConvergeAtLeastLikeSquareRootOfDT) {
   // Theorem 3.3: ‖u − u_dT‖ ≤ C √d_T. The discrete error measure is the relative
   // l² norm of the nodal velocities; the pressure difference is checked alongside.
   // Both solves are iterated far below the smallest difference (δ = 1e-10).
+  const auto method = GetParam();
   const double mu = 0.2;
-  io::Case reference_case = benchmark(mu, 0.0, exact);
+  io::Case reference_case = benchmark(mu, 0.0, exact, method);
   reference_case.solver.tolerance = 1e-10;
   const FrictionSolve reference = solve_friction_case(reference_case);
   ASSERT_TRUE(reference.converged());
 
   std::vector<double> d_t = {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6}, velocity_error, pressure_error;
   for (double value : d_t) {
-    io::Case case_ = benchmark(mu, 0.0, regularized);
+    io::Case case_ = benchmark(mu, 0.0, regularized, method);
     case_.friction.d_t = value * case_.process.speed;
     case_.solver.tolerance = 1e-10;
     const FrictionSolve solve = solve_friction_case(case_);
@@ -136,6 +166,8 @@ TEST(ExactFriction, RegularisedSolutionsConvergeAtLeastLikeSquareRootOfDT) {
     EXPECT_LE(pressure_error[k], pressure_error[0] * std::sqrt(d_t[k] / d_t[0]))
         << "d_T = " << d_t[k];
 }
+
+INSTANTIATE_TEST_SUITE_P(BothLoops, ExactFriction, ::testing::Values(secant, newton), method_name);
 
 } // namespace
 } // namespace formflow::testing

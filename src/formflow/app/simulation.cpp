@@ -6,6 +6,7 @@
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
+#include "formflow/solvers/augmented_newton.hpp"
 #include "formflow/solvers/condition_estimate.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/saddle_point_iteration.hpp"
@@ -16,6 +17,16 @@
 
 namespace formflow::app {
 
+bool exact_friction_by_newton(const io::Case& case_) {
+  // Newton's system: the penalty problem, or the mixed one with its pressure
+  // condensed at d > 0 (ConstraintMultipliers::is_condensed_penalty).
+  const bool condensed = case_.formulation.type == assembly::FormulationType::Penalty ||
+                         (case_.penalty.d > 0 && fem::is_discontinuous(case_.formulation.pressure));
+  return case_.friction.regularization == physics::FrictionRegularization::None &&
+         case_.solver.method == solvers::NonlinearMethod::Newton && condensed &&
+         case_.penalty.d_n > 0;
+}
+
 assembly::ProblemSettings problem_settings(const io::Case& case_) {
   assembly::ProblemSettings settings;
   settings.process = case_.process;
@@ -23,6 +34,8 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   settings.viscous_strain = case_.viscous_strain;
   settings.penalty = case_.penalty;
   settings.friction = case_.friction;
+  // Newton's exact-friction loop has its own augmentation (friction.newton_augmentation).
+  if (exact_friction_by_newton(case_)) settings.friction.augmentation = case_.friction.newton_augmentation;
   settings.volumetric_points = case_.volumetric_points;
   settings.initial_rate = case_.solver.initial_rate;
   settings.symmetry = case_.symmetry;
@@ -66,9 +79,26 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   auto solver = solvers::make_cholmod_solver();
   solvers::SecantOutcome outcome;
   assembly::FrictionMultipliers<2> multipliers;
-  if (problem->has_exact_friction()) {
-    // Exact Coulomb friction: the augmented-Lagrangian loop with secant inner
-    // solves (Newton is not wired into it yet; solver.method is ignored here).
+  if (exact_friction_by_newton(case_)) {
+    // Exact Coulomb friction by Newton, multipliers updated between its steps
+    // (solvers/augmented_newton.hpp). The coarse levels solve the Coulomb law with
+    // λ̂ = 0, i.e. stick penalty r (multipliers live at the fine Γ3 points only).
+    const std::optional<CoarseStart> coarse = coarse_start(case_, simulation.mesh, results.timing);
+    if (coarse) {
+      results.coarse_iterations = coarse->iterations;
+      results.coarse_mesh_sizes = coarse->mesh_sizes;
+    }
+    auto augmented =
+        solvers::augmented_newton(*problem, *solver, case_.solver, on_iteration, results.timing,
+                                  coarse ? &coarse->velocity : nullptr);
+    outcome = std::move(augmented.solve);
+    multipliers = std::move(augmented.multipliers);
+    results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+    results.method = coarse ? "augmented-lagrangian friction around newton from coarse meshes"
+                            : "augmented-lagrangian friction around newton";
+  } else if (problem->has_exact_friction()) {
+    // Exact Coulomb friction, paper's method (or a mixed formulation): the
+    // augmented-Lagrangian loop with secant inner solves.
     auto augmented = solvers::augmented_lagrangian(
         *problem, solvers::secant_inner_solve(*problem, *solver, results.timing), case_.solver,
         on_iteration);

@@ -17,6 +17,8 @@ bool friction_acts_on(const physics::Friction& friction, mesh::BoundaryLabel lab
          (label == mesh::BoundaryLabel::Die && friction.on_die);
 }
 
+}  // namespace
+
 /// Alart–Curnier friction at one point, λ_new = proj(λ + r u_T) = s (λ + r u_T), written
 /// for the secant system as the penalty s·r on u_T and the load s·λ, both frozen at the
 /// current iterate. Only the tangential part of λ counts (the normal is fixed, but a
@@ -32,7 +34,8 @@ void exact_friction_point(const Point<dim>& multiplier, Real augmentation, Conta
   point.sticking = point.friction_threshold > 0 && trial.norm() <= point.friction_threshold;
 }
 
-}  // namespace
+template void exact_friction_point<2>(const Point<2>&, Real, ContactPoint<2>&);
+template void exact_friction_point<3>(const Point<3>&, Real, ContactPoint<3>&);
 
 template <int dim>
 FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings)

@@ -55,6 +55,12 @@ struct ContactPoint {
   bool sticking = false;
 };
 
+/// Exact friction at one point for the frozen multiplier λ̂ (its tangential part)
+/// and τ_f = point.friction_threshold: friction_traction = proj(λ̂_T + r u_T) = s t,
+/// friction_weight = s r, friction_load = s λ̂_T, sticking = |t| ≤ τ_f (τ_f > 0).
+template <int dim>
+void exact_friction_point(const Point<dim>& multiplier, Real augmentation, ContactPoint<dim>& point);
+
 /// Dual variables of the primal–dual Newton linearisation (assembly/newton_system.cpp):
 /// the viscous stress w ≈ ν ė per cell and full-rule point (cell-major) and the slip
 /// direction λ ≈ u_T/√(|u_T|² + d_T²) per Γ3 point (contact_state() order). Empty:
@@ -119,10 +125,14 @@ class FormingProblem {
   /// full-ε̇ term and dτ_f; empty for the deviatoric form without friction).
   /// Without `tangent` no matrix is built: a residual costs one pass over the
   /// quadrature points (the line search). The exact residual has thresholds = τ_f(u).
+  /// Exact friction: the traction proj(λ̂ + r u_T) with `friction_multipliers` λ̂
+  /// frozen (null: 0); its semismooth derivative at fixed τ_f goes into `tangent`
+  /// (r P at stick, s r (P − t̂ t̂ᵀ) at slip), its τ_f derivative t̂ dτ_f into `coupling`.
   void assemble_newton(const VectorX& u, std::span<const Real> thresholds,
                        const NewtonDuals<dim>& duals, VectorX& internal_force,
                        LinearSystem* tangent = nullptr,
-                       UnsymmetricTangent<dim>* coupling = nullptr) const;
+                       UnsymmetricTangent<dim>* coupling = nullptr,
+                       const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
 
   /// y_f += N x_f for the coupling N of assemble_newton (free dof vectors).
   void apply_coupling(const UnsymmetricTangent<dim>& coupling, const VectorX& x_free,
@@ -132,8 +142,11 @@ class FormingProblem {
   /// from `u`, the iterate being `next`: Newton's update of w = ν ė and of
   /// λ = u_T/s, then the caps √(⅔ w:w) ≤ σ_p(ε̄̇(next)) and |λ| ≤ 1 that keep the
   /// tangent positive semi-definite; w = ν ė where the law is linear.
+  /// Exact friction: the slip dual is the scaled traction λ ≈ proj(t)/τ_f, t = λ̂ + r u_T
+  /// for the frozen `friction_multipliers` λ̂ (null: 0), Newton-updated and capped the same way.
   void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
-                    NewtonDuals<dim>& duals) const;
+                    NewtonDuals<dim>& duals,
+                    const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
 
   /// Newton (assembly/newton_system.cpp): the duals after a secant step from
   /// `previous` to `next`: the stress that step balanced, w = ν(ε̄̇(previous)) ė(next),
@@ -141,7 +154,10 @@ class FormingProblem {
   /// (previous = nullptr: the constant-viscosity start, w = ν(initial_rate) ė, λ = 0).
   /// Where the rate has collapsed (near-rigid zones) w stays far below the yield
   /// stress and the tangent stays close to the secant matrix there.
-  void secant_duals(const VectorX* previous, const VectorX& next, NewtonDuals<dim>& duals) const;
+  /// Exact friction: λ = t(next)/max(τ_f, |t|)(previous), capped (the traction that
+  /// secant step used, over τ_f).
+  void secant_duals(const VectorX* previous, const VectorX& next, NewtonDuals<dim>& duals,
+                    const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
 
   /// Γ3 quadrature-point state for the velocity `u` (full dof vector); with exact
   /// friction the traction is proj(λ_T + r u_T) for the given (or zero) multipliers.
@@ -207,6 +223,12 @@ class FormingProblem {
  private:
   void update_slip_duals(const VectorX& u, const VectorX& step, bool primal,
                          std::vector<Point<dim>>& slip_duals) const;
+  /// Exact friction's trial tractions t = λ̂_T + r u_T at the Γ3 points of `state`.
+  std::vector<Point<dim>> trial_tractions(const std::vector<ContactPoint<dim>>& state,
+                                          const FrictionMultipliers<dim>* friction_multipliers) const;
+  void update_exact_slip_duals(const VectorX& u, const VectorX& step, bool primal,
+                               const FrictionMultipliers<dim>* friction_multipliers,
+                               std::vector<Point<dim>>& slip_duals) const;
   void assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
                         const typename fem::CellValues<dim>::Gradients& coordinates,
                         fem::FacetValues<dim>& facet_values, MatrixX& local_matrix,

@@ -14,7 +14,9 @@ namespace formflow::assembly {
 /// friction of `friction.regularization = "none"` the Alart–Curnier law
 /// λ = proj_{|λ| ≤ τ_f}(λ_T + r u_T), linearised as a load plus a penalty of at
 /// most r; the augmented-Lagrangian loop (solvers/augmented_lagrangian.hpp)
-/// updates them between inner solves. An empty `traction` means λ_T = 0.
+/// updates them between inner solves, solvers/augmented_newton.hpp between Newton
+/// iterations (FormingProblem::assemble_newton takes them too). An empty
+/// `traction` means λ_T = 0.
 template <int dim> struct FrictionMultipliers { std::vector<Point<dim>> traction; };
 
 } // namespace formflow::assembly

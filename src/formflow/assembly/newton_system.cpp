@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Residual and consistent tangent of the regularised penalty problem (eq. 3.19) for Newton.
+// Residual and consistent tangent of the penalty problem (eq. 3.19) for Newton, with
+// regularised friction or exact friction at frozen multipliers λ̂ (the traction
+// proj(λ̂ + r u_T); its semismooth derivative in T, its τ_f derivative in N).
 //
 // The exact Jacobian is split as J = T + N so that CHOLMOD LLᵀ (one symbolic
 // analysis, the pattern of the secant system) still applies to T:
@@ -27,6 +29,25 @@
 
 namespace formflow::assembly {
 
+namespace {
+
+/// Exact friction's lagged part of the traction on one Γ3 face: ∫ s λ̂_T·φ_a e_i dΓ
+/// (the rest, s r u_T, is the friction weight of the contact force/matrix).
+template <int dim>
+void add_friction_load_force(const fem::FacetValues<dim>& values,
+                             const std::vector<ContactPoint<dim>>& state, Index position,
+                             CellVector& local_force) {
+  const int n_q = values.n_points();
+  for (int q = 0; q < n_q; ++q) {
+    const Point<dim>& load = state[position * n_q + q].friction_load;
+    if (load.isZero(0.0)) continue;
+    for (int a = 0; a < static_cast<int>(values.shape(q).size()); ++a)
+      local_force.template segment<dim>(a * dim) += (values.shape(q)[a] * values.JxW(q)) * load;
+  }
+}
+
+}  // namespace
+
 template <int dim>
 std::vector<Real> FormingProblem<dim>::friction_thresholds(const VectorX& w) const {
   const std::vector<ContactPoint<dim>> state = contact_state(w);
@@ -38,11 +59,13 @@ std::vector<Real> FormingProblem<dim>::friction_thresholds(const VectorX& w) con
 template <int dim>
 void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real> thresholds,
                                           const NewtonDuals<dim>& duals, VectorX& internal_force,
-                                          LinearSystem* tangent, UnsymmetricTangent<dim>* coupling) const {
-  // Regularised friction, no loads; the mixed formulation only with its pressure
+                                          LinearSystem* tangent, UnsymmetricTangent<dim>* coupling,
+                                          const FrictionMultipliers<dim>* friction_multipliers) const {
+  // The penalty problem, friction regularised or exact with frozen multipliers
+  // (null: λ̂ = 0), no loads; the mixed formulation only with its pressure
   // condensed at d > 0 (a fixed matrix per cell: no multiplier loop).
-  FF_ASSERT(!has_exact_friction() && !body_force_ && (!multipliers_ || multipliers_->is_condensed_penalty()),
-            "Newton covers the regularised penalty problem and the condensed mixed one");
+  FF_ASSERT(!body_force_ && (!multipliers_ || multipliers_->is_condensed_penalty()),
+            "Newton covers the penalty problem and the condensed mixed one");
   const bool mixed = multipliers_ != nullptr;
   FF_ASSERT(!coupling || tangent, "the coupling is part of the tangent");
   internal_force.setZero(n_dofs());
@@ -52,9 +75,28 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
     coupling->clear();
     coupling->n_local = mesh_.nodes_per_cell() * dim;
   }
-  std::vector<ContactPoint<dim>> state = contact_state(u);
+  std::vector<ContactPoint<dim>> state = contact_state(u, friction_multipliers);
   const bool with_friction = settings_.friction.mu > 0;
-  if (coupling && with_friction) {
+  const bool exact_friction = with_friction && has_exact_friction();
+  if (exact_friction) {
+    // Exact friction: traction proj(λ̂ + r u_T) at the given τ_f; the coupling
+    // keeps dτ_f's direction t̂ = t/|t| at slip points (the projection's τ_f
+    // derivative), zero at stick points and where σ̄_N(u) ≤ 0.
+    if (coupling) coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
+    const bool given = friction_multipliers && !friction_multipliers->traction.empty();
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      if (state[k].friction_threshold <= 0 && thresholds[k] <= 0) continue;  // friction off here
+      const bool own_threshold_positive = state[k].friction_threshold > 0;
+      state[k].friction_threshold = thresholds[k];
+      exact_friction_point(given ? friction_multipliers->traction[k] : Point<dim>::Zero(),
+                           augmentation(), state[k]);
+      const bool slipping = thresholds[k] > 0 && !state[k].sticking;
+      if (!coupling || !slipping || !own_threshold_positive) continue;
+      coupling->threshold_slip[k] = settings_.friction.mu * state[k].friction_traction.normalized();
+      coupling->has_friction = true;
+    }
+  }
+  if (coupling && with_friction && !exact_friction) {
     // dτ_f = μ_f dσ̄_N where τ_f > 0 (its own σ̄_N at u, read before the given
     // thresholds replace it below).
     coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
@@ -66,7 +108,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       coupling->has_friction = true;
     }
   }
-  for (std::size_t k = 0; k < state.size(); ++k) {
+  for (std::size_t k = 0; k < state.size() && !exact_friction; ++k) {
     state[k].friction_threshold = thresholds[k];
     state[k].friction_weight = physics::friction_weight(
         thresholds[k], state[k].tangential_velocity.norm(), settings_.friction.d_t);
@@ -127,6 +169,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
         add_contact_force<dim>(facet_values, settings_.penalty.d_n, velocities,
                                with_friction ? std::span<const Real>(weight) : std::span<const Real>(),
                                local_force);
+        if (exact_friction) add_friction_load_force(facet_values, state, position, local_force);
       }
     } else {
       // The secant matrix K_e(u) gives the residual K_e u_e; the tangent adds to it.
@@ -146,6 +189,11 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
                        local_tangent, unused_load);
       local_force.noalias() = local_tangent * local_velocity;
+      for (Index k = cell_contact_offsets_[cell]; exact_friction && k < cell_contact_offsets_[cell + 1];
+           ++k) {
+        reinit_contact(facet_values, coordinates, cell_contact_[k]);
+        add_friction_load_force(facet_values, state, cell_contact_[k], local_force);
+      }
       if constexpr (dim == 2) {
         if (axisymmetric())
           add_viscous_tangent_axisymmetric(full_values, deviators, cell_duals, coefficient_a,
@@ -158,7 +206,22 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
            ++k) {
         const Index position = cell_contact_[k];
         reinit_contact(facet_values, coordinates, position);
-        for (int q = 0; q < n_face_q; ++q) {
+        for (int q = 0; q < n_face_q && exact_friction; ++q) {
+          // Semismooth derivative of proj(t), t = λ̂ + r u_T, at fixed τ_f: r P at
+          // stick (the secant term s r P already), s r (P − t̂ t̂ᵀ) at slip: add −s r t̂ t̂ᵀ.
+          // Primal–dual as for the regularised law: with the dual λ ≈ t/|t| (the
+          // traction over τ_f, |λ| ≤ 1) the slip part is −s r/|t| ½(λ t̂ᵀ + t̂ λᵀ):
+          // exact for λ = t̂, PSD with the secant term s r P for any capped λ.
+          const ContactPoint<dim>& point = state[position * n_face_q + q];
+          const Real trial_norm = point.friction_traction.norm();
+          const bool slipping = !point.sticking && point.friction_weight > 0 && trial_norm > 0;
+          slip[q] = slipping ? Point<dim>(point.friction_traction) : Point<dim>::Zero();
+          dual_slip[q] = duals.empty() || !slipping
+                             ? slip[q]
+                             : Point<dim>(trial_norm * duals.slip[position * n_face_q + q]);
+          friction_coefficient[q] = slipping ? point.friction_weight / (trial_norm * trial_norm) : 0.0;
+        }
+        for (int q = 0; q < n_face_q && !exact_friction; ++q) {
           const ContactPoint<dim>& point = state[position * n_face_q + q];
           const Real slip_speed = point.tangential_velocity.norm();
           const Real s2 = slip_speed * slip_speed + settings_.friction.d_t * settings_.friction.d_t;
@@ -278,11 +341,58 @@ void FormingProblem<dim>::update_slip_duals(const VectorX& u, const VectorX& ste
 }
 
 template <int dim>
+std::vector<Point<dim>> FormingProblem<dim>::trial_tractions(
+    const std::vector<ContactPoint<dim>>& state,
+    const FrictionMultipliers<dim>* friction_multipliers) const {
+  const bool given = friction_multipliers && !friction_multipliers->traction.empty();
+  std::vector<Point<dim>> trial(state.size());
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    const Point<dim>& n = state[k].normal;
+    const Point<dim> lambda =
+        given ? Point<dim>(friction_multipliers->traction[k] - friction_multipliers->traction[k].dot(n) * n)
+              : Point<dim>::Zero();
+    trial[k] = lambda + augmentation() * state[k].tangential_velocity;
+  }
+  return trial;
+}
+
+template <int dim>
+void FormingProblem<dim>::update_exact_slip_duals(const VectorX& u, const VectorX& step, bool primal,
+                                                  const FrictionMultipliers<dim>* friction_multipliers,
+                                                  std::vector<Point<dim>>& slip_duals) const {
+  const std::vector<ContactPoint<dim>> state = contact_state(u), change = contact_state(step);
+  const std::vector<Point<dim>> trial = trial_tractions(state, friction_multipliers);
+  slip_duals.resize(state.size());
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    Point<dim>& lambda = slip_duals[k];
+    const Real threshold = state[k].friction_threshold;
+    if (threshold <= 0) {
+      lambda.setZero();
+      continue;
+    }
+    const Point<dim> trial_change = augmentation() * change[k].tangential_velocity;  // δt
+    const Real size = trial[k].norm();
+    if (size <= threshold) {
+      lambda = (trial[k] + trial_change) / threshold;  // stick: λ = t/τ_f is linear in t
+    } else {
+      if (primal) lambda = trial[k] / size;
+      // Newton on |t| λ − t = 0: λ + δλ = (t + δt)/|t| − λ (t·δt)/|t|².
+      lambda = (trial[k] + trial_change) / size - lambda * (trial[k].dot(trial_change) / (size * size));
+    }
+    if (lambda.norm() > 1.0) lambda.normalize();
+  }
+}
+
+template <int dim>
 void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
-                                       NewtonDuals<dim>& all_duals) const {
+                                       NewtonDuals<dim>& all_duals,
+                                       const FrictionMultipliers<dim>* friction_multipliers) const {
   const int n_q = full_rule_.size();
   const bool primal = all_duals.empty();
-  update_slip_duals(u, step, primal, all_duals.slip);
+  if (has_exact_friction())
+    update_exact_slip_duals(u, step, primal, friction_multipliers, all_duals.slip);
+  else
+    update_slip_duals(u, step, primal, all_duals.slip);
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(mesh_.n_cells()) * n_q);
   fem::CellValues<dim> values(mesh_.order, full_rule_);
@@ -324,7 +434,8 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
 
 template <int dim>
 void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& next,
-                                       NewtonDuals<dim>& all_duals) const {
+                                       NewtonDuals<dim>& all_duals,
+                                       const FrictionMultipliers<dim>* friction_multipliers) const {
   const int n_q = full_rule_.size();
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(mesh_.n_cells()) * n_q);
@@ -359,6 +470,20 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
   const std::vector<ContactPoint<dim>> before = previous ? contact_state(*previous) : after;
   const Real d_t = settings_.friction.d_t;
   all_duals.slip.assign(after.size(), Point<dim>::Zero());
+  if (has_exact_friction()) {
+    // The traction that secant step used over τ_f: s(previous) t(next)/τ_f = t(next)/max(τ_f, |t|)(previous).
+    if (!previous) return;
+    const std::vector<Point<dim>> trial_after = trial_tractions(after, friction_multipliers);
+    const std::vector<Point<dim>> trial_before = trial_tractions(before, friction_multipliers);
+    for (std::size_t k = 0; k < after.size(); ++k) {
+      const Real threshold = before[k].friction_threshold;
+      if (threshold <= 0) continue;
+      Point<dim>& lambda = all_duals.slip[k];
+      lambda = trial_after[k] / std::max(threshold, trial_before[k].norm());
+      if (lambda.norm() > 1.0) lambda.normalize();
+    }
+    return;
+  }
   for (std::size_t k = 0; k < after.size() && previous; ++k) {
     const Real s = std::sqrt(before[k].tangential_velocity.squaredNorm() + d_t * d_t);
     Point<dim>& lambda = all_duals.slip[k];
@@ -367,20 +492,22 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
   }
 }
 
-template void FormingProblem<2>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<2>&) const;
-template void FormingProblem<3>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<3>&) const;
+template void FormingProblem<2>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<2>&,
+                                              const FrictionMultipliers<2>*) const;
+template void FormingProblem<3>::secant_duals(const VectorX*, const VectorX&, NewtonDuals<3>&,
+                                              const FrictionMultipliers<3>*) const;
 template void FormingProblem<2>::update_duals(const VectorX&, const VectorX&, const VectorX&,
-                                              NewtonDuals<2>&) const;
+                                              NewtonDuals<2>&, const FrictionMultipliers<2>*) const;
 template void FormingProblem<3>::update_duals(const VectorX&, const VectorX&, const VectorX&,
-                                              NewtonDuals<3>&) const;
+                                              NewtonDuals<3>&, const FrictionMultipliers<3>*) const;
 template std::vector<Real> FormingProblem<2>::friction_thresholds(const VectorX&) const;
 template std::vector<Real> FormingProblem<3>::friction_thresholds(const VectorX&) const;
 template void FormingProblem<2>::assemble_newton(const VectorX&, std::span<const Real>,
                                                  const NewtonDuals<2>&, VectorX&, LinearSystem*,
-                                                 UnsymmetricTangent<2>*) const;
+                                                 UnsymmetricTangent<2>*, const FrictionMultipliers<2>*) const;
 template void FormingProblem<3>::assemble_newton(const VectorX&, std::span<const Real>,
                                                  const NewtonDuals<3>&, VectorX&, LinearSystem*,
-                                                 UnsymmetricTangent<3>*) const;
+                                                 UnsymmetricTangent<3>*, const FrictionMultipliers<3>*) const;
 template void FormingProblem<2>::apply_coupling(const UnsymmetricTangent<2>&, const VectorX&,
                                                 VectorX&) const;
 template void FormingProblem<3>::apply_coupling(const UnsymmetricTangent<3>&, const VectorX&,

@@ -409,8 +409,17 @@ std::vector<CaseKey> contact_keys() {
           .above(0)
           .at_most(1e6)
           .unit("1/penalty.dN")
-          .doc("exact friction only: augmentation r = value/d_N of λ_T = proj(λ_T + r u_T); "
+          .doc("exact friction with solver.method = \"secant\" (or a mixed formulation): "
+               "augmentation r = value/d_N of λ_T = proj(λ_T + r u_T); "
                "any value converges, larger takes fewer multiplier updates"),
+      real_key("friction.newton_augmentation", 100.0,
+               [](auto& c) -> auto& { return c.friction.newton_augmentation; })
+          .above(0)
+          .at_most(1e6)
+          .unit("1/penalty.dN")
+          .doc("exact friction solved by Newton (solver.method = \"newton\", penalty formulation): "
+               "r = value/d_N; Newton's tangent carries the stick penalty, and a stiffer one "
+               "settles the multipliers in fewer updates (docs/friction.md)"),
       real_key("penalty.d", 1e-3, [](auto& c) -> auto& { return c.penalty.d; })
           .at_least(0)
           .constraint("0 (exact incompressibility) only with formulation.type = \"mixed\"")

@@ -43,6 +43,9 @@ struct Friction {
   /// Exact friction only: augmentation r of λ_T = proj(λ_T + r u_T), in units of
   /// 1/d_N (r = augmentation / d_N), so the stick penalty is as stiff as the normal one.
   Real augmentation = 1.0;
+  /// The same when exact friction is solved by Newton (solvers/augmented_newton.hpp):
+  /// its tangent has the stick penalty r in it, so r can be stiffer at no cost.
+  Real newton_augmentation = 100.0;
 };
 
 }  // namespace formflow::physics

@@ -38,6 +38,19 @@ std::pair<Real, Real> multiplier_norms(const std::vector<assembly::ContactPoint<
 } // namespace
 
 template <int dim>
+Real update_friction_multipliers(const assembly::FormingProblem<dim>& problem, const VectorX& velocity,
+                                 assembly::FrictionMultipliers<dim>& multipliers) {
+  // λᵏ⁺¹ = proj(λᵏ + r uᵏ_T): the traction contact_state evaluates for λᵏ at uᵏ.
+  const auto state = problem.contact_state(velocity, &multipliers);
+  const auto [difference, norm] = multiplier_norms(state, multipliers.traction);
+  multipliers.traction.resize(state.size());
+  for (std::size_t k = 0; k < state.size(); ++k)
+    multipliers.traction[k] = state[k].friction_traction;
+  // No friction anywhere (μ = 0, or Γ3 entirely in tension): nothing left to update.
+  return norm > 0 ? difference / norm : 0.0;
+}
+
+template <int dim>
 AugmentedOutcome<dim>
 augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSolve<dim>& inner,
                      const IterationControl& control, const IterationObserver& on_iteration) {
@@ -74,14 +87,8 @@ augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSo
     if (step.stop_reason != StopReason::Converged)
       return outcome;
 
-    // λᵏ⁺¹ = proj(λᵏ + r uᵏ_T): the traction contact_state evaluates for λᵏ at uᵏ.
-    const auto state = problem.contact_state(solve.velocity, &outcome.multipliers);
-    const auto [difference, norm] = multiplier_norms(state, outcome.multipliers.traction);
-    outcome.multipliers.traction.resize(state.size());
-    for (std::size_t k = 0; k < state.size(); ++k)
-      outcome.multipliers.traction[k] = state[k].friction_traction;
-    // No friction anywhere (μ = 0, or Γ3 entirely in tension): nothing left to update.
-    outcome.multiplier_change = norm > 0 ? difference / norm : 0.0;
+    outcome.multiplier_change =
+        update_friction_multipliers(problem, solve.velocity, outcome.multipliers);
     if (!std::isfinite(outcome.multiplier_change)) {
       solve.stop_reason = StopReason::NonFinite;
       return outcome;
@@ -109,6 +116,10 @@ template AugmentedOutcome<2> augmented_lagrangian<2>(const assembly::FormingProb
 template AugmentedOutcome<3> augmented_lagrangian<3>(const assembly::FormingProblem<3>&,
                                                      const InnerSolve<3>&, const IterationControl&,
                                                      const IterationObserver&);
+template Real update_friction_multipliers<2>(const assembly::FormingProblem<2>&, const VectorX&,
+                                             assembly::FrictionMultipliers<2>&);
+template Real update_friction_multipliers<3>(const assembly::FormingProblem<3>&, const VectorX&,
+                                             assembly::FrictionMultipliers<3>&);
 template InnerSolve<2> secant_inner_solve<2>(const assembly::FormingProblem<2>&, LinearSolver&,
                                              PhaseTimes&);
 template InnerSolve<3> secant_inner_solve<3>(const assembly::FormingProblem<3>&, LinearSolver&,

@@ -54,6 +54,10 @@ struct NewtonWork {
   /// tangent, coupling and force were assembled at the current iterate with the
   /// current duals (by the previous step's line search): no assembly needed.
   bool tangent_ready = false;
+  const FrictionMultiplierHook<dim>* friction = nullptr;  ///< exact friction's λ̂ (may be null)
+  const assembly::FrictionMultipliers<dim>* multipliers() const {
+    return friction ? friction->multipliers : nullptr;
+  }
 };
 
 /// K(w) u = F (w = nullptr: constant viscosity): returns the full velocity, or a stop reason.
@@ -61,7 +65,7 @@ template <int dim>
 std::optional<StopReason> secant_step(NewtonWork<dim>& work, const VectorX* w, VectorX& velocity) {
   {
     ScopedTimer timer(work.times, "assembly");
-    work.problem.assemble(w, work.secant);
+    work.problem.assemble(w, work.secant, work.multipliers());
   }
   {
     ScopedTimer timer(work.times, "factorization");
@@ -83,7 +87,8 @@ template <int dim>
 Real slope_at(NewtonWork<dim>& work, const VectorX& velocity, const VectorX& step, Real t,
               const VectorX& free_step) {
   const VectorX trial = velocity + t * step;
-  work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), work.duals, work.force);
+  work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), work.duals, work.force,
+                               nullptr, nullptr, work.multipliers());
   return free_step.dot(free_part(work.problem.plan(), work.force));
 }
 
@@ -97,7 +102,7 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   if (!work.tangent_ready) {
     ScopedTimer timer(work.times, "assembly");
     work.problem.assemble_newton(velocity, work.problem.friction_thresholds(velocity), work.duals,
-                                 work.force, &work.tangent, &work.coupling);
+                                 work.force, &work.tangent, &work.coupling, work.multipliers());
   }
   work.tangent_ready = false;
   const VectorX gradient = free_part(plan, work.force);
@@ -145,11 +150,11 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
     assembly::NewtonDuals<dim> trial_duals = work.duals;
     {
       ScopedTimer dual_timer(work.times, "dual update");
-      work.problem.update_duals(velocity, step, trial, trial_duals);
+      work.problem.update_duals(velocity, step, trial, trial_duals, work.multipliers());
     }
     ScopedTimer timer(work.times, "assembly");
     work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), trial_duals,
-                                 work.force, &work.tangent, &work.coupling);
+                                 work.force, &work.tangent, &work.coupling, work.multipliers());
     slope = free_step.dot(free_part(plan, work.force));
     if (acceptable(slope, 0)) {
       work.duals = std::move(trial_duals);
@@ -174,7 +179,7 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   VectorX next = velocity + t * step;
   {
     ScopedTimer dual_timer(work.times, "dual update");
-    work.problem.update_duals(velocity, step, next, work.duals);
+    work.problem.update_duals(velocity, step, next, work.duals, work.multipliers());
   }
   full_change = step.norm() / next.norm();
   return next;
@@ -186,11 +191,13 @@ template <int dim>
 SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times, const VectorX* initial) {
+                               PhaseTimes& times, const VectorX* initial,
+                               const FrictionMultiplierHook<dim>* friction) {
   SecantOutcome outcome;
   NewtonWork<dim> work{problem, solver, times, problem.plan().make_system(),
                        problem.plan().make_system(), {}, {}, {}};
   work.tolerance = control.tolerance;
+  work.friction = friction;
   outcome.velocity = problem.constraints().values;
   {
     // The pattern alone (work.secant is still the zeroed system): no assembly here.
@@ -216,7 +223,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
   // tangent is stiff where that stress is below yield, so the step cannot blow
   // the near-rigid zones apart as the primal tangent (α-soft along ė) does.
   // From a given first iterate (a coarse solution) the same dual: ν(initial_rate) ė.
-  problem.secant_duals(nullptr, outcome.velocity, work.duals);
+  problem.secant_duals(nullptr, outcome.velocity, work.duals, work.multipliers());
   Real step_change = 0.0;
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start = std::chrono::steady_clock::now();
@@ -232,7 +239,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
       }
       // After a secant step the duals restart from the stress it balanced (not
       // the primal w = ν ė, whose tangent is α-soft along ė in near-rigid zones).
-      problem.secant_duals(&outcome.velocity, *next, work.duals);
+      problem.secant_duals(&outcome.velocity, *next, work.duals, work.multipliers());
       work.tangent_ready = false;
     }
     step_change = (*next - outcome.velocity).norm() / next->norm();
@@ -247,8 +254,12 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     outcome.velocity = std::move(*next);
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
+    const bool settled =
+        !friction || !friction->after_iteration || friction->after_iteration(outcome.velocity);
+    // New multipliers: the tangent the line search assembled at this iterate is stale.
+    if (friction && friction->after_iteration) work.tangent_ready = false;
     if (const auto stop = stop_after_iteration(change, step_change, record.pressure,
-                                             control.tolerance)) {
+                                             control.tolerance, settled)) {
       outcome.stop_reason = *stop;
       return outcome;
     }
@@ -260,10 +271,12 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
 template SecantOutcome newton_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&, const VectorX*);
+                                           PhaseTimes&, const VectorX*,
+                                           const FrictionMultiplierHook<2>*);
 template SecantOutcome newton_iteration<3>(const assembly::FormingProblem<3>&, LinearSolver&,
                                            const IterationControl&,
                                            const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&, const VectorX*);
+                                           PhaseTimes&, const VectorX*,
+                                           const FrictionMultiplierHook<3>*);
 
 }  // namespace formflow::solvers

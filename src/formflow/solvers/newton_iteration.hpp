@@ -4,6 +4,7 @@
 
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/core/timer.hpp"
+#include "formflow/solvers/friction_multiplier_hook.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 #include "formflow/solvers/stop_reason.hpp"
@@ -48,10 +49,16 @@ namespace formflow::solvers {
 /// to yield: stiff in the near-rigid zones. (The primal stress there, at yield in
 /// the plastic zones, made the tangent α-soft along ė and the tail linear: measured
 /// at 77 762 dofs 10, 10, 11 iterations for μ = 0, 0.1, 0.2 against 6, 6, 6.)
+///
+/// `friction` (exact friction only, solvers/augmented_newton.hpp): the frozen
+/// multipliers of every assembly, updated by its hook after each iteration; the
+/// loop converges only once the hook reports them settled. Null with exact
+/// friction: λ̂ = 0, the Coulomb law with stick penalty r (the coarse start).
 template <int dim>
 SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
                                const IterationControl& control,
                                const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times, const VectorX* initial = nullptr);
+                               PhaseTimes& times, const VectorX* initial = nullptr,
+                               const FrictionMultiplierHook<dim>* friction = nullptr);
 
 }  // namespace formflow::solvers

@@ -352,6 +352,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
                                         {"friction.on", "[\"die\"]"},
                                         {"friction.regularization", "\"none\""},
                                         {"friction.augmentation", "10.0"},
+                                        {"friction.newton_augmentation", "1000.0"},
                                         {"penalty.d", "0.01"},
                                         {"penalty.dN", "1e-05"},
                                         {"penalty.dT", "1e-07"},
