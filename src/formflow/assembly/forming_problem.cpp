@@ -2,6 +2,7 @@
 // Cell and contact-face loops of the secant system K(w) u = F.
 #include "formflow/assembly/forming_problem.hpp"
 
+#include "formflow/assembly/kernels/fixed_size.hpp"
 #include "formflow/assembly/kernels/kernels.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/fem/dof_map.hpp"
@@ -322,7 +323,12 @@ template <int dim>
 Tensor3 FormingProblem<dim>::strain_rate_at(const fem::CellValues<dim>& values,
                                             const typename fem::CellValues<dim>::Gradients& velocities,
                                             int q) const {
-  const Tensor2<dim> gradient = physics::velocity_gradient<dim>(velocities, values.gradients(q));
+  Tensor2<dim> gradient;
+  with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) {  // fixed sizes: this runs at every point
+    using NodeValues = Eigen::Matrix<Real, dim, decltype(n_nodes)::value>;
+    gradient = physics::velocity_gradient<dim>(Eigen::Map<const NodeValues>(velocities.data(), dim, values.n_nodes()),
+                                               Eigen::Map<const NodeValues>(values.gradients(q).data(), dim, values.n_nodes()));
+  });
   Tensor3 rate = physics::strain_rate<dim>(gradient);
   if constexpr (dim == 2)
     if (axisymmetric())
