@@ -105,7 +105,7 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
                            const std::function<void(const post::StudyRung&)>& on_rung) {
   const io::CaseKey* key = io::find_case_key(plan.key);
   FF_ASSERT(key, "plan_study checked the key");
-  post::StudyTable table{plan.key, plan.description, {}};
+  post::StudyTable table{plan.key, plan.description, {}, std::nullopt, std::nullopt};
   std::vector<Simulation> simulations;
   for (std::size_t k = 0; k < plan.cases.size(); ++k) {
     const auto start = std::chrono::steady_clock::now();

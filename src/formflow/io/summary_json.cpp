@@ -136,6 +136,14 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["contact"] = contact_json(case_, results);
   out["mesh"] = mesh_json(case_, results);
   out["timing_s"] = timing_json(results.timing);
+  // What the time bought: every factorisation (coarse levels and secant steps
+  // included) and the GMRES iterations of Newton's unsymmetric steps.
+  out["linear_algebra"] = {{"factorizations", results.timing.counted("factorization")},
+                           {"krylov_iterations", results.timing.counted("krylov iterations")}};
+  // How often each timed phase ran (timing_s / timing_calls = cost per call).
+  json calls = json::object();
+  for (const auto& [phase, seconds] : results.timing.all()) calls[phase] = results.timing.counted(phase);
+  out["timing_calls"] = std::move(calls);
   out["history"] = std::move(history);
   out["history_pressure"] = std::move(history_pressure);
   out["case"] = case_json(case_);

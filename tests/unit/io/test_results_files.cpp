@@ -131,6 +131,8 @@ void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& 
   results.timing.add("total", 1.5);
   results.timing.add("assembly", 0.7);
   results.timing.add("mesh", 0.01);
+  results.timing.count("factorization", 9);
+  results.timing.count("krylov iterations", 12);
 }
 
 namespace {
@@ -252,6 +254,12 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   EXPECT_EQ(timing.at("mesh"), 0.01);
   EXPECT_EQ(timing.at("factorization"), 0.0); // absent phases are present as 0
   EXPECT_EQ(timing.at("solve"), 0.0);
+  const auto& linear_algebra = summary.at("linear_algebra");
+  EXPECT_EQ(linear_algebra.at("factorizations"), 9);
+  EXPECT_EQ(linear_algebra.at("krylov_iterations"), 12);
+  // Phases added as seconds only (no timer) ran 0 counted times; every timed phase is listed.
+  EXPECT_EQ(summary.at("timing_calls").at("assembly"), 0);
+  EXPECT_EQ(summary.at("timing_calls").size(), 3u);  // total, assembly, mesh
   EXPECT_EQ(summary.at("case"), nlohmann::json(io::case_to_json(case_)));
   // Read in file order, the case block keeps the key table's order.
   const auto ordered = nlohmann::ordered_json::parse(io::summary_json(case_, results_));
