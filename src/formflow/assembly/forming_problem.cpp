@@ -2,6 +2,7 @@
 // Cell and contact-face loops of the secant system K(w) u = F.
 #include "formflow/assembly/forming_problem.hpp"
 
+#include "formflow/assembly/kernels/fixed_size.hpp"
 #include "formflow/assembly/kernels/kernels.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/fem/dof_map.hpp"
@@ -75,6 +76,26 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
   if (contact_points_at_nodes())
     contact_normals_ = nodal_contact_normals<dim>(mesh, contact_facets_, settings.contact.corner_angle);
 
+  // The mesh never moves: map every cell and Γ3 face once (fem/values_cache.hpp);
+  // the loops below run every iteration on this geometry.
+  {
+    typename fem::CellValues<dim>::Gradients nodes, no_velocity;
+    const auto map_cell = [&](Index cell, fem::CellValues<dim>& values) {
+      gather(cell, nullptr, nodes, no_velocity);
+      reinit(values, nodes);
+    };
+    full_cache_ = std::make_unique<fem::CellValuesCache<dim>>(
+        mesh.n_cells(), fem::CellValues<dim>(mesh.order, full_rule_), map_cell);
+    volumetric_cache_ = std::make_unique<fem::CellValuesCache<dim>>(
+        mesh.n_cells(), fem::CellValues<dim>(mesh.order, volumetric_rule_), map_cell);
+    contact_cache_ = std::make_unique<fem::FacetValuesCache<dim>>(
+        static_cast<Index>(contact_facets_.size()), fem::FacetValues<dim>(mesh.order, facet_rule_),
+        [&](Index position, fem::FacetValues<dim>& values) {
+          gather(mesh.facets[contact_facets_[position]].cell, nullptr, nodes, no_velocity);
+          reinit_contact(values, nodes, position);
+        });
+  }
+
   // The mollifier works on the fixed geometry of Γ3: build it once.
   const std::vector<ContactPoint<dim>> geometry = contact_state(VectorX::Zero(n_dofs()));
   MatrixX points(dim, static_cast<Index>(geometry.size()));
@@ -113,6 +134,7 @@ template <int dim>
 void FormingProblem<dim>::reinit_contact(fem::FacetValues<dim>& values,
                                          const typename fem::CellValues<dim>::Gradients& coordinates,
                                          Index position) const {
+  if (contact_cache_) return contact_cache_->load(position, values);
   reinit(values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
   if (contact_normals_.empty()) return;
   // Penalty, σ_N, u_T and the friction projector all read these normals: the
@@ -193,8 +215,7 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
 
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
     gather(cell, w, coordinates, velocities);
-    reinit(full_values, coordinates);
-    reinit(volumetric_values, coordinates);
+    load_cell(cell, full_values, &volumetric_values);
     for (int q = 0; q < full_values.n_points(); ++q) {
       if (!w) {
         viscosity[q] = initial_viscosity;
@@ -305,7 +326,12 @@ template <int dim>
 Tensor3 FormingProblem<dim>::strain_rate_at(const fem::CellValues<dim>& values,
                                             const typename fem::CellValues<dim>::Gradients& velocities,
                                             int q) const {
-  const Tensor2<dim> gradient = physics::velocity_gradient<dim>(velocities, values.gradients(q));
+  Tensor2<dim> gradient;
+  with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) {  // fixed sizes: this runs at every point
+    using NodeValues = Eigen::Matrix<Real, dim, decltype(n_nodes)::value>;
+    gradient = physics::velocity_gradient<dim>(Eigen::Map<const NodeValues>(velocities.data(), dim, values.n_nodes()),
+                                               Eigen::Map<const NodeValues>(values.gradients(q).data(), dim, values.n_nodes()));
+  });
   Tensor3 rate = physics::strain_rate<dim>(gradient);
   if constexpr (dim == 2)
     if (axisymmetric())

@@ -9,6 +9,7 @@
 #include "formflow/assembly/friction_multipliers.hpp"
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/fem/cell_values.hpp"
+#include "formflow/fem/values_cache.hpp"
 #include "formflow/physics/flow_law.hpp"
 #include "formflow/physics/friction.hpp"
 
@@ -216,6 +217,16 @@ class FormingProblem {
   /// ε̇_V = tr ε̇ beyond the in-plane divergence.
   Real hoop_rate_at(const fem::CellValues<dim>& values,
                     const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
+  /// Puts cell `cell`'s mapped values at the full and the volumetric rule into
+  /// the given values (from the geometry cache: the mesh never moves).
+  void load_cell(Index cell, fem::CellValues<dim>& full_values, fem::CellValues<dim>* volumetric_values) const {
+    full_cache_->load(cell, full_values);
+    if (volumetric_values) volumetric_cache_->load(cell, *volumetric_values);
+  }
+  /// Memory held by the geometry cache (cells at both rules, contact faces).
+  std::size_t geometry_cache_bytes() const {
+    return full_cache_->bytes() + volumetric_cache_->bytes() + (contact_cache_ ? contact_cache_->bytes() : 0);
+  }
   /// Node coordinates (dim × n) and nodal velocities (dim × n) of one cell.
   void gather(Index cell, const VectorX* u, typename fem::CellValues<dim>::Gradients& coordinates,
               typename fem::CellValues<dim>::Gradients& velocities) const;
@@ -258,6 +269,9 @@ class FormingProblem {
   std::vector<Index> cell_contact_;         ///< positions in contact_facets_
   std::vector<Point<dim>> contact_normals_; ///< nodal normals per Γ3 point; empty: face normals
   std::unique_ptr<physics::NonlocalAverage> average_;
+  /// Mapped values of every cell (full and volumetric rule) and Γ3 face, built once.
+  std::unique_ptr<fem::CellValuesCache<dim>> full_cache_, volumetric_cache_;
+  std::unique_ptr<fem::FacetValuesCache<dim>> contact_cache_;
   Real driven_height_ = 0.0;
   ConstraintMultipliers<dim>* multipliers_ = nullptr;
 };

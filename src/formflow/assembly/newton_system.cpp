@@ -130,19 +130,22 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
 
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
     gather(cell, &u, coordinates, velocities);
-    reinit(full_values, coordinates);
-    reinit(volumetric_values, coordinates);
+    load_cell(cell, full_values, &volumetric_values);
     for (int q = 0; q < n_q; ++q) {
       rates[q] = strain_rate_at(full_values, velocities, q);
       const Real eps_bar_dot = physics::equivalent_strain_rate(rates[q]);
-      viscosity[q] = settings_.law.secant_viscosity(eps_bar_dot);
-      if (!tangent) continue;
+      if (!tangent) {
+        viscosity[q] = settings_.law.secant_viscosity(eps_bar_dot);
+        continue;
+      }
+      const auto [secant, derivative] = settings_.law.secant_viscosity_and_derivative(eps_bar_dot);
+      viscosity[q] = secant;
       deviators[q] = physics::deviator(rates[q]);
       cell_duals[q] = duals.empty() ? Tensor3(viscosity[q] * deviators[q]) : duals.stress[cell * n_q + q];
       // a = (4/9) σ_p′/ε̄̇², b = −(4/9)/ε̄̇² (kernels/tangent_kernels.hpp); at ε̄̇ = 0 the
       // law is on its linear branch and the secant matrix is already the tangent.
       const Real scale = eps_bar_dot > 0 ? 4.0 / 9.0 / (eps_bar_dot * eps_bar_dot) : 0.0;
-      coefficient_a[q] = scale * settings_.law.yield_stress_derivative(eps_bar_dot);
+      coefficient_a[q] = scale * derivative;
       coefficient_b[q] = -scale;
     }
     local_force.setZero(n_local);
@@ -402,7 +405,7 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
     gather(cell, &u, coordinates, velocities);
     gather(cell, &step, coordinates, step_velocities);
     gather(cell, &next, coordinates, next_velocities);
-    values.reinit(coordinates);
+    load_cell(cell, values, nullptr);
     for (int q = 0; q < n_q; ++q) {
       const Tensor3 next_dev = physics::deviator(strain_rate_at(values, next_velocities, q));
       const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
@@ -414,14 +417,14 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
       }
       const Tensor3 dev = physics::deviator(strain_rate_at(values, velocities, q));
       const Real eps = std::sqrt(2.0 / 3.0 * dev.squaredNorm());
-      const Real nu = law.secant_viscosity(eps);
+      const auto [nu, nu_derivative] = law.secant_viscosity_and_derivative(eps);
       if (primal) w = nu * dev;
       if (eps > 0) {
         // Newton on ε̄̇ w − σ_p(ε̄̇) ė = 0 at (u, w) along the step:
         // w + δw = ν ė + ν ė(δu) + (σ_p′ ė − w) dε̄̇/ε̄̇.
         const Tensor3 step_dev = physics::deviator(strain_rate_at(values, step_velocities, q));
         const Real rate_change = 2.0 / 3.0 * dev.cwiseProduct(step_dev).sum() / eps;  // dε̄̇
-        w = nu * (dev + step_dev) + (law.yield_stress_derivative(eps) * dev - w) * (rate_change / eps);
+        w = nu * (dev + step_dev) + (nu_derivative * dev - w) * (rate_change / eps);
       } else {
         w = law.secant_viscosity(next_eps) * next_dev;
       }
@@ -445,7 +448,7 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
     if (previous) gather(cell, previous, coordinates, previous_velocities);
     gather(cell, &next, coordinates, next_velocities);
-    values.reinit(coordinates);
+    load_cell(cell, values, nullptr);
     for (int q = 0; q < n_q; ++q) {
       const Tensor3 next_dev = physics::deviator(strain_rate_at(values, next_velocities, q));
       const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());

@@ -52,9 +52,13 @@ ScatterPlan::ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, cons
 
   slot_offsets_.push_back(0);
   reaction_offsets_.push_back(0);
+  prescribed_local_offsets_.push_back(0);
   for (Index block = 0; block < blocks.n_blocks(); ++block) {
     const Index* dofs = blocks.dofs.data() + blocks.offsets[block];
     const int n = blocks.block_size(block);
+    for (int b = 0; b < n; ++b)
+      if (free_index_[dofs[b]] < 0) prescribed_local_.push_back(b);
+    prescribed_local_offsets_.push_back(static_cast<Index>(prescribed_local_.size()));
     for (int a = 0; a < n; ++a) {
       for (int b = a; b < n; ++b) {
         const Index i = free_index_[dofs[a]], j = free_index_[dofs[b]];
@@ -95,9 +99,12 @@ void ScatterPlan::scatter(Index block, const MatrixX& local_matrix, const Vector
     for (int b = a; b < n; ++b, ++slot)
       if (*slot >= 0) values[*slot] += local_matrix(a, b);
     if (row < 0) continue;
-    // Move the prescribed columns to the right-hand side: F_f −= K_fc u_c.
-    for (int b = 0; b < n; ++b)
-      if (free_index_[dofs[b]] < 0) system.rhs[row] -= local_matrix(a, b) * prescribed_values[dofs[b]];
+    // Move the prescribed columns to the right-hand side: F_f −= K_fc u_c (most
+    // blocks have none: the list is precomputed, not searched per row).
+    for (Index k = prescribed_local_offsets_[block]; k < prescribed_local_offsets_[block + 1]; ++k) {
+      const int b = prescribed_local_[k];
+      system.rhs[row] -= local_matrix(a, b) * prescribed_values[dofs[b]];
+    }
   }
   Real* reaction_values = system.reaction_rows.valuePtr();
   for (Index k = reaction_offsets_[block]; k < reaction_offsets_[block + 1]; ++k) {

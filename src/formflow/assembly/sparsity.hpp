@@ -76,6 +76,8 @@ class ScatterPlan {
   SparseMatrix matrix_pattern_, reaction_pattern_;
   std::vector<Index> slot_offsets_;  ///< per block, into slots_
   std::vector<Index> slots_;  ///< per block: local pairs a ≤ b, slot in K_ff or −1
+  std::vector<Index> prescribed_local_offsets_;  ///< per block, into prescribed_local_
+  std::vector<int> prescribed_local_;  ///< per block: local positions of its prescribed dofs
   std::vector<Index> reaction_offsets_;
   std::vector<ReactionSlot> reaction_slots_;
 };

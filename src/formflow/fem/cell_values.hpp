@@ -8,6 +8,11 @@
 
 namespace formflow::fem {
 
+template <int dim>
+class CellValuesCache;
+template <int dim>
+class FacetValuesCache;
+
 /// Tabulates the reference shape functions once per rule; `reinit` maps them
 /// to one physical cell (isoparametric map x(ξ) = Σ_a X_a N_a(ξ)).
 template <int dim>
@@ -37,6 +42,7 @@ class CellValues {
   }
 
  private:
+  friend class CellValuesCache<dim>;  // stores and restores the mapped values (fem/values_cache.hpp)
   int n_nodes_ = 0;
   std::vector<Real> weights_;
   std::vector<VectorX> shape_;
@@ -74,6 +80,7 @@ class FacetValues {
   void set_normal(int q, const Point<dim>& normal) { normals_[q] = normal; }
 
  private:
+  friend class FacetValuesCache<dim>;  // stores and restores the mapped values (fem/values_cache.hpp)
   int order_;
   QuadratureRule<dim - 1> face_rule_;
   std::vector<VectorX> shape_;

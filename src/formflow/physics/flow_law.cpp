@@ -44,6 +44,13 @@ Real FlowLaw::yield_stress_derivative(Real rate) const {
   return exponent() * coefficient() * std::pow(rate, exponent() - 1.0);
 }
 
+FlowLaw::SecantAndDerivative FlowLaw::secant_viscosity_and_derivative(Real rate) const {
+  const Real viscosity = secant_viscosity(rate);
+  // Inside [rate1, rate2] σ_p′ = m C ε̄̇^(m−1) = m ν; outside, the linear branch: σ_p′ = ν.
+  if (rate < rate1 || rate > rate2) return {viscosity, viscosity};
+  return {viscosity, exponent() * viscosity};
+}
+
 std::optional<std::string> check_flow_law(const FlowLaw& law) {
   const Real c = law.coefficient(), m = law.exponent();
   if (!(std::isfinite(c) && c > 0))

@@ -48,6 +48,12 @@ struct FlowLaw {
   Real secant_viscosity(Real rate) const;
   /// dσ_p/dε̄̇ (one-sided at the break points: the linear branch's value there).
   Real yield_stress_derivative(Real rate) const;
+  /// secant_viscosity(rate) and yield_stress_derivative(rate) from one power
+  /// (equal to round-off): the Newton loops need both at every point.
+  struct SecantAndDerivative {
+    Real viscosity, derivative;
+  };
+  SecantAndDerivative secant_viscosity_and_derivative(Real rate) const;
   /// Plastic dissipation density σ_p(ε̄̇)·ε̄̇.
   Real dissipation(Real rate) const { return yield_stress(rate) * rate; }
 };

@@ -2,6 +2,8 @@
 // The residual K(u) u assembled from stresses, without a local matrix (Newton line search).
 #include "formflow/assembly/kernels/residual_kernels.hpp"
 
+#include "formflow/assembly/kernels/fixed_size.hpp"
+
 namespace formflow::assembly {
 
 namespace {
@@ -16,29 +18,64 @@ Eigen::Map<Eigen::Matrix<Real, dim, Eigen::Dynamic>> by_node(CellVector& local_f
 
 // Σ_b K_ab u_b of add_viscous_term is ⅔ ν (Σ_j ε̇_ij ∂_j φ_a − share ε̇_V ∂_i φ_a):
 // with share = ⅓ for the deviatoric form this is ė ∇φ_a (ė_zz meets ε̇_zz(φ) = 0).
+namespace {
+
+template <int dim, int n_nodes>
+void add_viscous_force_sized(const fem::CellValues<dim>& values, std::span<const Real> viscosity,
+                             std::span<const Tensor3> rates, Real volumetric_share,
+                             CellVector& local_force) {
+  using NodeValues = Eigen::Matrix<Real, dim, n_nodes>;
+  const int n = values.n_nodes();
+  NodeValues force = NodeValues::Zero(dim, n);
+  for (int q = 0; q < values.n_points(); ++q) {
+    Tensor2<dim> stress = rates[q].template topLeftCorner<dim, dim>();
+    stress.diagonal().array() -= volumetric_share * rates[q].trace();
+    force.noalias() += (2.0 / 3.0 * viscosity[q] * values.JxW(q)) * stress *
+                       Eigen::Map<const NodeValues>(values.gradients(q).data(), dim, n);
+  }
+  by_node<dim>(local_force) += force;
+}
+
+}  // namespace
+
 template <int dim>
 void add_viscous_force(const fem::CellValues<dim>& values, std::span<const Real> viscosity,
                        std::span<const Tensor3> rates, physics::ViscousStrain strain,
                        CellVector& local_force) {
   const Real volumetric_share = strain == physics::ViscousStrain::Deviatoric ? 1.0 / 3.0 : 0.0;
-  auto force = by_node<dim>(local_force);
-  for (int q = 0; q < values.n_points(); ++q) {
-    Tensor2<dim> stress = rates[q].template topLeftCorner<dim, dim>();
-    stress.diagonal().array() -= volumetric_share * rates[q].trace();
-    force.noalias() += (2.0 / 3.0 * viscosity[q] * values.JxW(q)) * stress * values.gradients(q);
-  }
+  with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) {
+    add_viscous_force_sized<dim, decltype(n_nodes)::value>(values, viscosity, rates, volumetric_share,
+                                                           local_force);
+  });
 }
+
+namespace {
+
+template <int dim, int n_nodes>
+void add_volumetric_force_sized(const fem::CellValues<dim>& values, Real d,
+                                const typename fem::CellValues<dim>::Gradients& velocities,
+                                CellVector& local_force) {
+  using NodeValues = Eigen::Matrix<Real, dim, n_nodes>;
+  const int n = values.n_nodes();
+  const Eigen::Map<const NodeValues> u(velocities.data(), dim, n);
+  NodeValues force = NodeValues::Zero(dim, n);
+  for (int q = 0; q < values.n_points(); ++q) {
+    const Eigen::Map<const NodeValues> grad(values.gradients(q).data(), dim, n);
+    const Real divergence = u.cwiseProduct(grad).sum();  // Σ_a u_a·∇φ_a
+    force.noalias() += (values.JxW(q) / d * divergence) * grad;
+  }
+  by_node<dim>(local_force) += force;
+}
+
+}  // namespace
 
 template <int dim>
 void add_volumetric_force(const fem::CellValues<dim>& values, Real d,
                           const typename fem::CellValues<dim>::Gradients& velocities,
                           CellVector& local_force) {
-  auto force = by_node<dim>(local_force);
-  for (int q = 0; q < values.n_points(); ++q) {
-    const auto& grad = values.gradients(q);
-    const Real divergence = velocities.cwiseProduct(grad).sum();  // Σ_a u_a·∇φ_a
-    force.noalias() += (values.JxW(q) / d * divergence) * grad;
-  }
+  with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) {
+    add_volumetric_force_sized<dim, decltype(n_nodes)::value>(values, d, velocities, local_force);
+  });
 }
 
 template <int dim>
