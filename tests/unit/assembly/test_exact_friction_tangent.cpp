@@ -3,88 +3,45 @@
 // residual with frozen multipliers λ̂, proj_{|λ| ≤ τ_f}(λ̂ + r u_T), against the
 // secant system, and its semismooth Jacobian (stick r P, slip s r (P − t̂ t̂ᵀ) in T,
 // t̂ dτ_f in the coupling N) against central finite differences.
-#include "formflow/assembly/forming_problem.hpp"
-#include "formflow/mesh/channel_mesh.hpp"
+#include "support/newton_fixture.hpp"
 
 #include <gtest/gtest.h>
 
-#include <functional>
-#include <memory>
-#include <random>
+#include <utility>
 
 namespace formflow::testing {
 namespace {
 
-VectorX uniform_vector(Index n, unsigned seed, Real scale) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> uniform(-scale, scale);
-  VectorX v(n);
-  for (Index k = 0; k < n; ++k) v[k] = uniform(generator);
-  return v;
+/// A small extrusion with exact friction (r = augmentation/d_N = 1), penalties
+/// raised so the residual is smooth on the finite-difference scale.
+assembly::ProblemSettings exact_friction_settings(physics::ViscousStrain strain,
+                                                  physics::Symmetry symmetry) {
+  assembly::ProblemSettings settings;
+  settings.law = sensitive_law();
+  settings.viscous_strain = strain;
+  settings.symmetry = symmetry;
+  settings.friction.mu = 0.2;
+  settings.friction.regularization = physics::FrictionRegularization::None;
+  settings.friction.augmentation = 0.1;  // r = 1
+  settings.penalty.d = 0.1;
+  settings.penalty.d_n = 0.1;
+  return settings;
 }
 
-/// A small extrusion with exact friction, penalties raised so the residual is
-/// smooth on the finite-difference scale, a velocity far from the solution and
-/// multipliers chosen so that some Γ3 points stick and some slip.
-struct ExactFrictionExtrusion {
-  mesh::Mesh<2> mesh = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
-  assembly::ProblemSettings settings;
-  std::unique_ptr<assembly::FormingProblem<2>> problem;
-  VectorX u;
+/// The extrusion with multipliers λ̂ of the size of τ_f, chosen so that some Γ3
+/// trial tractions λ̂ + r u_T lie inside the Coulomb disc and some outside.
+struct ExactFrictionExtrusion : SmallExtrusion {
   assembly::FrictionMultipliers<2> multipliers;
 
   explicit ExactFrictionExtrusion(physics::ViscousStrain strain,
-                                  physics::Symmetry symmetry = physics::Symmetry::Plane) {
-    settings.law.A = 2.0;  // strongly rate sensitive, no break points in range
-    settings.law.alpha = 0.25;
-    settings.law.rate1 = 1e-8;
-    settings.law.rate2 = 1e8;
-    settings.viscous_strain = strain;
-    settings.symmetry = symmetry;
-    settings.friction.mu = 0.2;
-    settings.friction.regularization = physics::FrictionRegularization::None;
-    settings.friction.augmentation = 0.1;  // r = 1
-    settings.penalty.d = 0.1;
-    settings.penalty.d_n = 0.1;
-    problem = std::make_unique<assembly::FormingProblem<2>>(mesh, settings);
-    const assembly::ScatterPlan& plan = problem->plan();
-    u = problem->constraints().values + uniform_vector(problem->n_dofs(), 5, 0.3);
-    for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-      if (plan.free_index(dof) < 0) u[dof] = problem->constraints().values[dof];
-    // λ̂ of the size of τ_f: some trial tractions inside the disc, some outside.
+                                  physics::Symmetry symmetry = physics::Symmetry::Plane)
+      : SmallExtrusion(exact_friction_settings(strain, symmetry)) {
     const auto state = problem->contact_state(u);
-    const VectorX noise = uniform_vector(2 * static_cast<Index>(state.size()), 9, 1.0);
+    const VectorX noise = random_vector(2 * static_cast<Index>(state.size()), 9);
     for (std::size_t k = 0; k < state.size(); ++k)
       multipliers.traction.push_back(state[k].friction_threshold *
                                      Point<2>(noise[2 * k], noise[2 * k + 1]));
-  }
-  VectorX free_part(const VectorX& full) const {
-    VectorX free_values(problem->plan().n_free());
-    for (Index dof = 0; dof < problem->plan().n_dofs(); ++dof)
-      if (problem->plan().free_index(dof) >= 0) free_values[problem->plan().free_index(dof)] = full[dof];
-    return free_values;
-  }
-  VectorX free_residual(const VectorX& free_u, const std::vector<Real>* thresholds) const {
-    const VectorX full = problem->plan().expand(free_u, problem->constraints().values);
-    VectorX force;
-    problem->assemble_newton(full, thresholds ? *thresholds : problem->friction_thresholds(full), {},
-                             force, nullptr, nullptr, &multipliers);
-    return free_part(force);
-  }
-  MatrixX jacobian(const std::vector<Real>& thresholds, MatrixX* symmetric_part = nullptr) const {
-    assembly::LinearSystem tangent = problem->plan().make_system();
-    assembly::UnsymmetricTangent<2> coupling;
-    VectorX force;
-    problem->assemble_newton(u, thresholds, {}, force, &tangent, &coupling, &multipliers);
-    const MatrixX t = MatrixX(assembly::SparseMatrix(tangent.matrix.selfadjointView<Eigen::Lower>()));
-    if (symmetric_part) *symmetric_part = t;
-    MatrixX j = t;
-    for (Index k = 0; k < j.cols(); ++k) {
-      VectorX column = j.col(k);
-      problem->apply_coupling(coupling, VectorX::Unit(j.cols(), k), column);
-      j.col(k) = column;
-    }
-    return j;
+    friction_multipliers = &multipliers;
   }
   /// Γ3 points with friction that stick / slip for the trial traction λ̂ + r u_T.
   std::pair<int, int> stick_and_slip() const {
@@ -95,22 +52,9 @@ struct ExactFrictionExtrusion {
   }
 };
 
-MatrixX finite_difference_jacobian(const std::function<VectorX(const VectorX&)>& residual,
-                                   const VectorX& u, double h) {
-  MatrixX jacobian(u.size(), u.size());
-  for (Index k = 0; k < u.size(); ++k) {
-    VectorX plus = u, minus = u;
-    plus[k] += h;
-    minus[k] -= h;
-    jacobian.col(k) = (residual(plus) - residual(minus)) / (2 * h);
-  }
-  return jacobian;
-}
-
-// As in test_newton_tangent.cpp: central differences with h = 1e-6 are accurate
-// to ~1e-10 of ‖J‖ where the residual is smooth; no point here lies within h of
-// the stick/slip switch |t| = τ_f (checked by the both-sides test below).
-constexpr double fd_tolerance = 1e-7;
+// As in test_newton_tangent.cpp (fd_tolerance, support/newton_fixture.hpp): no
+// point here lies within the finite-difference step of the stick/slip switch
+// |t| = τ_f (both kinds are present, checked below).
 
 TEST(ExactFrictionJacobian, TheSampleHasStickingAndSlippingPoints) {
   const ExactFrictionExtrusion extrusion(physics::ViscousStrain::Deviatoric);

@@ -9,6 +9,7 @@
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/physics/kinematics.hpp"
 #include "support/approx.hpp"
+#include "support/newton_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -39,17 +40,6 @@ Nodes2 distorted_q2() {
   }
   nodes.col(4) += Point<2>(0.12, -0.07);
   return nodes;
-}
-
-/// A strongly rate-sensitive law whose power range covers every rate below, so
-/// that ν′ is large and smooth (the break points would make FD one-sided).
-physics::FlowLaw sensitive_law() {
-  physics::FlowLaw law;
-  law.A = 2.0;
-  law.alpha = 0.25;
-  law.rate1 = 1e-8;
-  law.rate2 = 1e8;
-  return law;
 }
 
 /// r(u) = K_s(u) u of the a-form alone: the local viscous residual.
@@ -88,32 +78,6 @@ MatrixX viscous_tangent(const fem::CellValues<2>& values, const physics::FlowLaw
 }
 
 /// Central differences of `residual` column by column, step h·(1 + ‖u‖∞).
-MatrixX finite_difference_jacobian(const std::function<VectorX(const VectorX&)>& residual,
-                                   const VectorX& u, double h) {
-  MatrixX jacobian(u.size(), u.size());
-  const double step = h * (1.0 + u.cwiseAbs().maxCoeff());
-  for (Index k = 0; k < u.size(); ++k) {
-    VectorX plus = u, minus = u;
-    plus[k] += step;
-    minus[k] -= step;
-    jacobian.col(k) = (residual(plus) - residual(minus)) / (2 * step);
-  }
-  return jacobian;
-}
-
-VectorX random_vector(Index n, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  VectorX v(n);
-  for (Index k = 0; k < n; ++k) v[k] = uniform(generator);
-  return v;
-}
-
-// Central differences with h = 1e-6 on O(1) smooth functions carry truncation
-// error ~h² and cancellation ~1e-16/h ≈ 1e-10 relative to ‖J‖: 1e-7 separates
-// an exact tangent from one missing any term (the ν′ term is O(α) = 25 % here).
-constexpr double fd_tolerance = 1e-7;
-
 TEST(ViscousTangent, MatchesFiniteDifferencesForTheDeviatoricForm) {
   fem::CellValues<2> values(2, fem::gauss_rule<2>(3));
   ASSERT_TRUE(values.reinit(distorted_q2()));
@@ -248,79 +212,27 @@ TEST(FrictionTangent, MatchesFiniteDifferencesAtFixedThreshold) {
   EXPECT_LE((exact - exact.transpose()).norm(), 1e-14 * exact.norm());
 }
 
-/// A small extrusion with friction on Γ3 and a velocity that is far from the
-/// solution but keeps the prescribed values; d_T and the penalties are raised so
-/// that the residual is smooth on the scale of the finite-difference step.
-struct SmallExtrusion {
-  mesh::Mesh<2> mesh = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
+/// The regularised-friction extrusion: friction on Γ3 (μ = 0.2) with d_T and the
+/// penalties raised so that the residual is smooth on the finite-difference scale.
+assembly::ProblemSettings regularised_extrusion(
+    physics::ViscousStrain strain, physics::Symmetry symmetry = physics::Symmetry::Plane,
+    assembly::ContactNormals normals = assembly::ContactNormals::Faces) {
   assembly::ProblemSettings settings;
-  std::unique_ptr<assembly::FormingProblem<2>> problem;
-  VectorX u;
-
-  explicit SmallExtrusion(physics::ViscousStrain strain,
-                          physics::Symmetry symmetry = physics::Symmetry::Plane,
-                          assembly::ContactNormals normals = assembly::ContactNormals::Faces) {
-    settings.law = sensitive_law();
-    settings.viscous_strain = strain;
-    settings.symmetry = symmetry;
-    settings.contact.normals = normals;
-    settings.friction.mu = 0.2;
-    settings.friction.d_t = 0.05;
-    settings.penalty.d = 0.1;
-    settings.penalty.d_n = 0.1;
-    problem = std::make_unique<assembly::FormingProblem<2>>(mesh, settings);
-    const assembly::ScatterPlan& plan = problem->plan();
-    u = problem->constraints().values + 0.3 * random_vector(problem->n_dofs(), 5);
-    for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-      if (plan.free_index(dof) < 0) u[dof] = problem->constraints().values[dof];
-  }
-  /// The mixed formulation (3.7) with its pressure condensed at d = settings.penalty.d.
-  void attach_mixed_pressure(fem::PressureSpace space) {
-    assembly::Formulation formulation;
-    formulation.type = assembly::FormulationType::Mixed;
-    formulation.pressure = space;
-    mixed_pressure = std::make_unique<assembly::ConstraintMultipliers<2>>(
-        mesh, settings.penalty, formulation, problem->full_rule(), problem->n_contact_points());
-    problem->attach_multipliers(mixed_pressure.get());
-  }
-  std::unique_ptr<assembly::ConstraintMultipliers<2>> mixed_pressure;
-  VectorX free_part(const VectorX& full) const {
-    VectorX free_values(problem->plan().n_free());
-    for (Index dof = 0; dof < problem->plan().n_dofs(); ++dof)
-      if (problem->plan().free_index(dof) >= 0) free_values[problem->plan().free_index(dof)] = full[dof];
-    return free_values;
-  }
-  /// R(u_f) on the free dofs (the residual-only path), with τ_f frozen at
-  /// `thresholds`, or with τ_f(u) when they are null (the exact residual).
-  VectorX free_residual(const VectorX& free_u, const std::vector<Real>* thresholds) const {
-    const VectorX full = problem->plan().expand(free_u, problem->constraints().values);
-    VectorX force;
-    problem->assemble_newton(full, thresholds ? *thresholds : problem->friction_thresholds(full), {},
-                             force);
-    return free_part(force);
-  }
-  /// T + N as a dense matrix over the free dofs.
-  MatrixX jacobian(const std::vector<Real>& thresholds, MatrixX* symmetric_part = nullptr) const {
-    assembly::LinearSystem tangent = problem->plan().make_system();
-    assembly::UnsymmetricTangent<2> coupling;
-    VectorX force;
-    problem->assemble_newton(u, thresholds, {}, force, &tangent, &coupling);
-    const MatrixX t = MatrixX(assembly::SparseMatrix(tangent.matrix.selfadjointView<Eigen::Lower>()));
-    if (symmetric_part) *symmetric_part = t;
-    MatrixX j = t;
-    for (Index k = 0; k < j.cols(); ++k) {
-      VectorX column = j.col(k);
-      problem->apply_coupling(coupling, VectorX::Unit(j.cols(), k), column);
-      j.col(k) = column;
-    }
-    return j;
-  }
-};
+  settings.law = sensitive_law();
+  settings.viscous_strain = strain;
+  settings.symmetry = symmetry;
+  settings.contact.normals = normals;
+  settings.friction.mu = 0.2;
+  settings.friction.d_t = 0.05;
+  settings.penalty.d = 0.1;
+  settings.penalty.d_n = 0.1;
+  return settings;
+}
 
 TEST(NewtonSystem, GlobalTangentMatchesFiniteDifferencesOfTheResidual) {
   // With τ_f frozen and the deviatoric form the symmetric tangent T is the whole
   // Jacobian; the coupling then holds only dτ_f, which the frozen residual lacks.
-  const SmallExtrusion extrusion(physics::ViscousStrain::Deviatoric);
+  const SmallExtrusion extrusion(regularised_extrusion(physics::ViscousStrain::Deviatoric));
   const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
   ASSERT_GT(*std::max_element(thresholds.begin(), thresholds.end()), 0.0);
   MatrixX symmetric;
@@ -335,7 +247,7 @@ TEST(NewtonSystem, GlobalTangentMatchesFiniteDifferencesOfTheResidual) {
 TEST(NewtonSystem, FullFormJacobianWithItsUnsymmetricCouplingMatchesFiniteDifferences) {
   // The paper's full-ε̇ a-form and τ_f(u) not frozen: the symmetric tangent alone
   // misses ⅔ ν′ dε̄̇ ⅓ ε̇_V ε̇_V and dτ_f; with the coupling the Jacobian is exact.
-  const SmallExtrusion extrusion(physics::ViscousStrain::Full);
+  const SmallExtrusion extrusion(regularised_extrusion(physics::ViscousStrain::Full));
   const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
   MatrixX symmetric;
   const MatrixX exact = extrusion.jacobian(thresholds, &symmetric);
@@ -351,7 +263,7 @@ TEST(NewtonSystem, AxisymmetricJacobianMatchesFiniteDifferences) {
   // Axisymmetry (y = r): hoop rate u_r/r in ε̇, ε̇_V and the duals, r-weighted
   // integrals; both a-forms, τ_f(u) not frozen.
   for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
-    const SmallExtrusion extrusion(strain, physics::Symmetry::Axisymmetric);
+    const SmallExtrusion extrusion(regularised_extrusion(strain, physics::Symmetry::Axisymmetric));
     const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
     ASSERT_GT(*std::max_element(thresholds.begin(), thresholds.end()), 0.0);
     MatrixX symmetric;
@@ -367,8 +279,8 @@ TEST(NewtonSystem, AxisymmetricJacobianMatchesFiniteDifferences) {
 TEST(NewtonSystem, JacobianWithNodalContactNormalsMatchesFiniteDifferences) {
   // contact.normals = "nodes": Γ3 evaluated at the face nodes with averaged normals,
   // in the residual, the friction tangent and dτ_f alike.
-  const SmallExtrusion extrusion(physics::ViscousStrain::Full, physics::Symmetry::Plane,
-                                 assembly::ContactNormals::Nodes);
+  const SmallExtrusion extrusion(regularised_extrusion(physics::ViscousStrain::Full, physics::Symmetry::Plane,
+                                 assembly::ContactNormals::Nodes));
   const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
   ASSERT_GT(*std::max_element(thresholds.begin(), thresholds.end()), 0.0);
   const MatrixX exact = extrusion.jacobian(thresholds);
@@ -389,7 +301,7 @@ TEST(NewtonSystem, MixedCondensedPressureJacobianAndResidualMatchTheSecantSystem
   // cell term (1/d) Bᵀ M⁻¹ B replaces the volumetric penalty in the residual (both
   // paths) and, being linear in u, enters the tangent unchanged.
   for (const auto space : {fem::PressureSpace::P1disc, fem::PressureSpace::P0}) {
-    SmallExtrusion extrusion(physics::ViscousStrain::Full);
+    SmallExtrusion extrusion(regularised_extrusion(physics::ViscousStrain::Full));
     extrusion.attach_mixed_pressure(space);
     const assembly::FormingProblem<2>& problem = *extrusion.problem;
     const std::vector<Real> thresholds = problem.friction_thresholds(extrusion.u);
@@ -409,7 +321,7 @@ TEST(NewtonSystem, MixedCondensedPressureJacobianAndResidualMatchTheSecantSystem
     EXPECT_LE((extrusion.free_residual(free_u, &thresholds) - expected).norm(), 1e-12 * expected.norm());
     EXPECT_LE((extrusion.free_part(with_tangent) - expected).norm(), 1e-12 * expected.norm());
     // Against the penalty problem's residual: the pressure term really changed.
-    const SmallExtrusion penalty(physics::ViscousStrain::Full);
+    const SmallExtrusion penalty(regularised_extrusion(physics::ViscousStrain::Full));
     EXPECT_GT((penalty.free_residual(free_u, &thresholds) - expected).norm(), 1e-3 * expected.norm());
   }
 }
@@ -420,7 +332,7 @@ TEST(NewtonSystem, ResidualOnlyAssemblyEqualsTheSecantSystemAppliedToTheVelocity
   // prescribed rows give the reaction, so the driven force must agree too.
   for (const auto symmetry : {physics::Symmetry::Plane, physics::Symmetry::Axisymmetric})
   for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
-    const SmallExtrusion extrusion(strain, symmetry);
+    const SmallExtrusion extrusion(regularised_extrusion(strain, symmetry));
     const assembly::FormingProblem<2>& problem = *extrusion.problem;
     const std::vector<Real> thresholds = problem.friction_thresholds(extrusion.u);
     assembly::LinearSystem secant = problem.plan().make_system();
