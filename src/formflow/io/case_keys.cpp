@@ -417,9 +417,10 @@ std::vector<CaseKey> contact_keys() {
           .above(0)
           .at_most(1e6)
           .unit("1/penalty.dN")
-          .doc("exact friction solved by Newton (solver.method = \"newton\", penalty formulation): "
-               "r = value/d_N; Newton's tangent carries the stick penalty, and a stiffer one "
-               "settles the multipliers in fewer updates (docs/friction.md)"),
+          .doc("exact friction solved by Newton (solver.method = \"newton\"; penalty, or mixed "
+               "with a condensed pressure): r = value/d_N; Newton's tangent carries the stick "
+               "penalty, and a stiffer one settles the multipliers in fewer updates "
+               "(docs/friction.md)"),
       real_key("penalty.d", 1e-3, [](auto& c) -> auto& { return c.penalty.d; })
           .at_least(0)
           .constraint("0 (exact incompressibility) only with formulation.type = \"mixed\"")
