@@ -136,16 +136,18 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   // falsi (Illinois variant) on the bracket [0, 1] where the slope changes sign.
   // The slope at t = 1 comes with the next step's tangent (duals updated for t = 1)
   // in one cell loop, so an accepted full step costs no separate residual pass
-  // (measured: t = 1 is taken in every step of the paper's cases). Only a step
-  // small enough to end the iteration evaluates the residual alone.
+  // (measured: t = 1 is taken in every step of the paper's cases). The residual
+  // is evaluated alone for a step small enough to end the iteration, and when an
+  // outer loop updates exact friction's multipliers after every iteration (the
+  // tangent would be assembled with the old ones and thrown away).
   const auto acceptable = [&](Real slope, int k) {
     return (slope <= 0 && k == 0) || std::abs(slope) <= line_search_slope_ratio * std::abs(slope0);
   };
-  Real t = 1.0, slope;
-  if (step.norm() / (velocity + step).norm() < work.tolerance) {
-    ScopedTimer timer(work.times, "line search");
-    slope = slope_at(work, velocity, step, t, free_step);
-  } else {
+  const bool multipliers_move = work.friction && work.friction->after_iteration;
+  const bool look_ahead =
+      !multipliers_move && step.norm() / (velocity + step).norm() >= work.tolerance;
+  Real t = 1.0, slope = 0.0;
+  if (look_ahead) {
     const VectorX trial = velocity + step;
     assembly::NewtonDuals<dim> trial_duals = work.duals;
     {
@@ -164,6 +166,7 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
     }
   }
   ScopedTimer timer(work.times, "line search");
+  if (!look_ahead) slope = slope_at(work, velocity, step, t, free_step);
   Real low = 0.0, slope_low = slope0, high = 1.0, slope_high = slope;
   for (int k = 0; k < max_line_search_steps && !acceptable(slope, k); ++k) {
     t = low - slope_low * (high - low) / (slope_high - slope_low);
@@ -256,8 +259,6 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     if (on_iteration) on_iteration(record);
     const bool settled =
         !friction || !friction->after_iteration || friction->after_iteration(outcome.velocity);
-    // New multipliers: the tangent the line search assembled at this iterate is stale.
-    if (friction && friction->after_iteration) work.tangent_ready = false;
     if (const auto stop = stop_after_iteration(change, step_change, record.pressure,
                                              control.tolerance, settled)) {
       outcome.stop_reason = *stop;

@@ -13,7 +13,6 @@ TEST(PhaseTimes, ScopedTimerAddsTimeAndCountsEachEntry) {
   { ScopedTimer timer(times, "assembly"); }
   EXPECT_EQ(times.counted("factorization"), 3);
   EXPECT_EQ(times.counted("assembly"), 1);
-  EXPECT_GE(times.get("factorization"), 0.0);
   EXPECT_EQ(times.all().count("factorization"), 1u);
 }
 
@@ -27,6 +26,7 @@ TEST(PhaseTimes, EventsCountWithoutTimeAndAbsentOnesAreZero) {
   EXPECT_EQ(times.counted("never"), 0);
   EXPECT_EQ(times.all().count("krylov iterations"), 0u);  // a count is no phase
   EXPECT_DOUBLE_EQ(times.get("mesh"), 0.5);
+  EXPECT_EQ(times.get("never"), 0.0);
 }
 
 }  // namespace
