@@ -65,7 +65,8 @@ AssemblyFixture& fixture(int refinement) {
 void count_dofs(benchmark::State& state, const AssemblyFixture& f) {
   state.counters["dofs"] = f.problem->n_dofs();
   state.counters["cells"] = f.mesh.n_cells();
-  state.counters["geometry_cache_mib"] = static_cast<double>(f.problem->geometry_cache_bytes()) / (1 << 20);
+  state.counters["geometry_cache_mib"] =
+      static_cast<double>(f.problem->geometry_cache_bytes()) / (1 << 20);
 }
 
 void secant_assembly(benchmark::State& state) {
@@ -85,7 +86,8 @@ void newton_tangent_assembly(benchmark::State& state) {
 
 void newton_residual(benchmark::State& state) {
   AssemblyFixture& f = fixture(static_cast<int>(state.range(0)));
-  for (auto _ : state) f.problem->assemble_newton(f.velocity, f.thresholds, f.duals, f.internal_force);
+  for (auto _ : state)
+    f.problem->assemble_newton(f.velocity, f.thresholds, f.duals, f.internal_force);
   count_dofs(state, f);
 }
 
@@ -112,10 +114,35 @@ void coupling_product(benchmark::State& state) {
   count_dofs(state, f);
 }
 
-}  // namespace
+} // namespace
 
-BENCHMARK(secant_assembly)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(newton_tangent_assembly)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(newton_residual)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(dual_update)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
-BENCHMARK(coupling_product)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly();
+BENCHMARK(secant_assembly)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
+BENCHMARK(newton_tangent_assembly)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
+BENCHMARK(newton_residual)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
+BENCHMARK(dual_update)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();
+BENCHMARK(coupling_product)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly();

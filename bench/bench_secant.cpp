@@ -31,7 +31,8 @@ double peak_memory_mib() {
 io::Case refined_case(int refinement) {
   io::Case case_;
   case_.mesh_size = 1.0 / refinement;
-  case_.solver.method = solvers::NonlinearMethod::Secant;  // the per-iteration cost of the paper's method
+  case_.solver.method =
+      solvers::NonlinearMethod::Secant; // the per-iteration cost of the paper's method
   // Up to 4 refinements the whole solve is timed; beyond, 10 iterations give
   // the per-iteration cost without a many-minute run (the count is reported).
   if (refinement > 4) case_.solver.max_iterations = 10;
@@ -63,7 +64,8 @@ double median_bare_factorization_seconds(const io::Case& case_, int repetitions 
   for (int k = 0; k < repetitions; ++k) {
     const auto start = std::chrono::steady_clock::now();
     benchmark::DoNotOptimize(solver->factorize(system.matrix));
-    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   std::sort(seconds.begin(), seconds.end());
   return seconds[seconds.size() / 2];
@@ -83,7 +85,7 @@ void method_solve(benchmark::State& state) {
   for (auto _ : state) results = app::simulate(case_).results;
   state.counters["dofs"] = results.n_dofs;
   state.counters["iterations"] = results.iterations;
-  int coarse_iterations = 0;  // Newton's mesh-sequencing start (solver.coarse_levels)
+  int coarse_iterations = 0; // Newton's mesh-sequencing start (solver.coarse_levels)
   for (const int count : results.coarse_iterations) coarse_iterations += count;
   state.counters["coarse_iterations"] = coarse_iterations;
   state.counters["converged"] = results.converged() ? 1 : 0;
@@ -92,7 +94,8 @@ void method_solve(benchmark::State& state) {
   state.counters["factorization_s"] = results.timing.get("factorization");
   state.counters["ram_reaction"] = results.pressure.ram_reaction;
   state.counters["factorizations"] = static_cast<double>(results.timing.counted("factorization"));
-  state.counters["krylov_iterations"] = static_cast<double>(results.timing.counted("krylov iterations"));
+  state.counters["krylov_iterations"] =
+      static_cast<double>(results.timing.counted("krylov iterations"));
   state.counters["peak_mib"] = peak_memory_mib();
   state.counters["bare_factorization_s"] = median_bare_factorization_seconds(case_);
 }
@@ -101,13 +104,14 @@ void secant_solve(benchmark::State& state) {
   const io::Case case_ = refined_case(static_cast<int>(state.range(0)));
   post::Results results;
   for (auto _ : state) results = app::simulate(case_).results;
-  const double iterations = results.iterations + 1;  // + the constant-viscosity start
+  const double iterations = results.iterations + 1; // + the constant-viscosity start
   state.counters["dofs"] = results.n_dofs;
   state.counters["iterations"] = results.iterations;
   state.counters["total_s"] = results.timing.get("total");
   state.counters["per_iteration_s"] =
       (results.timing.get("assembly") + results.timing.get("factorization") +
-       results.timing.get("solve")) / iterations;
+       results.timing.get("solve")) /
+      iterations;
   state.counters["assembly_per_it_s"] = results.timing.get("assembly") / iterations;
   state.counters["factorization_per_it_s"] = results.timing.get("factorization") / iterations;
   state.counters["solve_per_it_s"] = results.timing.get("solve") / iterations;
@@ -130,10 +134,24 @@ void bare_factorization(benchmark::State& state) {
   state.counters["nonzeros_lower"] = static_cast<double>(system.matrix.nonZeros());
 }
 
-}  // namespace
+} // namespace
 
-BENCHMARK(secant_solve)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK(bare_factorization)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(secant_solve)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+BENCHMARK(bare_factorization)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(0.5);
 
 BENCHMARK(method_solve)
     ->ArgsProduct({{1, 2, 4}, {0, 1, 2}, {0, 1}})

@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config clang-format
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread
   libtoml11-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libcairo2-dev fonts-dejavu-core libgmsh-dev
@@ -27,5 +27,8 @@ fi
 
 build_dir=$1
 shift
-cmake -S "$(dirname "$0")/.." -B "$build_dir" -G Ninja "$@" >/dev/null
+# ccache, when present, makes rebuilds and several worktrees cheap; never required.
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S "$(dirname "$0")/.." -B "$build_dir" -G Ninja "${launcher[@]}" "$@" >/dev/null
 cmake --build "$build_dir" -j"$(nproc)"

@@ -31,4 +31,4 @@ TEST(DieValidation, GoodPolylineAndArcPassCheck) {
   EXPECT_TRUE(formflow::testing::has_text(pair.err, "geometry.die_profile"));
 }
 
-}  // namespace
+} // namespace

@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class StudyCommand : public ::testing::Test {
- protected:
+protected:
   /// Runs `formflow study ARGS -q -o OUT`; returns the exit code, stderr in `err_`.
   int study(const std::string& arguments) {
     const formflow::testing::CliResult result = formflow::testing::run_cli(
@@ -49,7 +49,7 @@ TEST_F(StudyCommand, BadInputWritesNothing) {
   EXPECT_NE(err_.find("numeric key"), std::string::npos) << err_;
   EXPECT_EQ(study("--vary mesh.size=1"), 2);
   EXPECT_NE(err_.find("at least two values"), std::string::npos) << err_;
-  EXPECT_EQ(study("--vary mesh.size=1,0.3"), 2);  // 0.3 does not fit the geometry
+  EXPECT_EQ(study("--vary mesh.size=1,0.3"), 2); // 0.3 does not fit the geometry
   EXPECT_NE(err_.find("mesh.size"), std::string::npos) << err_;
   EXPECT_EQ(study("--vary penalty.d=1e-3,x/2"), 2);
   EXPECT_EQ(study("--vary mesh.size=1,0.5 --set penalty.d=-1"), 2);
@@ -63,4 +63,4 @@ TEST_F(StudyCommand, NonConvergedRungGivesExitThreeAndIsMarked) {
   EXPECT_TRUE(fs::exists(output() / "study.png"));
 }
 
-}  // namespace
+} // namespace

@@ -17,7 +17,7 @@ using formflow::testing::quoted;
 using formflow::testing::read_text;
 
 class Validation : public ::testing::Test {
- protected:
+protected:
   /// Runs the binary with `arguments` (already shell-quoted), capturing both streams.
   CliResult run(const std::string& arguments) const {
     return formflow::testing::run_cli(arguments, scratch_.path());
@@ -59,7 +59,8 @@ const BadCase bad_cases[] = {
     // Die geometry.
     {"die-angle-90.toml", 4, "geometry.die_angle", "0 < value < 90"},
     {"die-no-reduction.toml", 5, "geometry.exit_half_height", "< geometry.entry_half_height"},
-    {"die-arc-too-small.toml", 4, "geometry.die_radius", "≥ entry_half_height − exit_half_height = 5"},
+    {"die-arc-too-small.toml", 4, "geometry.die_radius",
+     "≥ entry_half_height − exit_half_height = 5"},
     {"die-profile-widens.toml", 4, "geometry.die_profile", "y increases at point 3"},
     {"die-profile-wrong-end.toml", 4, "geometry.die_profile", "end the profile at y = "},
     {"die-land-unfit.toml", 4, "geometry.land_length", "not a multiple of mesh.size"},
@@ -131,4 +132,4 @@ TEST_F(Validation, CaseReferenceMatchesTheDocs) {
       << "regenerate with `build/formflow case-reference > docs/case-reference.md`";
 }
 
-}  // namespace
+} // namespace

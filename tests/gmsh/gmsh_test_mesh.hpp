@@ -17,7 +17,7 @@ namespace formflow::testing {
 /// node tags in Gmsh order; each named curve group lists its line elements.
 struct TestMesh {
   std::vector<std::array<double, 2>> nodes;
-  int element_type = 3;  ///< Gmsh type: 3 quad-4, 10 quad-9, 16 quad-8, 2 triangle
+  int element_type = 3; ///< Gmsh type: 3 quad-4, 10 quad-9, 16 quad-8, 2 triangle
   std::vector<std::vector<std::size_t>> elements;
   std::vector<std::pair<std::string, std::vector<std::array<std::size_t, 2>>>> curves;
 };
@@ -70,4 +70,4 @@ inline void write_test_mesh(const TestMesh& mesh, const std::string& path, bool 
   mesh::write_gmsh_mesh(session, path, binary);
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

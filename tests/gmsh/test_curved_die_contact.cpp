@@ -87,5 +87,5 @@ TEST(CurvedDieContact, GmshAndStructuredArcDiesApproachEachOtherWithNodalNormals
   EXPECT_LT(gap, 2.0 * std::abs(structured - structured_fine));
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

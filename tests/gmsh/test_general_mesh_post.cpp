@@ -27,8 +27,8 @@ TEST(GeneralMeshPost, ContactProfileFollowsTheWallThenTheDieByArcLength) {
     for (std::size_t k = 0; k < profile.size(); ++k) {
       const post::ContactSample& sample = profile[k];
       const bool on_die = sample.part == 1;
-      const double expected = on_die ? geometry.container_length + geometry.entry_half_height - sample.y
-                                     : sample.x;
+      const double expected =
+          on_die ? geometry.container_length + geometry.entry_half_height - sample.y : sample.x;
       EXPECT_NEAR(sample.arc_length, expected, 1e-9) << "sample " << k << " order " << order;
       if (k > 0) {
         EXPECT_GT(sample.arc_length, profile[k - 1].arc_length) << "sample " << k;
@@ -39,5 +39,5 @@ TEST(GeneralMeshPost, ContactProfileFollowsTheWallThenTheDieByArcLength) {
   }
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

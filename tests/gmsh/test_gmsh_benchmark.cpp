@@ -45,5 +45,5 @@ TEST(GmshBenchmark, StickingRamAgreesWithTheStructuredMeshWithinDiscretisationEr
             1e-3 * p_gmsh);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

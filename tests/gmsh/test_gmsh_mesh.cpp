@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 using mesh::BoundaryLabel;
 
 class ScratchDirectory {
- public:
+public:
   ScratchDirectory() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     path_ = fs::temp_directory_path() /
@@ -38,13 +38,14 @@ class ScratchDirectory {
   ~ScratchDirectory() { fs::remove_all(path_); }
   fs::path operator/(const std::string& name) const { return path_ / name; }
 
- private:
+private:
   fs::path path_;
 };
 
 fem::CellValues<2>::Gradients cell_coordinates(const mesh::Mesh<2>& mesh, Index cell) {
   fem::CellValues<2>::Gradients coordinates(2, mesh.nodes_per_cell());
-  for (int a = 0; a < mesh.nodes_per_cell(); ++a) coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
+  for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+    coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
   return coordinates;
 }
 
@@ -71,7 +72,8 @@ TEST(GmshMesh, NodeOrderMatchesGmshReferenceCoordinates) {
                                             n_primary);
     ASSERT_EQ(n_nodes, (order + 1) * (order + 1)) << name;
     for (int k = 0; k < n_nodes; ++k) {
-      const Point<2> ours = fem::reference_node<2>(order, mesh::lexicographic_of_gmsh_node(order, k));
+      const Point<2> ours =
+          fem::reference_node<2>(order, mesh::lexicographic_of_gmsh_node(order, k));
       EXPECT_EQ(ours.x(), reference[2 * k]) << name << " node " << k;
       EXPECT_EQ(ours.y(), reference[2 * k + 1]) << name << " node " << k;
     }
@@ -79,7 +81,7 @@ TEST(GmshMesh, NodeOrderMatchesGmshReferenceCoordinates) {
 }
 
 TEST(GmshMesh, GeneratedChannelHasTheBenchmarkGeometryAndParts) {
-  const mesh::ChannelGeometry geometry;  // the benchmark: 10 × 10 container, 10 × 5 exit
+  const mesh::ChannelGeometry geometry; // the benchmark: 10 × 10 container, 10 × 5 exit
   for (const int order : {1, 2}) {
     const mesh::Mesh<2> mesh = mesh::make_gmsh_channel_mesh(geometry, 1.0, order);
     EXPECT_EQ(mesh.order, order);
@@ -97,9 +99,9 @@ TEST(GmshMesh, GeneratedChannelHasTheBenchmarkGeometryAndParts) {
     EXPECT_TRUE(testing::approx(area, 150.0, 1e-12));
     const auto lengths = part_lengths(mesh);
     const std::map<BoundaryLabel, Real> expected = {
-        {BoundaryLabel::Rear, 10.0},     {BoundaryLabel::Container, 10.0},
-        {BoundaryLabel::Die, 5.0},       {BoundaryLabel::FreeExit, 10.0},
-        {BoundaryLabel::Front, 5.0},     {BoundaryLabel::Symmetry, 20.0}};
+        {BoundaryLabel::Rear, 10.0}, {BoundaryLabel::Container, 10.0},
+        {BoundaryLabel::Die, 5.0},   {BoundaryLabel::FreeExit, 10.0},
+        {BoundaryLabel::Front, 5.0}, {BoundaryLabel::Symmetry, 20.0}};
     EXPECT_EQ(lengths.size(), expected.size());
     for (const auto& [label, length] : expected)
       EXPECT_TRUE(testing::approx(lengths.at(label), length, 1e-12)) << mesh::label_name(label);
@@ -141,9 +143,9 @@ TEST(GmshMesh, FacetNormalsPointOutOfTheChannelForEveryLocalFace) {
   const mesh::Mesh<2> mesh =
       with_rotated_cells(mesh::make_gmsh_channel_mesh(mesh::ChannelGeometry{}, 1.0, 2));
   const std::map<BoundaryLabel, Point<2>> outward = {
-      {BoundaryLabel::Rear, Point<2>(-1.0, 0.0)},     {BoundaryLabel::Container, Point<2>(0.0, 1.0)},
-      {BoundaryLabel::Die, Point<2>(1.0, 0.0)},       {BoundaryLabel::FreeExit, Point<2>(0.0, 1.0)},
-      {BoundaryLabel::Front, Point<2>(1.0, 0.0)},     {BoundaryLabel::Symmetry, Point<2>(0.0, -1.0)}};
+      {BoundaryLabel::Rear, Point<2>(-1.0, 0.0)}, {BoundaryLabel::Container, Point<2>(0.0, 1.0)},
+      {BoundaryLabel::Die, Point<2>(1.0, 0.0)},   {BoundaryLabel::FreeExit, Point<2>(0.0, 1.0)},
+      {BoundaryLabel::Front, Point<2>(1.0, 0.0)}, {BoundaryLabel::Symmetry, Point<2>(0.0, -1.0)}};
   fem::FacetValues<2> facet(2, fem::gauss_rule<1>(3));
   std::set<int> local_faces_seen;
   for (const auto& f : mesh.facets) {
@@ -183,16 +185,18 @@ TEST(GmshMesh, CurvedQ2FacesGiveRadialNormalsAndTheArcLength) {
     gmsh::model::mesh::generate(2);
     gmsh::model::mesh::setOrder(2);
   });
-  const mesh::Mesh<2> mesh = mesh::mesh_from_gmsh_model(
-      session,
-      {{"bottom", BoundaryLabel::Symmetry}, {"outer", BoundaryLabel::Die},
-       {"left", BoundaryLabel::Rear}, {"inner", BoundaryLabel::Container}},
-      2);
+  const mesh::Mesh<2> mesh = mesh::mesh_from_gmsh_model(session,
+                                                        {{"bottom", BoundaryLabel::Symmetry},
+                                                         {"outer", BoundaryLabel::Die},
+                                                         {"left", BoundaryLabel::Rear},
+                                                         {"inner", BoundaryLabel::Container}},
+                                                        2);
   fem::FacetValues<2> facet(2, fem::gauss_rule<1>(3));
   for (const auto& f : mesh.facets) {
     if (!mesh::is_contact(f.label)) continue;
     facet.reinit(cell_coordinates(mesh, f.cell), f.local_face);
-    const Real sign = f.label == BoundaryLabel::Die ? 1.0 : -1.0;  // outward: away from / to the centre
+    const Real sign =
+        f.label == BoundaryLabel::Die ? 1.0 : -1.0; // outward: away from / to the centre
     for (int q = 0; q < facet.n_points(); ++q) {
       const Point<2> radial = facet.point(q).normalized();
       EXPECT_LT((facet.normal(q) - sign * radial).norm(), 2e-3) << mesh::label_name(f.label);
@@ -218,8 +222,7 @@ TEST(GmshMesh, MshFileRoundTripGivesTheSameMesh) {
       mesh::write_gmsh_mesh(session, (scratch / "binary.msh").string(), true);
     }
     for (const std::string name : {"ascii.msh", "binary.msh"}) {
-      const mesh::Mesh<2> read = mesh::read_gmsh_mesh((scratch / name).string(),
-                                                      {}, order);
+      const mesh::Mesh<2> read = mesh::read_gmsh_mesh((scratch / name).string(), {}, order);
       ASSERT_EQ(read.order, order);
       ASSERT_EQ(read.n_nodes(), direct.n_nodes()) << name;
       ASSERT_EQ(read.n_cells(), direct.n_cells()) << name;
@@ -245,11 +248,12 @@ TEST(GmshMesh, ClockwiseCellsAreMirroredToCounterClockwise) {
   for (auto& element : clockwise.elements) std::reverse(element.begin(), element.end());
   const std::string path = (scratch / "clockwise.msh").string();
   testing::write_test_mesh(clockwise, path);
-  const mesh::Mesh<2> mesh = mesh::read_gmsh_mesh(
-      path,
-      {{"ram", BoundaryLabel::Rear}, {"axis", BoundaryLabel::Symmetry},
-       {"front", BoundaryLabel::Front}, {"wall", BoundaryLabel::Container}},
-      1);
+  const mesh::Mesh<2> mesh = mesh::read_gmsh_mesh(path,
+                                                  {{"ram", BoundaryLabel::Rear},
+                                                   {"axis", BoundaryLabel::Symmetry},
+                                                   {"front", BoundaryLabel::Front},
+                                                   {"wall", BoundaryLabel::Container}},
+                                                  1);
   ASSERT_EQ(mesh.n_cells(), 2);
   fem::CellValues<2> values(1, fem::gauss_rule<2>(2));
   for (Index cell = 0; cell < 2; ++cell) EXPECT_TRUE(values.reinit(cell_coordinates(mesh, cell)));
@@ -270,5 +274,5 @@ TEST(GmshMesh, OneSessionAtATime) {
   EXPECT_NO_THROW(mesh::GmshSession again);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -22,15 +22,14 @@ using testing::quoted;
 using testing::read_text;
 
 /// The boundary map of two_squares(), as lines 6–10 of the case file.
-const std::string full_map =
-    "[mesh.boundaries]\n"
-    "ram = \"rear\"\n"
-    "axis = \"symmetry\"\n"
-    "front = \"front\"\n"
-    "wall = \"container\"\n";
+const std::string full_map = "[mesh.boundaries]\n"
+                             "ram = \"rear\"\n"
+                             "axis = \"symmetry\"\n"
+                             "front = \"front\"\n"
+                             "wall = \"container\"\n";
 
 class MeshFile : public ::testing::Test {
- protected:
+protected:
   MeshFile() { fs::create_directories(scratch_ / "meshes"); }
 
   /// Writes `mesh` to meshes/m.msh and a case that reads it (mesh.file relative
@@ -109,7 +108,7 @@ TEST_F(MeshFile, UnmappedGroupOnTheBoundary) {
 
 TEST_F(MeshFile, BoundaryFacetWithoutLabel) {
   testing::TestMesh mesh = testing::two_squares();
-  mesh.curves.erase(mesh.curves.begin() + 2);  // no "front" group at all
+  mesh.curves.erase(mesh.curves.begin() + 2); // no "front" group at all
   const std::string without_front =
       "[mesh.boundaries]\nram = \"rear\"\naxis = \"symmetry\"\nwall = \"container\"\n";
   const int code = run_with(mesh, "Q1", without_front);
@@ -128,11 +127,13 @@ TEST_F(MeshFile, Triangles) {
 
 TEST_F(MeshFile, SerendipityQuadrilaterals) {
   testing::TestMesh mesh = testing::two_squares();
-  mesh.element_type = 16;  // quad-8: corners, then mid-edge nodes
-  mesh.nodes.insert(mesh.nodes.end(), {{0.5, 0}, {1, 0.5}, {0.5, 1}, {0, 0.5}, {1.5, 0}, {2, 0.5}, {1.5, 1}});
+  mesh.element_type = 16; // quad-8: corners, then mid-edge nodes
+  mesh.nodes.insert(mesh.nodes.end(),
+                    {{0.5, 0}, {1, 0.5}, {0.5, 1}, {0, 0.5}, {1.5, 0}, {2, 0.5}, {1.5, 1}});
   mesh.elements = {{1, 2, 5, 4, 7, 8, 9, 10}, {2, 3, 6, 5, 11, 12, 13, 8}};
   const int code = run_with(mesh, "Q2");
-  expect_input_error(code, 3, "mesh.element", "8-node serendipity quadrilaterals are not supported");
+  expect_input_error(code, 3, "mesh.element",
+                     "8-node serendipity quadrilaterals are not supported");
 }
 
 TEST_F(MeshFile, OrderDifferentFromMeshElement) {
@@ -165,5 +166,5 @@ TEST_F(MeshFile, InvalidPartName) {
   EXPECT_TRUE(has_text(error_, "\"rear\", \"free_entry\", \"container\""));
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -69,5 +69,5 @@ TEST(BenchmarkLadder, SlidingRamFallsBelowTheThreeBlockBound) {
   EXPECT_LE(*finest.pressure_extrapolated, 2.5);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -41,5 +41,5 @@ TEST_P(CoarseStartFineMesh, ConvergesWithReactionEqualToThePower) {
 INSTANTIATE_TEST_SUITE_P(PaperFrictionCoefficients, CoarseStartFineMesh,
                          ::testing::Values(0.0, 0.1, 0.2));
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

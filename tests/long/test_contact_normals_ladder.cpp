@@ -42,13 +42,14 @@ TEST(ContactNormalsLong, PlaneWedgeExtrusionLadderConvergesToHillAtFirstOrder) {
   // field allow a continuous approximation; the limit must meet Hill within 1 %
   // (the residue is the penalty d, the rate sensitivity and the higher-order
   // error; drawing's limit is 0.4 % above too).
-  const double alpha = 15 * degree, r = hill_special_reduction(alpha), exact = hill_wedge_stress(alpha);
+  const double alpha = 15 * degree, r = hill_special_reduction(alpha),
+               exact = hill_wedge_stress(alpha);
   const double p1 = extrusion_pressure(extrusion_case(15, 1 - r, 0.125));
   const double p2 = extrusion_pressure(extrusion_case(15, 1 - r, 0.0625));
   const double p3 = extrusion_pressure(extrusion_case(15, 1 - r, 0.03125));
   EXPECT_GT(p1, p2);
   EXPECT_GT(p2, p3);
-  EXPECT_GT(p3, exact * (1 - 1e-3));  // from above, up to the O(d) penalty slack
+  EXPECT_GT(p3, exact * (1 - 1e-3)); // from above, up to the O(d) penalty slack
   const double order = std::log2((p2 - p1) / (p3 - p2));
   EXPECT_GT(order, 0.8);
   EXPECT_LT(order, 1.3);
@@ -74,5 +75,5 @@ TEST(ContactNormalsLong, RodExtrusionBelowAvitzurOnSixteenRows) {
   }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

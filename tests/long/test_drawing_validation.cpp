@@ -42,7 +42,7 @@ TEST(DrawingValidationLong, HillWedgeDrawingOverSemiAngles) {
     const double ours = results.pressure.ram_reaction, exact = hill_wedge_stress(alpha);
     EXPECT_GT(ours, plane_ideal(r));
     EXPECT_LT(ours, plane_radial_upper_bound(alpha, r));
-    EXPECT_GT(ours, exact * (1 - 1e-3));  // converges from above; O(d) penalty slack
+    EXPECT_GT(ours, exact * (1 - 1e-3)); // converges from above; O(d) penalty slack
     EXPECT_LT(ours, exact * 1.04);
   }
 }
@@ -72,10 +72,10 @@ TEST(DrawingValidationLong, AxisymmetricLoadsBetweenIdealWorkAndAvitzur) {
     physics::ProcessType type;
     double degrees, r;
   };
-  for (const Row row : {Row{physics::ProcessType::Drawing, 6, 0.2},
-                        Row{physics::ProcessType::Drawing, 15, 0.3},
-                        Row{physics::ProcessType::Extrusion, 30, 0.5},
-                        Row{physics::ProcessType::Extrusion, 45, 0.5}}) {
+  for (const Row row :
+       {Row{physics::ProcessType::Drawing, 6, 0.2}, Row{physics::ProcessType::Drawing, 15, 0.3},
+        Row{physics::ProcessType::Extrusion, 30, 0.5},
+        Row{physics::ProcessType::Extrusion, 45, 0.5}}) {
     SCOPED_TRACE(row.degrees);
     io::Case case_ = wedge_case(row.type, row.degrees, std::sqrt(1 - row.r));
     case_.symmetry = physics::Symmetry::Axisymmetric;
@@ -86,5 +86,5 @@ TEST(DrawingValidationLong, AxisymmetricLoadsBetweenIdealWorkAndAvitzur) {
   }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -81,18 +81,16 @@ TEST_P(FrictionLadder, RegularisedApproachesExactAtLeastLikeSquareRootOfDT) {
         << "d_T = " << d_t[k];
 }
 
-INSTANTIATE_TEST_SUITE_P(MeshTwo, FrictionLadder,
-                         ::testing::Combine(::testing::Values(0.1, 0.2),
-                                            ::testing::Values(0.0, 1.0),
-                                            ::testing::Values(solvers::NonlinearMethod::Secant,
-                                                              solvers::NonlinearMethod::Newton)),
-                         [](const ::testing::TestParamInfo<Variant>& info) {
-                           return std::string(std::get<0>(info.param) == 0.1 ? "Mu01" : "Mu02") +
-                                  (std::get<1>(info.param) == 0.0 ? "Local" : "Nonlocal") +
-                                  (std::get<2>(info.param) == solvers::NonlinearMethod::Newton
-                                       ? "Newton"
-                                       : "Secant");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    MeshTwo, FrictionLadder,
+    ::testing::Combine(::testing::Values(0.1, 0.2), ::testing::Values(0.0, 1.0),
+                       ::testing::Values(solvers::NonlinearMethod::Secant,
+                                         solvers::NonlinearMethod::Newton)),
+    [](const ::testing::TestParamInfo<Variant>& info) {
+      return std::string(std::get<0>(info.param) == 0.1 ? "Mu01" : "Mu02") +
+             (std::get<1>(info.param) == 0.0 ? "Local" : "Nonlocal") +
+             (std::get<2>(info.param) == solvers::NonlinearMethod::Newton ? "Newton" : "Secant");
+    });
 
 } // namespace
 } // namespace formflow::testing

@@ -44,5 +44,5 @@ TEST(GmshLadder, StickingRamOnBothMeshesApproachesTheSlipLinePressure) {
   }
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

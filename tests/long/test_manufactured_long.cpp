@@ -19,5 +19,5 @@ TEST(ManufacturedLong, Q1OnSmoothlyDistortedMeshWithPowerLawReachesSecondOrderIn
   EXPECT_NEAR(*finest.order_l2, 2.0, 0.15);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -41,5 +41,5 @@ TEST_P(NewtonFineMesh, ConvergesWithReactionEqualToThePower) {
 INSTANTIATE_TEST_SUITE_P(PaperFrictionCoefficients, NewtonFineMesh,
                          ::testing::Values(0.0, 0.1, 0.2));
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -29,4 +29,4 @@ inline double observed_order(double p1, double p2, double p3) {
   return std::log2((p2 - p1) / (p3 - p2));
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

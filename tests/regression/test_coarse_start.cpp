@@ -66,5 +66,5 @@ TEST(CoarseStart, MeshIIHasNoCoarserMeshAndRunsAsBefore) {
   EXPECT_EQ(asked.pressure.ram_reaction, plain.pressure.ram_reaction);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -29,7 +29,7 @@ TEST(ContactNormalsRuns, PlaneWedgeExtrusionOnSixteenRowsIsWithinFivePercentOfHi
   const double alpha = 15 * degree, r = hill_special_reduction(alpha);
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.geometry = mesh::ChannelGeometry{2.0, 1.0, 1 - r, 2.0};  // bench/validation.py
+  case_.geometry = mesh::ChannelGeometry{2.0, 1.0, 1 - r, 2.0}; // bench/validation.py
   case_.geometry.die = mesh::DieShape::Wedge;
   case_.geometry.die_angle = 15;
   case_.mesh_size = 1.0 / 16;
@@ -96,5 +96,5 @@ TEST(ContactNormalsRuns, KinkedPolylineDieWithLocalFrictionConverges) {
   EXPECT_GT(results.pressure.ram_reaction, frictionless.pressure.ram_reaction);
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

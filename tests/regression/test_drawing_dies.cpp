@@ -29,7 +29,9 @@ io::Case wedge_case(physics::ProcessType type, double degrees, double exit_half_
   return case_;
 }
 
-double load(const post::Results& results) { return results.pressure.ram_reaction; }
+double load(const post::Results& results) {
+  return results.pressure.ram_reaction;
+}
 
 TEST(DrawingDies, PlaneWedgeDrawingApproachesHillsSlipLineSolution) {
   const double alpha = 15 * degree, r = hill_special_reduction(alpha);
@@ -65,5 +67,5 @@ TEST(DrawingDies, AxisymmetricWireDrawingLiesBetweenIdealWorkAndAvitzur) {
   EXPECT_TRUE(approx(results.pressure.total_power, ours, 1e-3));
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -15,9 +15,10 @@
 namespace formflow {
 namespace {
 
-using Variant = std::tuple<double, double>;  // μ, mollifier radius
+using Variant = std::tuple<double, double>; // μ, mollifier radius
 
-post::Results solve_exact(const Variant& variant, solvers::NonlinearMethod method, double tolerance) {
+post::Results solve_exact(const Variant& variant, solvers::NonlinearMethod method,
+                          double tolerance) {
   const auto [mu, radius] = variant;
   return testing::solve_benchmark([&](io::Case& c) {
     c.friction.mu = mu;
@@ -39,7 +40,8 @@ TEST_P(ExactFrictionNewton, AgreesWithTheSecantLoopInFewIterations) {
   ASSERT_TRUE(newton.converged());
   ASSERT_TRUE(tight.converged());
   ASSERT_TRUE(secant.converged());
-  EXPECT_EQ(newton.method, "augmented-lagrangian friction around newton");  // mesh II: no coarse level
+  EXPECT_EQ(newton.method,
+            "augmented-lagrangian friction around newton"); // mesh II: no coarse level
   EXPECT_LT(newton.augmentation.multiplier_change, delta);
 
   // Iterations (docs/friction.md "Cost"): measured 16, 24, 19 to δ = 1e-4 and 18, 26,
@@ -69,7 +71,8 @@ TEST_P(ExactFrictionNewton, AgreesWithTheSecantLoopInFewIterations) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PaperCaseMeshII, ExactFrictionNewton,
-                         ::testing::Values(Variant{0.1, 1.0}, Variant{0.2, 0.0}, Variant{0.2, 1.0}));
+                         ::testing::Values(Variant{0.1, 1.0}, Variant{0.2, 0.0},
+                                           Variant{0.2, 1.0}));
 
 TEST(ExactFrictionNewton, CoarseStartSolvesTheCoulombLawWithZeroMultipliersOnCoarseMeshes) {
   // h = 0.5 nests in h = 1 (one coarse level; 2 does not divide the exit height 5).
@@ -82,7 +85,7 @@ TEST(ExactFrictionNewton, CoarseStartSolvesTheCoulombLawWithZeroMultipliersOnCoa
   auto run = [](int coarse_levels) {
     return testing::solve_benchmark([&](io::Case& c) {
       c.mesh_size = 0.5;
-      c.friction.mu = 0.1;  // μ = 0.2 is alike but takes twice as long (46 iterations)
+      c.friction.mu = 0.1; // μ = 0.2 is alike but takes twice as long (46 iterations)
       c.friction.regularization = physics::FrictionRegularization::None;
       c.solver.coarse_levels = coarse_levels;
     });
@@ -100,8 +103,8 @@ TEST(ExactFrictionNewton, CoarseStartSolvesTheCoulombLawWithZeroMultipliersOnCoa
   EXPECT_NEAR(coarse.die_zones.stick_length, direct.die_zones.stick_length, 1e-9);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow
 
 namespace formflow {
 namespace {
@@ -129,9 +132,9 @@ TEST(ExactFrictionNewton, MixedCondensedPressureAgreesWithTheSecantLoop) {
   const double p = newton.pressure.ram_reaction;
   EXPECT_LT(std::abs(secant.pressure.ram_reaction - p), 20 * 1e-4 * p);
   EXPECT_NEAR(newton.pressure.total_power, p, 1e-6 * p);
-  EXPECT_GT(newton.die_zones.stick_length, 0.0);  // the dead-metal corner sticks
+  EXPECT_GT(newton.die_zones.stick_length, 0.0); // the dead-metal corner sticks
   EXPECT_NEAR(newton.die_zones.stick_length, secant.die_zones.stick_length, 0.5);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -11,7 +11,7 @@
 namespace formflow {
 namespace {
 
-using Variant = std::tuple<fem::ElementKind, int, double>;  // element, volumetric rule, μ
+using Variant = std::tuple<fem::ElementKind, int, double>; // element, volumetric rule, μ
 
 class LoadConsistency : public ::testing::TestWithParam<Variant> {};
 
@@ -22,7 +22,7 @@ double discrepancy(const Variant& variant, double tolerance) {
     c.element = element;
     c.volumetric_points = rule;
     c.friction.mu = mu;
-    c.mesh_size = 10.0 / 6.0;  // mesh I keeps the 18 variants × 2 tolerances fast
+    c.mesh_size = 10.0 / 6.0; // mesh I keeps the 18 variants × 2 tolerances fast
     c.solver.tolerance = tolerance;
     c.solver.max_iterations = 5000;
     // The bounds below follow from the secant iteration's linear contraction;
@@ -51,5 +51,5 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Combine(::testing::Values(fem::ElementKind::Q1, fem::ElementKind::Q2),
                        ::testing::Values(1, 2, 3), ::testing::Values(0.0, 0.1, 0.2)));
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

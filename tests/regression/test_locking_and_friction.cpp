@@ -41,5 +41,5 @@ TEST(Friction, CoulombFrictionNeverLowersThePressure) {
   EXPECT_GT(strong, mild);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -11,14 +11,14 @@
 namespace formflow {
 namespace {
 
-using Variant = std::tuple<fem::ElementKind, int, double>;  // element, volumetric rule, μ
+using Variant = std::tuple<fem::ElementKind, int, double>; // element, volumetric rule, μ
 
 post::Results solve(const Variant& variant, solvers::NonlinearMethod method, double tolerance) {
   const auto [element, rule, mu] = variant;
   return testing::solve_benchmark([&](io::Case& c) {
     c.element = element;
     c.volumetric_points = rule;
-    c.friction.mu = mu;  // mesh II (the default mesh.size = 1)
+    c.friction.mu = mu; // mesh II (the default mesh.size = 1)
     c.solver.method = method;
     c.solver.tolerance = tolerance;
     c.solver.max_iterations = 2000;
@@ -59,14 +59,16 @@ TEST_P(NewtonVsSecant, SameSolutionToDeltaAndIterationCount) {
 
 // The paper's cases: Q2 with the 2×2 volumetric rule on mesh II for μ = 0, 0.1,
 // 0.2, and the Q1 variant with the 1×1 rule ({Q1, P0, P1}).
-INSTANTIATE_TEST_SUITE_P(
-    PaperCasesMeshII, NewtonVsSecant,
-    ::testing::Values(Variant{fem::ElementKind::Q2, 2, 0.0}, Variant{fem::ElementKind::Q2, 2, 0.1},
-                      Variant{fem::ElementKind::Q2, 2, 0.2}, Variant{fem::ElementKind::Q1, 1, 0.0},
-                      Variant{fem::ElementKind::Q1, 1, 0.1}, Variant{fem::ElementKind::Q1, 1, 0.2}));
+INSTANTIATE_TEST_SUITE_P(PaperCasesMeshII, NewtonVsSecant,
+                         ::testing::Values(Variant{fem::ElementKind::Q2, 2, 0.0},
+                                           Variant{fem::ElementKind::Q2, 2, 0.1},
+                                           Variant{fem::ElementKind::Q2, 2, 0.2},
+                                           Variant{fem::ElementKind::Q1, 1, 0.0},
+                                           Variant{fem::ElementKind::Q1, 1, 0.1},
+                                           Variant{fem::ElementKind::Q1, 1, 0.2}));
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow
 
 namespace formflow {
 namespace {
@@ -116,8 +118,8 @@ TEST_P(AxisymmetricNewtonVsSecant, SameSolutionToDeltaInAtMostEightIterations) {
 INSTANTIATE_TEST_SUITE_P(PaperFrictionCoefficients, AxisymmetricNewtonVsSecant,
                          ::testing::Values(0.0, 0.1, 0.2));
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow
 
 namespace formflow {
 namespace {
@@ -139,7 +141,8 @@ TEST(MethodReported, NamesTheLoopThatRan) {
     c.friction.mu = 0.1;
     c.friction.regularization = physics::FrictionRegularization::None;
   });
-  EXPECT_EQ(exact_friction.method, "augmented-lagrangian friction around newton from coarse meshes");
+  EXPECT_EQ(exact_friction.method,
+            "augmented-lagrangian friction around newton from coarse meshes");
   const post::Results exact_secant = testing::solve_benchmark([](io::Case& c) {
     c.mesh_size = 2.5;
     c.friction.mu = 0.1;
@@ -149,8 +152,8 @@ TEST(MethodReported, NamesTheLoopThatRan) {
   EXPECT_EQ(exact_secant.method, "augmented-lagrangian friction around secant");
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow
 
 namespace formflow {
 namespace {
@@ -179,7 +182,8 @@ TEST_P(MixedNewtonVsSecant, SameSolutionToDeltaInAtMostEightIterations) {
   expect_newton_reaches_the_secant_solution(newton, reference, delta);
   // The mixed pressure field is that of the secant solution (σ_H from the same
   // condensation), not the penalty problem's.
-  EXPECT_NEAR(newton.pressure.mean_hydrostatic_near_ram, reference.pressure.mean_hydrostatic_near_ram,
+  EXPECT_NEAR(newton.pressure.mean_hydrostatic_near_ram,
+              reference.pressure.mean_hydrostatic_near_ram,
               20 * delta * std::abs(reference.pressure.mean_hydrostatic_near_ram));
 }
 
@@ -204,11 +208,11 @@ TEST(MixedNewton, CoarseStartSolvesTheSameMixedProblem) {
   ASSERT_TRUE(coarse.converged());
   ASSERT_TRUE(plain.converged());
   EXPECT_EQ(coarse.method, "newton from coarse meshes");
-  EXPECT_EQ(coarse.coarse_iterations.size(), 1u);  // h = 1 (h = 2 does not nest the die)
+  EXPECT_EQ(coarse.coarse_iterations.size(), 1u); // h = 1 (h = 2 does not nest the die)
   EXPECT_NEAR(coarse.pressure.ram_reaction, plain.pressure.ram_reaction,
               1e-5 * plain.pressure.ram_reaction);
   EXPECT_LT(coarse.iterations, plain.iterations);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

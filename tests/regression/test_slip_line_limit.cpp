@@ -32,7 +32,7 @@ TEST(SlipLineLimit, StickingRamConvergesToHillsCentredFan) {
   const double slip_line = 1.0 + std::numbers::pi / 2.0;
   const std::vector<double> p = ladder(physics::RamCondition::Sticking, {1.0, 0.5, 0.25, 0.125});
   for (std::size_t k = 1; k < p.size(); ++k) EXPECT_LT(p[k], p[k - 1]) << "rung " << k;
-  EXPECT_TRUE(testing::approx(p.back(), slip_line, 0.02));  // issue 2: last rung within 2 %
+  EXPECT_TRUE(testing::approx(p.back(), slip_line, 0.02)); // issue 2: last rung within 2 %
   EXPECT_TRUE(testing::approx(testing::richardson_limit(p[1], p[2], p[3]), slip_line, 0.01));
 }
 
@@ -46,5 +46,5 @@ TEST(SlipLineLimit, SlidingRamFallsBelowThreeBlockBound) {
   EXPECT_LE(testing::richardson_limit(p[1], p[2], p[3]), three_block_bound);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

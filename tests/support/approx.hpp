@@ -16,9 +16,9 @@ inline ::testing::AssertionResult approx(double actual, double expected, double 
   const double bound = abs_tol + rel_tol * std::abs(expected);
   if (std::isfinite(actual) && std::abs(actual - expected) <= bound)
     return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << actual << " differs from " << expected << " by "
-                                       << std::abs(actual - expected) << " > " << bound
-                                       << " (rel " << rel_tol << ", abs " << abs_tol << ")";
+  return ::testing::AssertionFailure()
+         << actual << " differs from " << expected << " by " << std::abs(actual - expected) << " > "
+         << bound << " (rel " << rel_tol << ", abs " << abs_tol << ")";
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

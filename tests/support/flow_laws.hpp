@@ -39,4 +39,4 @@ inline physics::FlowLaw perfectly_plastic(double sigma0) {
   return law;
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

@@ -85,7 +85,8 @@ struct SmallExtrusion {
   VectorX free_part(const VectorX& full) const {
     VectorX free_values(problem->plan().n_free());
     for (Index dof = 0; dof < problem->plan().n_dofs(); ++dof)
-      if (problem->plan().free_index(dof) >= 0) free_values[problem->plan().free_index(dof)] = full[dof];
+      if (problem->plan().free_index(dof) >= 0)
+        free_values[problem->plan().free_index(dof)] = full[dof];
     return free_values;
   }
   /// R(u_f) on the free dofs (the residual-only path), with τ_f frozen at
@@ -93,8 +94,8 @@ struct SmallExtrusion {
   VectorX free_residual(const VectorX& free_u, const std::vector<Real>* thresholds) const {
     const VectorX full = problem->plan().expand(free_u, problem->constraints().values);
     VectorX force;
-    problem->assemble_newton(full, thresholds ? *thresholds : problem->friction_thresholds(full), {},
-                             force, nullptr, nullptr, friction_multipliers);
+    problem->assemble_newton(full, thresholds ? *thresholds : problem->friction_thresholds(full),
+                             {}, force, nullptr, nullptr, friction_multipliers);
     return free_part(force);
   }
   /// T + N at u as a dense matrix over the free dofs (T alone in `symmetric_part`).
@@ -103,7 +104,8 @@ struct SmallExtrusion {
     assembly::UnsymmetricTangent<2> coupling;
     VectorX force;
     problem->assemble_newton(u, thresholds, {}, force, &tangent, &coupling, friction_multipliers);
-    const MatrixX t = MatrixX(assembly::SparseMatrix(tangent.matrix.selfadjointView<Eigen::Lower>()));
+    const MatrixX t =
+        MatrixX(assembly::SparseMatrix(tangent.matrix.selfadjointView<Eigen::Lower>()));
     if (symmetric_part) *symmetric_part = t;
     MatrixX j = t;
     for (Index k = 0; k < j.cols(); ++k) {
@@ -115,4 +117,4 @@ struct SmallExtrusion {
   }
 };
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

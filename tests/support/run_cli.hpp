@@ -39,7 +39,7 @@ inline ::testing::AssertionResult has_text(const std::string& text, const std::s
 /// running test and the process (parallel ctest runs do not collide); removed
 /// with its contents when this object goes.
 class ScratchDirectory {
- public:
+public:
   explicit ScratchDirectory(const std::string& prefix) {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     const std::string test = info ? std::string(info->name()) : std::string("no-test");
@@ -58,15 +58,15 @@ class ScratchDirectory {
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 
- private:
+private:
   std::filesystem::path path_;
 };
 
 /// What one run of the binary did.
 struct CliResult {
-  int exit_code = -1;  ///< -1 when it did not exit normally (a signal)
-  std::string out;     ///< stdout
-  std::string err;     ///< stderr
+  int exit_code = -1; ///< -1 when it did not exit normally (a signal)
+  std::string out;    ///< stdout
+  std::string err;    ///< stderr
 };
 
 /// Runs `formflow ARGUMENTS` (ARGUMENTS already shell-quoted) through /bin/sh,
@@ -89,4 +89,4 @@ inline CliResult run_cli(const std::string& arguments, const std::filesystem::pa
   return result;
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

@@ -14,4 +14,4 @@ namespace formflow::testing {
 void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& mesh,
                         post::Results& results);
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

@@ -14,10 +14,8 @@ inline double checkerboard_share(const mesh::Mesh<2>& mesh, Real size, const Vec
   double removed = 0.0, total = 0.0;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     Real centre = 0.0;
-    for (int a = 0; a < mesh.nodes_per_cell(); ++a)
-      centre += mesh.nodes(0, mesh.cells(a, cell));
-    if (centre / mesh.nodes_per_cell() >= x_max)
-      continue;
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a) centre += mesh.nodes(0, mesh.cells(a, cell));
+    if (centre / mesh.nodes_per_cell() >= x_max) continue;
     removed += (cell_pressure[cell] - filtered[cell]) * (cell_pressure[cell] - filtered[cell]);
     total += cell_pressure[cell] * cell_pressure[cell];
   }

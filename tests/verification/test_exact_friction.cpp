@@ -156,8 +156,7 @@ TEST_P(ExactFriction, RegularisedSolutionsConvergeAtLeastLikeSquareRootOfDT) {
   const std::size_t last = d_t.size() - 1;
   const double velocity_rate = std::log10(velocity_error[last - 1] / velocity_error[last]);
   EXPECT_GE(velocity_rate, 0.5 - 0.15);
-  for (std::size_t k = 1; k < d_t.size(); ++k)
-    EXPECT_LT(velocity_error[k], velocity_error[k - 1]);
+  for (std::size_t k = 1; k < d_t.size(); ++k) EXPECT_LT(velocity_error[k], velocity_error[k - 1]);
   // The pressure is a functional of u, so |p_dT − p| ≤ C ‖u_dT − u‖: it must stay
   // under the √d_T envelope drawn from the coarsest rung. Its ratio between two
   // rungs is no rate: p_dT − p changes sign between d_T = 1e-5 and 1e-6 on this

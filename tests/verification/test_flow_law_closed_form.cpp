@@ -72,7 +72,8 @@ void check_homogeneous_flow(const FlowLaw& law, int order, const Tensor2<2>& g,
   for (int iteration = 0; iteration < 20000; ++iteration) {
     assembly::ScatterPlan::clear(system);
     for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-      fem::CellValues<2>::Gradients nodes(2, mesh.nodes_per_cell()), velocity(2, mesh.nodes_per_cell());
+      fem::CellValues<2>::Gradients nodes(2, mesh.nodes_per_cell()),
+          velocity(2, mesh.nodes_per_cell());
       for (int a = 0; a < mesh.nodes_per_cell(); ++a) {
         nodes.col(a) = mesh.nodes.col(mesh.cells(a, cell));
         velocity.col(a) = u.segment<2>(2 * mesh.cells(a, cell));
@@ -80,8 +81,9 @@ void check_homogeneous_flow(const FlowLaw& law, int order, const Tensor2<2>& g,
       values.reinit(nodes);
       std::vector<Real> viscosity;
       for (int q = 0; q < values.n_points(); ++q)
-        viscosity.push_back(law.secant_viscosity(physics::equivalent_strain_rate(
-            physics::strain_rate<2>(physics::velocity_gradient<2>(velocity, values.gradients(q))))));
+        viscosity.push_back(
+            law.secant_viscosity(physics::equivalent_strain_rate(physics::strain_rate<2>(
+                physics::velocity_gradient<2>(velocity, values.gradients(q))))));
       MatrixX local = MatrixX::Zero(2 * mesh.nodes_per_cell(), 2 * mesh.nodes_per_cell());
       assembly::add_viscous_term<2>(values, viscosity, strain, local);
       assembly::add_volumetric_penalty<2>(values, penalty.d, local);
@@ -105,7 +107,8 @@ void check_homogeneous_flow(const FlowLaw& law, int order, const Tensor2<2>& g,
   const Tensor3 rate = physics::strain_rate<2>(g);
   const Real eps = physics::equivalent_strain_rate(rate);
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    fem::CellValues<2>::Gradients nodes(2, mesh.nodes_per_cell()), velocity(2, mesh.nodes_per_cell());
+    fem::CellValues<2>::Gradients nodes(2, mesh.nodes_per_cell()),
+        velocity(2, mesh.nodes_per_cell());
     for (int a = 0; a < mesh.nodes_per_cell(); ++a) {
       nodes.col(a) = mesh.nodes.col(mesh.cells(a, cell));
       velocity.col(a) = u.segment<2>(2 * mesh.cells(a, cell));
@@ -147,12 +150,12 @@ TEST_P(HomogeneousFlow, SimpleShearGivesTheYieldStress) {
   for (const LawCase& law : laws()) {
     SCOPED_TRACE(law.name);
     Tensor2<2> g;
-    g << 0.0, 1.3, 0.0, 0.0;  // u = (γ̇ y, 0): ε̄̇ = γ̇/√3
+    g << 0.0, 1.3, 0.0, 0.0; // u = (γ̇ y, 0): ε̄̇ = γ̇/√3
     check_homogeneous_flow(law.law, GetParam(), g, physics::ViscousStrain::Full);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Q1AndQ2, HomogeneousFlow, ::testing::Values(1, 2));
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

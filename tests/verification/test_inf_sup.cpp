@@ -15,21 +15,17 @@ TEST(InfSup, StablePairsStayBoundedAndUnstableOnesDoNot) {
   // does not fall as h halves (a 10 % margin for the pre-asymptotic rungs).
   for (Row row : {Q2P1disc, Q2P0, TaylorHood}) {
     SCOPED_TRACE(inf_sup_pairs()[row].name);
-    for (const auto& estimate : table[row])
-      EXPECT_EQ(estimate.n_null_modes, 1);
+    for (const auto& estimate : table[row]) EXPECT_EQ(estimate.n_null_modes, 1);
     EXPECT_GT(table[row][1].beta, 0.9 * table[row][0].beta);
     EXPECT_GT(table[row][1].beta, 0.05);
   }
   // Q1–P0: the checkerboard is a spurious null mode, and the rest decays with h.
-  for (const auto& estimate : table[Q1P0])
-    EXPECT_GE(estimate.n_null_modes, 2);
+  for (const auto& estimate : table[Q1P0]) EXPECT_GE(estimate.n_null_modes, 2);
   EXPECT_LT(table[Q1P0][1].beta, 0.75 * table[Q1P0][0].beta);
   // Q1–Q1 (equal order) has spurious pressure modes.
-  for (const auto& estimate : table[Q1Q1])
-    EXPECT_GE(estimate.n_null_modes, 2);
+  for (const auto& estimate : table[Q1Q1]) EXPECT_GE(estimate.n_null_modes, 2);
   // The macro filter removes the checkerboard from the null space.
-  for (const auto& estimate : table[Q1P0Filtered])
-    EXPECT_EQ(estimate.n_null_modes, 1);
+  for (const auto& estimate : table[Q1P0Filtered]) EXPECT_EQ(estimate.n_null_modes, 1);
 }
 
 } // namespace

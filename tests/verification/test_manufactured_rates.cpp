@@ -20,8 +20,8 @@ TEST_P(ManufacturedRates, ObservedOrdersMatchTheoremOnFinestPair) {
   const int order = fem::element_order(element);
   // Three rungs with ratio 2, small enough to run in about a second and fine
   // enough to be in the asymptotic range (docs/verification.md shows longer ladders).
-  const std::vector<Real> sizes =
-      order == 1 ? std::vector<Real>{1.0 / 8, 1.0 / 16, 1.0 / 32} : std::vector<Real>{1.0 / 4, 1.0 / 8, 1.0 / 16};
+  const std::vector<Real> sizes = order == 1 ? std::vector<Real>{1.0 / 8, 1.0 / 16, 1.0 / 32}
+                                             : std::vector<Real>{1.0 / 4, 1.0 / 8, 1.0 / 16};
   const post::StudyTable table = testing::mesh_ladder(sizes, [&](Real size) {
     return testing::manufactured_case(element, size, distortion, nonlinear);
   });
@@ -60,5 +60,5 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::Bool()),
     name_of);
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

@@ -140,8 +140,8 @@ TEST(MixedFormulation, UzawaStepsStopAtTheirRoundOffFloorOnTheWedgeDrawingCase) 
   // above formulation.uzawa_tolerance = 1e-8. Before the floor was recognised every
   // secant step spent all its Uzawa steps and the run took minutes.
   const std::string path = std::string(FORMFLOW_SOURCE_DIR) + "/cases/wedge-die-drawing.toml";
-  io::Case case_ = io::load_case(path, {{"formulation.type", "mixed"}, {"penalty.d", "0"},
-                                        {"solver.max_iterations", "150"}});
+  io::Case case_ = io::load_case(
+      path, {{"formulation.type", "mixed"}, {"penalty.d", "0"}, {"solver.max_iterations", "150"}});
   const post::Results results = app::simulate(case_).results;
   ASSERT_TRUE(results.converged());
   // Settled multipliers: the reaction is the total power of the exactly

@@ -12,8 +12,7 @@ namespace formflow {
 namespace {
 
 /// Nodal interpolant of `field` (exact for the linear fields used here).
-template <class Field>
-VectorX interpolate(const mesh::Mesh<2>& mesh, Field field) {
+template <class Field> VectorX interpolate(const mesh::Mesh<2>& mesh, Field field) {
   VectorX u(2 * mesh.n_nodes());
   for (Index node = 0; node < mesh.n_nodes(); ++node)
     u.segment<2>(2 * node) = field(Point<2>(mesh.nodes.col(node)));
@@ -28,17 +27,19 @@ TEST(PatchTest, RigidBodyMotionDissipatesNothing) {
     for (const mesh::Mesh<2>* grid : {&channel, &box}) {
       const assembly::FormingProblem<2> problem(*grid, app::problem_settings(io::Case{}));
       // Rotation by ω = 0.3 about the origin plus a translation.
-      const VectorX rigid = interpolate(*grid, [](const Point<2>& x) {
-        return Point<2>(0.7 - 0.3 * x.y(), -0.2 + 0.3 * x.x());
-      });
+      const VectorX rigid = interpolate(
+          *grid, [](const Point<2>& x) { return Point<2>(0.7 - 0.3 * x.y(), -0.2 + 0.3 * x.x()); });
       const post::PowerTerms power =
           post::compute_powers(problem, rigid, problem.contact_state(rigid));
       EXPECT_LT(power.plastic_dissipation, 1e-20);
       EXPECT_LT(power.viscous_form, 1e-20);
       EXPECT_LT(power.volumetric_penalty, 1e-20);
       // The check can fail: a shear of the same size dissipates.
-      const VectorX shear = interpolate(*grid, [](const Point<2>& x) { return Point<2>(0.3 * x.y(), 0.0); });
-      EXPECT_GT(post::compute_powers(problem, shear, problem.contact_state(shear)).plastic_dissipation, 1e-2);
+      const VectorX shear =
+          interpolate(*grid, [](const Point<2>& x) { return Point<2>(0.3 * x.y(), 0.0); });
+      EXPECT_GT(
+          post::compute_powers(problem, shear, problem.contact_state(shear)).plastic_dissipation,
+          1e-2);
     }
   }
 }
@@ -49,7 +50,7 @@ TEST(PatchTest, UniformExtensionIsReproducedExactlyOnDistortedMeshes) {
       for (bool nonlinear : {false, true}) {
         io::Case case_ = testing::manufactured_case(element, 0.25, distortion, nonlinear);
         case_.manufactured = physics::ManufacturedSolution::Extension;
-        for (int points : {1, 2, 3}) {  // every volumetric rule: ε̇_V(u) = 0 at any point
+        for (int points : {1, 2, 3}) { // every volumetric rule: ε̇_V(u) = 0 at any point
           case_.volumetric_points = points;
           const app::Simulation simulation = app::simulate(case_);
           ASSERT_TRUE(simulation.results.converged());
@@ -64,7 +65,8 @@ TEST(Invariance, TranslationChangesNothing) {
   const io::Case case_ = testing::coarse_benchmark();
   const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size, 2);
   const testing::Solved original = testing::solve_on(mesh, case_);
-  const testing::Solved moved = testing::solve_on(mesh::translated(mesh, Point<2>(37.5, -12.25)), case_);
+  const testing::Solved moved =
+      testing::solve_on(mesh::translated(mesh, Point<2>(37.5, -12.25)), case_);
   ASSERT_TRUE(original.results.converged() && moved.results.converged());
   EXPECT_EQ(original.results.iterations, moved.results.iterations);
   // Round-off in the coordinates (|x| ≈ 40) reaches the solution amplified by the conditioning.
@@ -93,7 +95,7 @@ TEST(SecantIteration, ReachesTheSameAnswerFromDifferentStarts) {
   ASSERT_TRUE(reference.results.converged());
 
   std::vector<testing::Solved> others;
-  for (Real rate : {1e-2, 1e2}) {  // starting viscosity 100× larger / smaller
+  for (Real rate : {1e-2, 1e2}) { // starting viscosity 100× larger / smaller
     io::Case varied = case_;
     varied.solver.initial_rate = rate;
     others.push_back(testing::solve_on(mesh, varied));
@@ -114,5 +116,5 @@ TEST(SecantIteration, ReachesTheSameAnswerFromDifferentStarts) {
   }
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

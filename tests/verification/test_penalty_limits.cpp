@@ -17,7 +17,7 @@ post::StudyTable ladder(const std::string& key, const std::vector<Real>& values,
   for (Real value : values) {
     io::Case case_ = testing::coarse_benchmark();
     case_.penalty.d_n = d_n;
-    case_.solver.tolerance = 1e-11;  // iteration error ≪ the smallest difference measured
+    case_.solver.tolerance = 1e-11; // iteration error ≪ the smallest difference measured
     // The secant iteration: at d = 1e-6 Newton's relative change stalls at a
     // round-off floor near 5e-11 (condition ~1/d), above this tolerance.
     case_.solver.method = solvers::NonlinearMethod::Secant;
@@ -34,7 +34,7 @@ TEST(PenaltyLimit, VelocityConvergesLinearlyInD) {
   // is 1 % of the smallest difference used for the order.
   const post::StudyTable table = ladder("penalty.d", {1e-2, 1e-3, 1e-4, 1e-6});
   ASSERT_TRUE(table.all_converged());
-  const post::StudyRung& finest_pair = table.rungs[2];  // 1e-3 → 1e-4
+  const post::StudyRung& finest_pair = table.rungs[2]; // 1e-3 → 1e-4
   ASSERT_TRUE(finest_pair.order_v && finest_pair.order_l2);
   EXPECT_NEAR(*finest_pair.order_v, 1.0, 0.15);
   EXPECT_NEAR(*finest_pair.order_l2, 1.0, 0.15);
@@ -58,10 +58,10 @@ TEST(RegularisationLimit, VelocityConvergesAtLeastLikeSqrtDT) {
   // Theorem 3.3 is a bound, ‖u_dT − u‖_V ≤ C √d_T: the observed order must not be below ½.
   const post::StudyTable table = ladder("penalty.dT", {1e-2, 1e-3, 1e-4, 1e-8});
   ASSERT_TRUE(table.all_converged());
-  const post::StudyRung& finest_pair = table.rungs[2];  // 1e-3 → 1e-4
+  const post::StudyRung& finest_pair = table.rungs[2]; // 1e-3 → 1e-4
   ASSERT_TRUE(finest_pair.order_v);
   EXPECT_GE(*finest_pair.order_v, 0.5 - 0.15);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

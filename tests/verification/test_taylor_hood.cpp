@@ -213,11 +213,9 @@ TEST(TaylorHood, ConstantPressureModeIsPinnedOnlyWhenEveryBoundaryVelocityIsPres
   for (Index node = 0; node < mesh.n_nodes(); ++node) {
     const Point<2> x = mesh.nodes.col(node);
     const bool boundary = x[0] < 1e-12 || x[0] > 1 - 1e-12 || x[1] < 1e-12 || x[1] > 1 - 1e-12;
-    if (!boundary)
-      continue;
+    if (!boundary) continue;
     constraints.prescribed[2 * node] = constraints.prescribed[2 * node + 1] = true;
-    if (x[1] > 1 - 1e-12 && x[0] > 1e-12 && x[0] < 1 - 1e-12)
-      constraints.values[2 * node] = 1.0;
+    if (x[1] > 1 - 1e-12 && x[0] > 1e-12 && x[0] < 1 - 1e-12) constraints.values[2 * node] = 1.0;
   }
   constraints.driven_label = mesh::BoundaryLabel::FreeExit; // the lid: y = 1
   assembly::FormingProblem<2> problem(mesh, settings, constraints, {});

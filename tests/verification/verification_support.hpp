@@ -33,8 +33,7 @@ inline io::Case manufactured_case(fem::ElementKind element, Real size, mesh::Dis
 }
 
 /// A study over mesh.size of `make(size)` for each size.
-template <class Make>
-post::StudyTable mesh_ladder(const std::vector<Real>& sizes, Make make) {
+template <class Make> post::StudyTable mesh_ladder(const std::vector<Real>& sizes, Make make) {
   app::StudyPlan plan;
   plan.key = "mesh.size";
   for (Real size : sizes) {
@@ -44,7 +43,7 @@ post::StudyTable mesh_ladder(const std::vector<Real>& sizes, Make make) {
   return app::run_study(plan, false);
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing
 
 #include "formflow/app/simulation.hpp"
 #include "formflow/post/post_process.hpp"
@@ -85,4 +84,4 @@ inline io::Case coarse_benchmark() {
   return case_;
 }
 
-}  // namespace formflow::testing
+} // namespace formflow::testing

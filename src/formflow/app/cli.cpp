@@ -45,8 +45,8 @@ int run_case(const Options& options) {
   const bool show = !options.quiet && !options.json;
   if (show) {
     const std::string mesh_text = case_.mesh_source == mesh::MeshSource::File
-                                 ? "mesh " + case_.mesh_file
-                                 : fmt::format("mesh h = {:.6g}", case_.mesh_size);
+                                      ? "mesh " + case_.mesh_file
+                                      : fmt::format("mesh h = {:.6g}", case_.mesh_size);
     fmt::print("formflow {}: {} {} {}, volumetric rule {}x{}, mu = {:.6g}\n", FORMFLOW_VERSION,
                case_.source, fem::element_name(case_.element), mesh_text, case_.volumetric_points,
                case_.volumetric_points, case_.friction.mu);
@@ -61,7 +61,9 @@ int run_case(const Options& options) {
   if (options.json) fmt::print("{}\n", io::summary_json(case_, results));
   const std::string reason(solvers::stop_reason_name(results.stop_reason));
   if (!results.converged()) {
-    fmt::print(stderr, "formflow: NOT CONVERGED ({}) after {} iterations; results in {} are marked converged: false\n",
+    fmt::print(stderr,
+               "formflow: NOT CONVERGED ({}) after {} iterations; results in {} are marked "
+               "converged: false\n",
                reason, results.iterations, options.output_directory);
     return NotConverged;
   }
@@ -70,20 +72,21 @@ int run_case(const Options& options) {
                "pressure: ram reaction {:.6f}  power balance {:.6f}  total power {:.6f}  "
                "mean -sigma_H near ram {:.6f}\nresults written to {}\n",
                results.method, case_.solver.tolerance, results.iterations,
-               results.pressure.ram_reaction,
-               results.pressure.power_balance, results.pressure.total_power,
-               results.pressure.mean_hydrostatic_near_ram, options.output_directory);
+               results.pressure.ram_reaction, results.pressure.power_balance,
+               results.pressure.total_power, results.pressure.mean_hydrostatic_near_ram,
+               options.output_directory);
   if (show && !results.coarse_iterations.empty())
     fmt::print("coarse start (solver.coarse_levels): mesh.size {} took {} Newton iterations "
                "(not counted above; their time is in the solver phases)\n",
-               fmt::join(results.coarse_mesh_sizes, ", "), fmt::join(results.coarse_iterations, ", "));
+               fmt::join(results.coarse_mesh_sizes, ", "),
+               fmt::join(results.coarse_iterations, ", "));
   if (show && simulation.errors)
     fmt::print("manufactured solution: error V-norm {:.6e}  L2 {:.6e}  hydrostatic L2 {:.6e}\n",
                simulation.errors->v_norm, simulation.errors->l2, simulation.errors->hydrostatic_l2);
   return Ok;
 }
 
-}  // namespace
+} // namespace
 
 int run_cli(int argc, char** argv) {
   CLI::App app{"formflow: steady-state metal forming (extrusion, drawing) by the finite element "
@@ -96,7 +99,8 @@ int run_cli(int argc, char** argv) {
                       ->footer("Example: formflow run cases/paper-q2-2x2-mesh2.toml -o results/q2 "
                                "--set friction.mu=0.1");
   run->add_option("case", options.case_path, "Case file (TOML); omitted: the paper's benchmark");
-  run->add_option("-o,--output", options.output_directory, "Output directory")->capture_default_str();
+  run->add_option("-o,--output", options.output_directory, "Output directory")
+      ->capture_default_str();
   run->add_option("--set", options.assignments, "Override a key, e.g. --set mesh.size=0.5")
       ->allow_extra_args(false);
   run->add_flag("-q,--quiet", options.quiet, "No monitor lines");
@@ -119,10 +123,12 @@ int run_cli(int argc, char** argv) {
                    "The last rung of a ladder that keeps the mesh (penalty.d, penalty.dT, "
                    "friction.radius, ...) is the reference u_ref of the difference norms.\n"
                    "Exit codes: 0 ok, 2 bad input (nothing written), 3 a rung did not converge.");
-  study->add_option("case", study_options.case_path, "Case file (TOML); omitted: the paper's benchmark");
+  study->add_option("case", study_options.case_path,
+                    "Case file (TOML); omitted: the paper's benchmark");
   study->add_option("--vary", study_options.vary, "key=v1,v2,... (values may be fractions n/m)")
       ->required();
-  study->add_option("--set", study_assignments, "Override a key in every rung")->allow_extra_args(false);
+  study->add_option("--set", study_assignments, "Override a key in every rung")
+      ->allow_extra_args(false);
   study->add_option("-o,--output", study_options.output_directory, "Output directory")
       ->capture_default_str();
   study->add_flag("--rcond", study_options.estimate_condition,
@@ -141,7 +147,8 @@ int run_cli(int argc, char** argv) {
   try {
     if (*run) return run_case(options);
     if (*check) {
-      const io::Case case_ = io::load_case(options.case_path, parse_assignments(options.assignments));
+      const io::Case case_ =
+          io::load_case(options.case_path, parse_assignments(options.assignments));
       // Meshing (or reading mesh.file) is part of the check: its errors are input errors too.
       const mesh::Mesh<2> mesh = io::load_mesh(case_);
       fmt::print("{}: valid ({} cells, {} nodes)\n", case_.source, mesh.n_cells(), mesh.n_nodes());
@@ -165,4 +172,4 @@ int run_cli(int argc, char** argv) {
   return BadInput;
 }
 
-}  // namespace formflow::app
+} // namespace formflow::app

@@ -10,4 +10,4 @@ enum ExitCode : int { Ok = 0, InternalFailure = 1, BadInput = 2, NotConverged = 
 /// Parses the arguments, runs the subcommand and returns the process exit code.
 int run_cli(int argc, char** argv);
 
-}  // namespace formflow::app
+} // namespace formflow::app

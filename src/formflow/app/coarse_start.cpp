@@ -36,7 +36,7 @@ bool structured_size_fits(const io::Case& case_, Real size) {
   return mesh::cells_along(g.exit_half_height, size) < mesh::cells_along(g.entry_half_height, size);
 }
 
-}  // namespace
+} // namespace
 
 std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<2>& fine,
                                         PhaseTimes& times) {
@@ -89,4 +89,4 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
   return start;
 }
 
-}  // namespace formflow::app
+} // namespace formflow::app

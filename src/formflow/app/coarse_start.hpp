@@ -14,10 +14,10 @@ namespace formflow::app {
 
 /// The coarse levels' work, reported beside the fine mesh's own iterations.
 struct CoarseStart {
-  VectorX velocity;                   ///< the coarse solution at the fine mesh's nodes
-  std::vector<Real> mesh_sizes;       ///< coarsest first
-  std::vector<int> iterations;        ///< Newton iterations per coarse level, coarsest first
-  bool converged = true;              ///< every coarse level reached δ
+  VectorX velocity;             ///< the coarse solution at the fine mesh's nodes
+  std::vector<Real> mesh_sizes; ///< coarsest first
+  std::vector<int> iterations;  ///< Newton iterations per coarse level, coarsest first
+  bool converged = true;        ///< every coarse level reached δ
 };
 
 /// Nested iteration (solver.coarse_levels = L > 0): solves `case_` with Newton on
@@ -38,4 +38,4 @@ struct CoarseStart {
 std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<2>& fine,
                                         PhaseTimes& times);
 
-}  // namespace formflow::app
+} // namespace formflow::app

@@ -36,8 +36,8 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
   {
     ScopedTimer timer(results.timing, "setup");
     problem = std::make_unique<assembly::FormingProblem<2>>(
-        simulation.mesh, settings, assembly::make_boundary_constraints<2>(simulation.mesh, velocity),
-        body_force);
+        simulation.mesh, settings,
+        assembly::make_boundary_constraints<2>(simulation.mesh, velocity), body_force);
   }
   auto solver = solvers::make_cholmod_solver();
   solvers::SecantOutcome outcome =
@@ -46,13 +46,14 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());
   post::evaluate_results(*problem, outcome.velocity, results);
-  simulation.errors = post::error_norms<2>(
-      *problem, outcome.velocity,
-      {velocity, [field](const Point<2>& x) { return field.gradient(x); }});
-  if (estimate_condition) simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
-  results.timing.add("total",
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  simulation.errors =
+      post::error_norms<2>(*problem, outcome.velocity,
+                           {velocity, [field](const Point<2>& x) { return field.gradient(x); }});
+  if (estimate_condition)
+    simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
+  results.timing.add(
+      "total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return simulation;
 }
 
-}  // namespace formflow::app
+} // namespace formflow::app

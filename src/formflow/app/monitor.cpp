@@ -35,4 +35,4 @@ void Monitor::operator()(const solvers::IterationRecord& record) {
   std::fflush(out_);
 }
 
-}  // namespace formflow::app
+} // namespace formflow::app

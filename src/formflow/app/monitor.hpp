@@ -13,16 +13,16 @@ namespace formflow::app {
 /// is estimated from the observed contraction of the relative change over the
 /// last few iterations (one step's ratio is too noisy to extrapolate).
 class Monitor {
- public:
+public:
   Monitor(std::FILE* out, Real tolerance) : out_(out), tolerance_(tolerance) {}
   void header() const;
   void operator()(const solvers::IterationRecord& record);
 
- private:
+private:
   std::FILE* out_;
   Real tolerance_;
-  std::deque<Real> recent_changes_;  ///< the last few relative changes, oldest first
+  std::deque<Real> recent_changes_; ///< the last few relative changes, oldest first
   Real elapsed_ = 0.0;
 };
 
-}  // namespace formflow::app
+} // namespace formflow::app

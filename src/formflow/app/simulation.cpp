@@ -35,7 +35,8 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   settings.penalty = case_.penalty;
   settings.friction = case_.friction;
   // Newton's exact-friction loop has its own augmentation (friction.newton_augmentation).
-  if (exact_friction_by_newton(case_)) settings.friction.augmentation = case_.friction.newton_augmentation;
+  if (exact_friction_by_newton(case_))
+    settings.friction.augmentation = case_.friction.newton_augmentation;
   settings.volumetric_points = case_.volumetric_points;
   settings.initial_rate = case_.solver.initial_rate;
   settings.symmetry = case_.symmetry;
@@ -63,7 +64,8 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   std::unique_ptr<assembly::FormingProblem<2>> problem;
   {
     ScopedTimer timer(results.timing, "setup");
-    problem = std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, problem_settings(case_));
+    problem =
+        std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, problem_settings(case_));
   }
   // Mixed formulation and exact constraints (issue 5): pressures condensed cell
   // by cell keep the velocity system SPD, so CHOLMOD serves every formulation.
@@ -140,10 +142,11 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());
   post::evaluate_results(*problem, outcome.velocity, results, &multipliers);
-  if (estimate_condition) simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
-  results.timing.add("total",
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (estimate_condition)
+    simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
+  results.timing.add(
+      "total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return simulation;
 }
 
-}  // namespace formflow::app
+} // namespace formflow::app

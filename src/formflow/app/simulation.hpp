@@ -47,4 +47,4 @@ bool exact_friction_by_newton(const io::Case& case_);
 /// CHOLMOD rcond of the secant matrix K(u) of `problem` at velocity `u`.
 Real condition_at(const assembly::FormingProblem<2>& problem, const VectorX& u);
 
-}  // namespace formflow::app
+} // namespace formflow::app

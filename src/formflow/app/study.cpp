@@ -51,11 +51,11 @@ bool same_mesh(const mesh::Mesh<2>& a, const mesh::Mesh<2>& b) {
 post::CornerProfile die_corner_profile(const io::Case& case_, const Simulation& simulation) {
   const assembly::FormingProblem<2> problem(simulation.mesh, problem_settings(case_));
   const Point<2> corner(case_.geometry.container_length, case_.geometry.exit_half_height);
-  return post::corner_profile<2>(problem, simulation.results.fields.velocity, corner,
-                                 0.01, case_.geometry.exit_half_height, 5);
+  return post::corner_profile<2>(problem, simulation.results.fields.velocity, corner, 0.01,
+                                 case_.geometry.exit_half_height, 5);
 }
 
-}  // namespace
+} // namespace
 
 StudyPlan plan_study(const std::string& case_path, const std::string& vary,
                      const std::vector<io::Override>& overrides) {
@@ -121,7 +121,8 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
     rung.error = simulation.errors;
     rung.reciprocal_condition = simulation.reciprocal_condition;
     // The re-entrant corner (L_c, H_out) exists only for the square die of SPEC §4.
-    if (plan.key == "mesh.size" && plan.cases[k].manufactured == physics::ManufacturedSolution::None &&
+    if (plan.key == "mesh.size" &&
+        plan.cases[k].manufactured == physics::ManufacturedSolution::None &&
         plan.cases[k].geometry.die == mesh::DieShape::Square)
       rung.corner = die_corner_profile(plan.cases[k], simulation);
     table.rungs.push_back(rung);
@@ -132,7 +133,8 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
   // against the last one, which the user makes the reference (smallest d).
   const Simulation& last = simulations.back();
   bool common_mesh = true;
-  for (const Simulation& simulation : simulations) common_mesh &= same_mesh(simulation.mesh, last.mesh);
+  for (const Simulation& simulation : simulations)
+    common_mesh &= same_mesh(simulation.mesh, last.mesh);
   if (common_mesh) {
     const assembly::FormingProblem<2> problem(last.mesh, problem_settings(plan.cases.back()));
     for (std::size_t k = 0; k + 1 < simulations.size(); ++k)
@@ -142,15 +144,15 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
   post::compute_orders(table);
   const io::Case& first = plan.cases.front();
   if (plan.key == "mesh.size" && first.manufactured != physics::ManufacturedSolution::None) {
-    const int order = fem::element_order(first.element);  // Theorem 4.1, smooth solution
+    const int order = fem::element_order(first.element); // Theorem 4.1, smooth solution
     table.theory_order_v = order;
     table.theory_order_l2 = order + 1;
-  } else if (plan.key == "penalty.d") {  // Theorem 3.4
+  } else if (plan.key == "penalty.d") { // Theorem 3.4
     table.theory_order_v = table.theory_order_l2 = 1.0;
-  } else if (plan.key == "penalty.dT") {  // Theorem 3.3 (a bound)
+  } else if (plan.key == "penalty.dT") { // Theorem 3.3 (a bound)
     table.theory_order_v = table.theory_order_l2 = 0.5;
   }
   return table;
 }
 
-}  // namespace formflow::app
+} // namespace formflow::app

@@ -16,7 +16,7 @@ struct StudyPlan {
   std::string key;
   std::vector<std::string> values;
   std::vector<io::Case> cases;
-  std::string description;  ///< "case, --set overrides" for the plot subtitle
+  std::string description; ///< "case, --set overrides" for the plot subtitle
 };
 
 /// Parses `vary` ("key=v1,v2,..."; a value may be a fraction "10/6") and loads
@@ -34,7 +34,7 @@ StudyPlan plan_study(const std::string& case_path, const std::string& vary,
 post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
                            const std::function<void(const post::StudyRung&)>& on_rung = {});
 
-}  // namespace formflow::app
+} // namespace formflow::app
 
 namespace formflow::app {
 
@@ -54,4 +54,4 @@ struct StudyCommand {
 /// InputError propagates to the caller, which turns it into exit 2.
 int study_command(const StudyCommand& command);
 
-}  // namespace formflow::app
+} // namespace formflow::app

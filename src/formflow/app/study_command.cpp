@@ -18,14 +18,15 @@ std::string cell(const std::optional<Real>& value, const char* format) {
   return fmt::format(fmt::runtime(format), *value);
 }
 
-}  // namespace
+} // namespace
 
 int study_command(const StudyCommand& command) {
   const StudyPlan plan = plan_study(command.case_path, command.vary, command.overrides);
   if (!command.quiet)
-    fmt::print("formflow study of {} over {} rungs ({})\n{:>12} {:>9} {:>5} {:>11} {:>12} {:>12} {:>10}\n",
-               plan.key, plan.values.size(), plan.description, plan.key, "dofs", "its",
-               "pressure", "error/diff V", "error/diff L2", "status");
+    fmt::print(
+        "formflow study of {} over {} rungs ({})\n{:>12} {:>9} {:>5} {:>11} {:>12} {:>12} {:>10}\n",
+        plan.key, plan.values.size(), plan.description, plan.key, "dofs", "its", "pressure",
+        "error/diff V", "error/diff L2", "status");
   auto progress = [&command](const post::StudyRung& rung) {
     if (command.quiet) return;
     const auto& norms = rung.error ? rung.error : rung.difference;
@@ -50,12 +51,13 @@ int study_command(const StudyCommand& command) {
     fmt::print("study written to {}/study.csv, study.png, study.svg\n", command.output_directory);
   }
   if (!table.all_converged()) {
-    fmt::print(stderr, "formflow: NOT CONVERGED: some rungs of the study did not converge; they "
-                       "are marked in {}/study.csv (stop_reason) and study.png\n",
+    fmt::print(stderr,
+               "formflow: NOT CONVERGED: some rungs of the study did not converge; they "
+               "are marked in {}/study.csv (stop_reason) and study.png\n",
                command.output_directory);
     return NotConverged;
   }
   return Ok;
 }
 
-}  // namespace formflow::app
+} // namespace formflow::app

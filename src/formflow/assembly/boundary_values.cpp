@@ -7,8 +7,9 @@
 namespace formflow::assembly {
 
 template <int dim>
-DirichletConstraints make_boundary_constraints(
-    const mesh::Mesh<dim>& mesh, const std::function<Point<dim>(const Point<dim>&)>& velocity) {
+DirichletConstraints
+make_boundary_constraints(const mesh::Mesh<dim>& mesh,
+                          const std::function<Point<dim>(const Point<dim>&)>& velocity) {
   const Index n_dofs = mesh.n_nodes() * dim;
   DirichletConstraints constraints{std::vector<bool>(n_dofs, false), VectorX::Zero(n_dofs), {}, {}};
   for (int label = 0; label < mesh::n_boundary_labels; ++label)
@@ -22,9 +23,9 @@ DirichletConstraints make_boundary_constraints(
   return constraints;
 }
 
-template DirichletConstraints make_boundary_constraints<2>(
-    const mesh::Mesh<2>&, const std::function<Point<2>(const Point<2>&)>&);
-template DirichletConstraints make_boundary_constraints<3>(
-    const mesh::Mesh<3>&, const std::function<Point<3>(const Point<3>&)>&);
+template DirichletConstraints
+make_boundary_constraints<2>(const mesh::Mesh<2>&, const std::function<Point<2>(const Point<2>&)>&);
+template DirichletConstraints
+make_boundary_constraints<3>(const mesh::Mesh<3>&, const std::function<Point<3>(const Point<3>&)>&);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

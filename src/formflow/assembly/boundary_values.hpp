@@ -11,7 +11,8 @@ namespace formflow::assembly {
 /// Every component of every node on a labelled boundary facet prescribed to
 /// `velocity(x_node)`. No driven dofs: the process force of such a problem is 0.
 template <int dim>
-DirichletConstraints make_boundary_constraints(
-    const mesh::Mesh<dim>& mesh, const std::function<Point<dim>(const Point<dim>&)>& velocity);
+DirichletConstraints
+make_boundary_constraints(const mesh::Mesh<dim>& mesh,
+                          const std::function<Point<dim>(const Point<dim>&)>& velocity);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -21,11 +21,9 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
     : mesh_(mesh), penalty_(penalty), formulation_(formulation) {
   contact_multiplier_.assign(n_contact_points, 0.0);
   contact_weight_.assign(n_contact_points, 0.0);
-  if (!has_pressure_space())
-    return;
+  if (!has_pressure_space()) return;
   n_pressure_ = fem::pressure_functions_per_cell<dim>(formulation.pressure);
-  if (has_global_pressure())
-    number_vertices();
+  if (has_global_pressure()) number_vertices();
   const int n_local = mesh.nodes_per_cell() * dim;
   fem::CellValues<dim> values(mesh.order, full_rule);
   typename fem::CellValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
@@ -67,19 +65,16 @@ template <int dim> void ConstraintMultipliers<dim>::number_vertices() {
       for (int k = 0; k < dim; ++k, stride *= mesh_.order + 1)
         local += ((i >> k) & 1) * mesh_.order * stride;
       Index& dof = vertex_dof[mesh_.cells(local, cell)];
-      if (dof < 0)
-        dof = n_pressure_dofs_++;
+      if (dof < 0) dof = n_pressure_dofs_++;
       pressure_dofs_.push_back(dof);
     }
   pressure_ = VectorX::Zero(n_pressure_dofs_);
 }
 
-template <int dim>
-VectorX ConstraintMultipliers<dim>::cell_pressure(Index cell) const {
+template <int dim> VectorX ConstraintMultipliers<dim>::cell_pressure(Index cell) const {
   VectorX local(n_pressure_);
   const auto dofs = cell_pressure_dofs(cell);
-  for (int i = 0; i < n_pressure_; ++i)
-    local[i] = pressure_[dofs[i]];
+  for (int i = 0; i < n_pressure_; ++i) local[i] = pressure_[dofs[i]];
   return local;
 }
 
@@ -104,14 +99,15 @@ void ConstraintMultipliers<dim>::add_cell_terms(Index cell, std::span<const Real
 }
 
 template <int dim>
-void ConstraintMultipliers<dim>::add_cell_force(Index cell, const Eigen::Ref<const VectorX>& velocity,
+void ConstraintMultipliers<dim>::add_cell_force(Index cell,
+                                                const Eigen::Ref<const VectorX>& velocity,
                                                 Eigen::Ref<VectorX> force) const {
   FF_ASSERT(is_condensed_penalty(), "the force of the condensed pressure needs d > 0");
   // At most 8 pressure functions per cell (Q1disc in 3D): no heap in the cell loop.
   using CellPressure = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 8, 1>;
   const CellPressure divergence = divergence_[cell] * velocity;
   const CellPressure pressure = inverse_mass_[cell] * divergence / penalty_.d;
-  force.noalias() += divergence_[cell].transpose() * pressure;  // Bᵀ c, c = (1/d) M⁻¹ B u
+  force.noalias() += divergence_[cell].transpose() * pressure; // Bᵀ c, c = (1/d) M⁻¹ B u
 }
 
 template <int dim>
@@ -164,20 +160,17 @@ Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> 
       change_norm += step * step * contact_weight_[k];
       norm += contact_multiplier_[k] * contact_multiplier_[k] * contact_weight_[k];
     }
-    if (norm > 0)
-      change = std::max(change, std::sqrt(change_norm / norm));
+    if (norm > 0) change = std::max(change, std::sqrt(change_norm / norm));
   }
   return change;
 }
 
 template <int dim>
 VectorX ConstraintMultipliers<dim>::pressure_coefficients(Index cell, const VectorX& u) const {
-  if (has_global_pressure())
-    return cell_pressure(cell); // solved for, not a function of u
+  if (has_global_pressure()) return cell_pressure(cell); // solved for, not a function of u
   const VectorX projected_divergence =
       inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u));
-  if (is_exact_pressure())
-    return multiplier_[cell] + augmentation_[cell] * projected_divergence;
+  if (is_exact_pressure()) return multiplier_[cell] + augmentation_[cell] * projected_divergence;
   return projected_divergence / penalty_.d; // σ_H = (1/d) P div u (eq. 3.6 in the pressure space)
 }
 

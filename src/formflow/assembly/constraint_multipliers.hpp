@@ -140,7 +140,7 @@ private:
   std::vector<Real> contact_weight_;     ///< JxW per Γ3 point, filled by add_contact_terms
   std::vector<Index> pressure_dofs_;     ///< global pressure: n_pressure per cell, cell-major
   Index n_pressure_dofs_ = 0;
-  VectorX pressure_;                     ///< global pressure: vertex values of σ_H
+  VectorX pressure_; ///< global pressure: vertex values of σ_H
 };
 
 } // namespace formflow::assembly

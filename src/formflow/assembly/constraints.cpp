@@ -46,7 +46,9 @@ DirichletConstraints make_process_constraints(const mesh::Mesh<dim>& mesh,
 
 template std::vector<Index> nodes_on<2>(const mesh::Mesh<2>&, mesh::BoundaryLabel);
 template std::vector<Index> nodes_on<3>(const mesh::Mesh<3>&, mesh::BoundaryLabel);
-template DirichletConstraints make_process_constraints<2>(const mesh::Mesh<2>&, const physics::Process&);
-template DirichletConstraints make_process_constraints<3>(const mesh::Mesh<3>&, const physics::Process&);
+template DirichletConstraints make_process_constraints<2>(const mesh::Mesh<2>&,
+                                                          const physics::Process&);
+template DirichletConstraints make_process_constraints<3>(const mesh::Mesh<3>&,
+                                                          const physics::Process&);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -11,8 +11,8 @@ namespace formflow::assembly {
 
 /// Dirichlet data on the full dof vector. The process moves material in +x.
 struct DirichletConstraints {
-  std::vector<bool> prescribed;  ///< per dof
-  VectorX values;                ///< per dof; meaningful where prescribed
+  std::vector<bool> prescribed; ///< per dof
+  VectorX values;               ///< per dof; meaningful where prescribed
   /// The dofs carrying the process speed (u_x on Γ1 for extrusion, on Γ5 for
   /// drawing): their summed reaction is the process force.
   std::vector<Index> driven_dofs;
@@ -30,4 +30,4 @@ DirichletConstraints make_process_constraints(const mesh::Mesh<dim>& mesh,
 template <int dim>
 std::vector<Index> nodes_on(const mesh::Mesh<dim>& mesh, mesh::BoundaryLabel label);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

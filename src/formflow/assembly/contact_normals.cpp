@@ -38,12 +38,14 @@ std::vector<Point<dim>> nodal_contact_normals(const mesh::Mesh<dim>& mesh,
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, facet.cell));
     values.reinit(coordinates, facet.local_face);
-    const std::vector<int> face_nodes = mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
+    const std::vector<int> face_nodes =
+        mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
     FF_ASSERT(static_cast<int>(face_nodes.size()) == n_q, "one nodal-rule point per face node");
     for (int q = 0; q < n_q; ++q) {
       const std::size_t k = p * n_q + q;
       const Index node = mesh.cells(face_nodes[q], facet.cell);
-      FF_ASSERT((values.point(q) - mesh.nodes.col(node)).norm() <= 1e-9 * (1.0 + mesh.nodes.col(node).norm()),
+      FF_ASSERT((values.point(q) - mesh.nodes.col(node)).norm() <=
+                    1e-9 * (1.0 + mesh.nodes.col(node).norm()),
                 "nodal-rule points in face-node order");
       face_normal[k] = values.normal(q);
       node_of[k] = node;
@@ -68,7 +70,9 @@ std::vector<Point<dim>> nodal_contact_normals(const mesh::Mesh<dim>& mesh,
   return normals;
 }
 
-template std::vector<Point<2>> nodal_contact_normals<2>(const mesh::Mesh<2>&, std::span<const Index>, Real);
-template std::vector<Point<3>> nodal_contact_normals<3>(const mesh::Mesh<3>&, std::span<const Index>, Real);
+template std::vector<Point<2>> nodal_contact_normals<2>(const mesh::Mesh<2>&,
+                                                        std::span<const Index>, Real);
+template std::vector<Point<3>> nodal_contact_normals<3>(const mesh::Mesh<3>&,
+                                                        std::span<const Index>, Real);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -39,4 +39,4 @@ std::vector<Point<dim>> nodal_contact_normals(const mesh::Mesh<dim>& mesh,
                                               std::span<const Index> contact_facets,
                                               Real corner_angle_degrees);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -18,14 +18,15 @@ bool friction_acts_on(const physics::Friction& friction, mesh::BoundaryLabel lab
          (label == mesh::BoundaryLabel::Die && friction.on_die);
 }
 
-}  // namespace
+} // namespace
 
 /// Alart–Curnier friction at one point, λ_new = proj(λ + r u_T) = s (λ + r u_T), written
 /// for the secant system as the penalty s·r on u_T and the load s·λ, both frozen at the
 /// current iterate. Only the tangential part of λ counts (the normal is fixed, but a
 /// multiplier handed in from elsewhere need not be tangential).
 template <int dim>
-void exact_friction_point(const Point<dim>& multiplier, Real augmentation, ContactPoint<dim>& point) {
+void exact_friction_point(const Point<dim>& multiplier, Real augmentation,
+                          ContactPoint<dim>& point) {
   const Point<dim> lambda = multiplier - multiplier.dot(point.normal) * point.normal;
   const Point<dim> trial = lambda + augmentation * point.tangential_velocity;
   const Real s = physics::coulomb_projection_factor(point.friction_threshold, trial.norm());
@@ -45,11 +46,8 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
 template <int dim>
 FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings,
                                     DirichletConstraints constraints, BodyForce<dim> body_force)
-    : mesh_(mesh),
-      settings_(settings),
-      constraints_(std::move(constraints)),
-      body_force_(std::move(body_force)),
-      full_rule_(fem::gauss_rule<dim>(mesh.order + 1)),
+    : mesh_(mesh), settings_(settings), constraints_(std::move(constraints)),
+      body_force_(std::move(body_force)), full_rule_(fem::gauss_rule<dim>(mesh.order + 1)),
       volumetric_rule_(fem::gauss_rule<dim>(settings.volumetric_points)),
       facet_rule_(settings.contact.normals == ContactNormals::Nodes
                       ? fem::nodal_rule<dim - 1>(mesh.order + 1)
@@ -74,7 +72,8 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
     cell_contact_offsets_.push_back(static_cast<Index>(cell_contact_.size()));
   }
   if (contact_points_at_nodes())
-    contact_normals_ = nodal_contact_normals<dim>(mesh, contact_facets_, settings.contact.corner_angle);
+    contact_normals_ =
+        nodal_contact_normals<dim>(mesh, contact_facets_, settings.contact.corner_angle);
 
   // The mesh never moves: map every cell and Γ3 face once (fem/values_cache.hpp);
   // the loops below run every iteration on this geometry.
@@ -131,9 +130,9 @@ void FormingProblem<dim>::gather(Index cell, const VectorX* u,
 }
 
 template <int dim>
-void FormingProblem<dim>::reinit_contact(fem::FacetValues<dim>& values,
-                                         const typename fem::CellValues<dim>::Gradients& coordinates,
-                                         Index position) const {
+void FormingProblem<dim>::reinit_contact(
+    fem::FacetValues<dim>& values, const typename fem::CellValues<dim>::Gradients& coordinates,
+    Index position) const {
   if (contact_cache_) return contact_cache_->load(position, values);
   reinit(values, coordinates, mesh_.facets[contact_facets_[position]].local_face);
   if (contact_normals_.empty()) return;
@@ -144,8 +143,9 @@ void FormingProblem<dim>::reinit_contact(fem::FacetValues<dim>& values,
 }
 
 template <int dim>
-std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(
-    const VectorX& u, const FrictionMultipliers<dim>* multipliers) const {
+std::vector<ContactPoint<dim>>
+FormingProblem<dim>::contact_state(const VectorX& u,
+                                   const FrictionMultipliers<dim>* multipliers) const {
   fem::FacetValues<dim> facet_values(mesh_.order, facet_rule_);
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<ContactPoint<dim>> state;
@@ -165,12 +165,13 @@ std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(
       point.normal_velocity = velocity.dot(point.normal);
       point.tangential_velocity = velocity - point.normal_velocity * point.normal;
       point.contact_pressure =
-          multipliers_ ? multipliers_->contact_pressure(static_cast<Index>(state.size()), point.normal_velocity)
-                       : point.normal_velocity / settings_.penalty.d_n;  // −σ_N (eq. 3.6)
+          multipliers_ ? multipliers_->contact_pressure(static_cast<Index>(state.size()),
+                                                        point.normal_velocity)
+                       : point.normal_velocity / settings_.penalty.d_n; // −σ_N (eq. 3.6)
       state.push_back(point);
     }
   }
-  if (!average_) return state;  // during construction: geometry only
+  if (!average_) return state; // during construction: geometry only
 
   std::vector<Real> pressure(state.size()), mean;
   for (std::size_t k = 0; k < state.size(); ++k) pressure[k] = state[k].contact_pressure;
@@ -188,9 +189,11 @@ std::vector<ContactPoint<dim>> FormingProblem<dim>::contact_state(
       exact_friction_point(lambda, augmentation(), point);
       continue;
     }
-    point.friction_weight = physics::friction_weight(point.friction_threshold, slip, settings_.friction.d_t);
+    point.friction_weight =
+        physics::friction_weight(point.friction_threshold, slip, settings_.friction.d_t);
     point.friction_traction = point.friction_weight * point.tangential_velocity;
-    point.sticking = physics::is_sticking_regularized(point.friction_threshold, slip, settings_.friction.d_t);
+    point.sticking =
+        physics::is_sticking_regularized(point.friction_threshold, slip, settings_.friction.d_t);
   }
   return state;
 }
@@ -237,8 +240,8 @@ void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
       multipliers_->add_cell_terms(cell, viscosity, local_matrix, local_load);
     else if (!axisymmetric())
       add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
-    assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values, local_matrix,
-                     local_load);
+    assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
+                     local_matrix, local_load);
     plan_->scatter(cell, local_matrix, constraints_.values, system);
     if (multipliers_ && multipliers_->has_cell_loads()) scatter_load(cell, local_load, system);
     if (with_friction && has_exact_friction())
@@ -256,16 +259,16 @@ void FormingProblem<dim>::add_body_force(const fem::CellValues<dim>& values,
   local_load.setZero(values.n_nodes() * dim);
   for (int q = 0; q < values.n_points(); ++q) {
     const Point<dim> force = body_force_(values.point(q));
-    for (int a = 0; a < values.n_nodes(); ++a)  // ∫ f·φ_a e_i dx
+    for (int a = 0; a < values.n_nodes(); ++a) // ∫ f·φ_a e_i dx
       local_load.template segment<dim>(a * dim) += values.shape(q)[a] * values.JxW(q) * force;
   }
 }
 
 template <int dim>
-void FormingProblem<dim>::add_friction_loads(Index cell, const std::vector<ContactPoint<dim>>& state,
-                                             const typename fem::CellValues<dim>::Gradients& coordinates,
-                                             fem::FacetValues<dim>& facet_values,
-                                             LinearSystem& system) const {
+void FormingProblem<dim>::add_friction_loads(
+    Index cell, const std::vector<ContactPoint<dim>>& state,
+    const typename fem::CellValues<dim>::Gradients& coordinates,
+    fem::FacetValues<dim>& facet_values, LinearSystem& system) const {
   // The friction load moves to the right-hand side: F −= ∫_Γ3 s λ_T·v dΓ. On
   // prescribed dofs (the ram corner of the container wall) it is part of the reaction.
   const int n_q = facet_rule_.size();
@@ -289,10 +292,10 @@ void FormingProblem<dim>::add_friction_loads(Index cell, const std::vector<Conta
 }
 
 template <int dim>
-void FormingProblem<dim>::assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
-                                           const typename fem::CellValues<dim>::Gradients& coordinates,
-                                           fem::FacetValues<dim>& facet_values,
-                                           MatrixX& local_matrix, VectorX& local_load) const {
+void FormingProblem<dim>::assemble_contact(
+    Index cell, const std::vector<ContactPoint<dim>>* state,
+    const typename fem::CellValues<dim>::Gradients& coordinates,
+    fem::FacetValues<dim>& facet_values, MatrixX& local_matrix, VectorX& local_load) const {
   const int n_q = facet_rule_.size();
   std::vector<Real> weight(n_q, 0.0);
   for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
@@ -323,19 +326,23 @@ void FormingProblem<dim>::scatter_load(Index cell, const VectorX& local_load,
 }
 
 template <int dim>
-Tensor3 FormingProblem<dim>::strain_rate_at(const fem::CellValues<dim>& values,
-                                            const typename fem::CellValues<dim>::Gradients& velocities,
-                                            int q) const {
+Tensor3
+FormingProblem<dim>::strain_rate_at(const fem::CellValues<dim>& values,
+                                    const typename fem::CellValues<dim>::Gradients& velocities,
+                                    int q) const {
   Tensor2<dim> gradient;
-  with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) {  // fixed sizes: this runs at every point
-    using NodeValues = Eigen::Matrix<Real, dim, decltype(n_nodes)::value>;
-    gradient = physics::velocity_gradient<dim>(Eigen::Map<const NodeValues>(velocities.data(), dim, values.n_nodes()),
-                                               Eigen::Map<const NodeValues>(values.gradients(q).data(), dim, values.n_nodes()));
-  });
+  with_node_count<dim>(
+      values.n_nodes(), [&](auto n_nodes) { // fixed sizes: this runs at every point
+        using NodeValues = Eigen::Matrix<Real, dim, decltype(n_nodes)::value>;
+        gradient = physics::velocity_gradient<dim>(
+            Eigen::Map<const NodeValues>(velocities.data(), dim, values.n_nodes()),
+            Eigen::Map<const NodeValues>(values.gradients(q).data(), dim, values.n_nodes()));
+      });
   Tensor3 rate = physics::strain_rate<dim>(gradient);
   if constexpr (dim == 2)
     if (axisymmetric())
-      physics::add_hoop_rate<dim>(rate, gradient, (velocities * values.shape(q))[1], values.point(q)[1]);
+      physics::add_hoop_rate<dim>(rate, gradient, (velocities * values.shape(q))[1],
+                                  values.point(q)[1]);
   return rate;
 }
 
@@ -361,4 +368,4 @@ Real FormingProblem<dim>::driven_force(const LinearSystem& system, const VectorX
 template class FormingProblem<2>;
 template class FormingProblem<3>;
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

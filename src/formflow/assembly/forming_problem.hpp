@@ -27,25 +27,24 @@ struct ProblemSettings {
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
   physics::Penalty penalty;
   physics::Friction friction;
-  int volumetric_points = 2;  ///< Gauss points per direction of the (1/d) term
-  Real initial_rate = 1.0;    ///< ε̄̇ of the constant viscosity that starts the iteration
-  physics::Symmetry symmetry = physics::Symmetry::Plane;  ///< axisymmetric: dim = 2 only
-  ContactSettings contact;  ///< face or nodal contact normals (assembly/contact_normals.hpp)
+  int volumetric_points = 2; ///< Gauss points per direction of the (1/d) term
+  Real initial_rate = 1.0;   ///< ε̄̇ of the constant viscosity that starts the iteration
+  physics::Symmetry symmetry = physics::Symmetry::Plane; ///< axisymmetric: dim = 2 only
+  ContactSettings contact; ///< face or nodal contact normals (assembly/contact_normals.hpp)
 };
 
 /// State of the contact boundary Γ3 at one face quadrature point for a velocity w.
-template <int dim>
-struct ContactPoint {
-  Index facet = 0;  ///< index into Mesh::facets
+template <int dim> struct ContactPoint {
+  Index facet = 0; ///< index into Mesh::facets
   Point<dim> position = Point<dim>::Zero();
   Point<dim> normal = Point<dim>::Zero();
-  Real weight = 0.0;         ///< JxW
-  Real normal_velocity = 0;  ///< u_N = u·n (> 0: penetration into the die)
-  Point<dim> tangential_velocity = Point<dim>::Zero();  ///< u_T
-  Real contact_pressure = 0;       ///< −σ_N = u_N/d_N
-  Real mean_contact_pressure = 0;  ///< σ̄_N, mollified over radius h
-  Real friction_threshold = 0;     ///< τ_f = μ_f max(σ̄_N, 0); 0 where friction is off
-  Real friction_weight = 0;        ///< τ_f/√(|u_T|² + d_T²); exact friction: s·r (see below)
+  Real weight = 0.0;        ///< JxW
+  Real normal_velocity = 0; ///< u_N = u·n (> 0: penetration into the die)
+  Point<dim> tangential_velocity = Point<dim>::Zero(); ///< u_T
+  Real contact_pressure = 0;                           ///< −σ_N = u_N/d_N
+  Real mean_contact_pressure = 0;                      ///< σ̄_N, mollified over radius h
+  Real friction_threshold = 0; ///< τ_f = μ_f max(σ̄_N, 0); 0 where friction is off
+  Real friction_weight = 0;    ///< τ_f/√(|u_T|² + d_T²); exact friction: s·r (see below)
   /// Exact friction only: the lagged part s·λ_T of the traction, a load in K u = F.
   Point<dim> friction_load = Point<dim>::Zero();
   /// λ_T = friction_weight·u_T + friction_load: the friction traction resisting the
@@ -60,14 +59,14 @@ struct ContactPoint {
 /// and τ_f = point.friction_threshold: friction_traction = proj(λ̂_T + r u_T) = s t,
 /// friction_weight = s r, friction_load = s λ̂_T, sticking = |t| ≤ τ_f (τ_f > 0).
 template <int dim>
-void exact_friction_point(const Point<dim>& multiplier, Real augmentation, ContactPoint<dim>& point);
+void exact_friction_point(const Point<dim>& multiplier, Real augmentation,
+                          ContactPoint<dim>& point);
 
 /// Dual variables of the primal–dual Newton linearisation (assembly/newton_system.cpp):
 /// the viscous stress w ≈ ν ė per cell and full-rule point (cell-major) and the slip
 /// direction λ ≈ u_T/√(|u_T|² + d_T²) per Γ3 point (contact_state() order). Empty:
 /// the primal choice at the current velocity, i.e. the exact tangent.
-template <int dim>
-struct NewtonDuals {
+template <int dim> struct NewtonDuals {
   std::vector<Tensor3> stress;
   std::vector<Point<dim>> slip;
   bool empty() const { return stress.empty(); }
@@ -81,25 +80,24 @@ struct NewtonDuals {
 ///    ė(u):ε̇(φ) over the cell's local dofs (a·dim + i);
 ///  * the nonlocal friction threshold: ∫_Γ3 dτ_f[δu] (u_T/s)·v_T dΓ with
 ///    dτ_f = μ_f dσ̄_N where σ̄_N > 0, kept per Γ3 point as μ_f u_T/s (0 elsewhere).
-template <int dim>
-struct UnsymmetricTangent {
+template <int dim> struct UnsymmetricTangent {
   int n_local = 0;
-  std::vector<Index> cells;         ///< cell of each kept point
-  std::vector<Real> coefficients;   ///< c·JxW per kept point
-  std::vector<Real> rows;           ///< per kept point: divergence row, then ė(u) row
-  std::vector<Point<dim>> threshold_slip;  ///< per Γ3 point (contact_state() order)
-  bool has_friction = false;        ///< some threshold_slip ≠ 0
-  void clear() { cells.clear(), coefficients.clear(), rows.clear(), threshold_slip.clear(), has_friction = false; }
+  std::vector<Index> cells;               ///< cell of each kept point
+  std::vector<Real> coefficients;         ///< c·JxW per kept point
+  std::vector<Real> rows;                 ///< per kept point: divergence row, then ė(u) row
+  std::vector<Point<dim>> threshold_slip; ///< per Γ3 point (contact_state() order)
+  bool has_friction = false;              ///< some threshold_slip ≠ 0
+  void clear() {
+    cells.clear(), coefficients.clear(), rows.clear(), threshold_slip.clear(), has_friction = false;
+  }
   bool empty() const { return cells.empty() && !has_friction; }
 };
 
 /// A volume load f(x) per unit volume (manufactured solutions): adds ∫ f·v dx to F.
-template <int dim>
-using BodyForce = std::function<Point<dim>(const Point<dim>&)>;
+template <int dim> using BodyForce = std::function<Point<dim>(const Point<dim>&)>;
 
-template <int dim>
-class FormingProblem {
- public:
+template <int dim> class FormingProblem {
+public:
   /// The forming process: Dirichlet data from settings.process, no volume load.
   FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings);
   /// Any Dirichlet data and an optional body force (verification problems).
@@ -131,8 +129,7 @@ class FormingProblem {
   /// (r P at stick, s r (P − t̂ t̂ᵀ) at slip), its τ_f derivative t̂ dτ_f into `coupling`.
   void assemble_newton(const VectorX& u, std::span<const Real> thresholds,
                        const NewtonDuals<dim>& duals, VectorX& internal_force,
-                       LinearSystem* tangent = nullptr,
-                       UnsymmetricTangent<dim>* coupling = nullptr,
+                       LinearSystem* tangent = nullptr, UnsymmetricTangent<dim>* coupling = nullptr,
                        const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
 
   /// y_f += N x_f for the coupling N of assemble_newton (free dof vectors).
@@ -162,8 +159,8 @@ class FormingProblem {
 
   /// Γ3 quadrature-point state for the velocity `u` (full dof vector); with exact
   /// friction the traction is proj(λ_T + r u_T) for the given (or zero) multipliers.
-  std::vector<ContactPoint<dim>> contact_state(
-      const VectorX& u, const FrictionMultipliers<dim>* multipliers = nullptr) const;
+  std::vector<ContactPoint<dim>>
+  contact_state(const VectorX& u, const FrictionMultipliers<dim>* multipliers = nullptr) const;
 
   /// Augmentation r of exact friction, friction.augmentation / d_N (stress·time/length).
   Real augmentation() const { return settings_.friction.augmentation / settings_.penalty.d_n; }
@@ -194,7 +191,9 @@ class FormingProblem {
   Index n_dofs() const { return mesh_.n_nodes() * dim; }
   /// True with nodal contact normals: the face rule is fem::nodal_rule, its
   /// points are the face nodes (in face_local_nodes order).
-  bool contact_points_at_nodes() const { return settings_.contact.normals == ContactNormals::Nodes; }
+  bool contact_points_at_nodes() const {
+    return settings_.contact.normals == ContactNormals::Nodes;
+  }
   /// Quadrature rules: full (a-term), volumetric, and faces (Gauss, or the
   /// nodal rule when contact_points_at_nodes()).
   const fem::QuadratureRule<dim>& full_rule() const { return full_rule_; }
@@ -219,24 +218,27 @@ class FormingProblem {
                     const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
   /// Puts cell `cell`'s mapped values at the full and the volumetric rule into
   /// the given values (from the geometry cache: the mesh never moves).
-  void load_cell(Index cell, fem::CellValues<dim>& full_values, fem::CellValues<dim>* volumetric_values) const {
+  void load_cell(Index cell, fem::CellValues<dim>& full_values,
+                 fem::CellValues<dim>* volumetric_values) const {
     full_cache_->load(cell, full_values);
     if (volumetric_values) volumetric_cache_->load(cell, *volumetric_values);
   }
   /// Memory held by the geometry cache (cells at both rules, contact faces).
   std::size_t geometry_cache_bytes() const {
-    return full_cache_->bytes() + volumetric_cache_->bytes() + (contact_cache_ ? contact_cache_->bytes() : 0);
+    return full_cache_->bytes() + volumetric_cache_->bytes() +
+           (contact_cache_ ? contact_cache_->bytes() : 0);
   }
   /// Node coordinates (dim × n) and nodal velocities (dim × n) of one cell.
   void gather(Index cell, const VectorX* u, typename fem::CellValues<dim>::Gradients& coordinates,
               typename fem::CellValues<dim>::Gradients& velocities) const;
 
- private:
+private:
   void update_slip_duals(const VectorX& u, const VectorX& step, bool primal,
                          std::vector<Point<dim>>& slip_duals) const;
   /// Exact friction's trial tractions t = λ̂_T + r u_T at the Γ3 points of `state`.
-  std::vector<Point<dim>> trial_tractions(const std::vector<ContactPoint<dim>>& state,
-                                          const FrictionMultipliers<dim>* friction_multipliers) const;
+  std::vector<Point<dim>>
+  trial_tractions(const std::vector<ContactPoint<dim>>& state,
+                  const FrictionMultipliers<dim>* friction_multipliers) const;
   void update_exact_slip_duals(const VectorX& u, const VectorX& step, bool primal,
                                const FrictionMultipliers<dim>* friction_multipliers,
                                std::vector<Point<dim>>& slip_duals) const;
@@ -255,7 +257,8 @@ class FormingProblem {
   /// Maps `values` to the Γ3 face at `position` (in contact_facets_) and, with
   /// nodal normals, puts them in place of the face normals.
   void reinit_contact(fem::FacetValues<dim>& values,
-                      const typename fem::CellValues<dim>::Gradients& coordinates, Index position) const;
+                      const typename fem::CellValues<dim>::Gradients& coordinates,
+                      Index position) const;
 
   const mesh::Mesh<dim>& mesh_;
   ProblemSettings settings_;
@@ -276,4 +279,4 @@ class FormingProblem {
   ConstraintMultipliers<dim>* multipliers_ = nullptr;
 };
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -38,8 +38,7 @@ PressureNumbering number_pressures(const mesh::Mesh<2>& mesh, fem::PressureSpace
       // Vertex i = (bit 0: ξ side, bit 1: η side) in the lexicographic lattice.
       const int local = (i & 1) * mesh.order + ((i >> 1) & 1) * mesh.order * (mesh.order + 1);
       const auto [entry, inserted] = vertex_dof.emplace(mesh.cells(local, cell), numbering.n_dofs);
-      if (inserted)
-        ++numbering.n_dofs;
+      if (inserted) ++numbering.n_dofs;
       numbering.dofs(i, cell) = entry->second;
     }
   return numbering;
@@ -55,8 +54,7 @@ std::vector<Index> interior_dofs(const mesh::Mesh<2>& mesh, Index& n_free) {
   n_free = 0;
   for (Index node = 0; node < mesh.n_nodes(); ++node)
     if (!on_boundary[node])
-      for (int i = 0; i < 2; ++i)
-        free[fem::dof_of<2>(node, i)] = n_free++;
+      for (int i = 0; i < 2; ++i) free[fem::dof_of<2>(node, i)] = n_free++;
   return free;
 }
 
@@ -71,8 +69,7 @@ std::vector<Macro> macro_elements(const mesh::Mesh<2>& mesh, Real size) {
   std::map<std::pair<long, long>, Macro> macros;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     Point<2> centre = Point<2>::Zero();
-    for (int a = 0; a < mesh.nodes_per_cell(); ++a)
-      centre += mesh.nodes.col(mesh.cells(a, cell));
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a) centre += mesh.nodes.col(mesh.cells(a, cell));
     centre /= mesh.nodes_per_cell();
     const long i = std::lround(centre[0] / size - 0.5), j = std::lround(centre[1] / size - 0.5);
     Macro& macro = macros[{i / 2, j / 2}];
@@ -81,8 +78,7 @@ std::vector<Macro> macro_elements(const mesh::Mesh<2>& mesh, Real size) {
   }
   std::vector<Macro> complete;
   for (auto& [key, macro] : macros)
-    if (macro.cells.size() == 4)
-      complete.push_back(std::move(macro));
+    if (macro.cells.size() == 4) complete.push_back(std::move(macro));
   return complete;
 }
 
@@ -128,8 +124,7 @@ InfSupEstimate inf_sup_constant(const mesh::Mesh<2>& mesh, fem::PressureSpace sp
       const MatrixX grad_grad = grad.transpose() * grad; // ∇φ_a·∇φ_b
       for (int r = 0; r < n_local; ++r) {
         const Index row = free[dofs[r]];
-        if (row < 0)
-          continue;
+        if (row < 0) continue;
         for (int c = 0; c < n_local; ++c) {
           const Index column = free[dofs[c]];
           if (column >= 0 && r % 2 == c % 2)
@@ -174,10 +169,8 @@ VectorX filter_checkerboard(const mesh::Mesh<2>& mesh, Real size, const VectorX&
   VectorX filtered = cell_values;
   for (const Macro& macro : macro_elements(mesh, size)) {
     Real amplitude = 0.0; // the macro's checkerboard component (cells of equal area)
-    for (int k = 0; k < 4; ++k)
-      amplitude += macro.signs[k] * cell_values[macro.cells[k]];
-    for (int k = 0; k < 4; ++k)
-      filtered[macro.cells[k]] -= amplitude * macro.signs[k];
+    for (int k = 0; k < 4; ++k) amplitude += macro.signs[k] * cell_values[macro.cells[k]];
+    for (int k = 0; k < 4; ++k) filtered[macro.cells[k]] -= amplitude * macro.signs[k];
   }
   return filtered;
 }

@@ -46,7 +46,7 @@ void add_friction_load_force(const fem::FacetValues<dim>& values,
   }
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 std::vector<Real> FormingProblem<dim>::friction_thresholds(const VectorX& w) const {
@@ -57,10 +57,10 @@ std::vector<Real> FormingProblem<dim>::friction_thresholds(const VectorX& w) con
 }
 
 template <int dim>
-void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real> thresholds,
-                                          const NewtonDuals<dim>& duals, VectorX& internal_force,
-                                          LinearSystem* tangent, UnsymmetricTangent<dim>* coupling,
-                                          const FrictionMultipliers<dim>* friction_multipliers) const {
+void FormingProblem<dim>::assemble_newton(
+    const VectorX& u, std::span<const Real> thresholds, const NewtonDuals<dim>& duals,
+    VectorX& internal_force, LinearSystem* tangent, UnsymmetricTangent<dim>* coupling,
+    const FrictionMultipliers<dim>* friction_multipliers) const {
   // The penalty problem, friction regularised or exact with frozen multipliers
   // (null: λ̂ = 0), no loads; the mixed formulation only with its pressure
   // condensed at d > 0 (a fixed matrix per cell: no multiplier loop).
@@ -85,7 +85,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
     if (coupling) coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
     const bool given = friction_multipliers && !friction_multipliers->traction.empty();
     for (std::size_t k = 0; k < state.size(); ++k) {
-      if (state[k].friction_threshold <= 0 && thresholds[k] <= 0) continue;  // friction off here
+      if (state[k].friction_threshold <= 0 && thresholds[k] <= 0) continue; // friction off here
       const bool own_threshold_positive = state[k].friction_threshold > 0;
       state[k].friction_threshold = thresholds[k];
       exact_friction_point(given ? friction_multipliers->traction[k] : Point<dim>::Zero(),
@@ -121,7 +121,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
   const int n_local = mesh_.nodes_per_cell() * dim;
   MatrixX local_tangent(n_local, n_local);
   CellVector local_force(n_local), divergence_row(n_local), deviator_row(n_local);
-  VectorX unused_load(n_local);  // contact loads come only from multipliers, absent here
+  VectorX unused_load(n_local); // contact loads come only from multipliers, absent here
   const int n_q = full_rule_.size(), n_face_q = facet_rule_.size();
   std::vector<Real> viscosity(n_q), coefficient_a(n_q), coefficient_b(n_q), weight(n_face_q);
   std::vector<Tensor3> rates(n_q), deviators(n_q), cell_duals(n_q);
@@ -141,7 +141,8 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       const auto [secant, derivative] = settings_.law.secant_viscosity_and_derivative(eps_bar_dot);
       viscosity[q] = secant;
       deviators[q] = physics::deviator(rates[q]);
-      cell_duals[q] = duals.empty() ? Tensor3(viscosity[q] * deviators[q]) : duals.stress[cell * n_q + q];
+      cell_duals[q] =
+          duals.empty() ? Tensor3(viscosity[q] * deviators[q]) : duals.stress[cell * n_q + q];
       // a = (4/9) σ_p′/ε̄̇², b = −(4/9)/ε̄̇² (kernels/tangent_kernels.hpp); at ε̄̇ = 0 the
       // law is on its linear branch and the secant matrix is already the tangent.
       const Real scale = eps_bar_dot > 0 ? 4.0 / 9.0 / (eps_bar_dot * eps_bar_dot) : 0.0;
@@ -155,7 +156,8 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       add_viscous_force<dim>(full_values, viscosity, rates, settings_.viscous_strain, local_force);
       if constexpr (dim == 2) {
         if (axisymmetric()) {
-          add_hoop_viscous_force(full_values, viscosity, rates, settings_.viscous_strain, local_force);
+          add_hoop_viscous_force(full_values, viscosity, rates, settings_.viscous_strain,
+                                 local_force);
           add_volumetric_force_axisymmetric(volumetric_values, settings_.penalty.d, velocities,
                                             local_force);
         }
@@ -169,9 +171,9 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
         reinit_contact(facet_values, coordinates, position);
         for (int q = 0; q < n_face_q && with_friction; ++q)
           weight[q] = state[position * n_face_q + q].friction_weight;
-        add_contact_force<dim>(facet_values, settings_.penalty.d_n, velocities,
-                               with_friction ? std::span<const Real>(weight) : std::span<const Real>(),
-                               local_force);
+        add_contact_force<dim>(
+            facet_values, settings_.penalty.d_n, velocities,
+            with_friction ? std::span<const Real>(weight) : std::span<const Real>(), local_force);
         if (exact_friction) add_friction_load_force(facet_values, state, position, local_force);
       }
     } else {
@@ -181,19 +183,20 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       if constexpr (dim == 2) {
         if (axisymmetric()) {
           add_hoop_viscous_term(full_values, viscosity, settings_.viscous_strain, local_tangent);
-          add_volumetric_penalty_axisymmetric(volumetric_values, settings_.penalty.d, local_tangent);
+          add_volumetric_penalty_axisymmetric(volumetric_values, settings_.penalty.d,
+                                              local_tangent);
         }
       }
       unused_load.setZero();
-      if (mixed)  // (1/d) Bᵀ M⁻¹ B, as in the secant matrix (case validation: plane only)
+      if (mixed) // (1/d) Bᵀ M⁻¹ B, as in the secant matrix (case validation: plane only)
         multipliers_->add_cell_terms(cell, viscosity, local_tangent, unused_load);
       else if (!axisymmetric())
         add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_tangent);
       assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
                        local_tangent, unused_load);
       local_force.noalias() = local_tangent * local_velocity;
-      for (Index k = cell_contact_offsets_[cell]; exact_friction && k < cell_contact_offsets_[cell + 1];
-           ++k) {
+      for (Index k = cell_contact_offsets_[cell];
+           exact_friction && k < cell_contact_offsets_[cell + 1]; ++k) {
         reinit_contact(facet_values, coordinates, cell_contact_[k]);
         add_friction_load_force(facet_values, state, cell_contact_[k], local_force);
       }
@@ -205,8 +208,8 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       if (!axisymmetric())
         add_viscous_tangent<dim>(full_values, deviators, cell_duals, coefficient_a, coefficient_b,
                                  local_tangent);
-      for (Index k = cell_contact_offsets_[cell]; with_friction && k < cell_contact_offsets_[cell + 1];
-           ++k) {
+      for (Index k = cell_contact_offsets_[cell];
+           with_friction && k < cell_contact_offsets_[cell + 1]; ++k) {
         const Index position = cell_contact_[k];
         reinit_contact(facet_values, coordinates, position);
         for (int q = 0; q < n_face_q && exact_friction; ++q) {
@@ -222,18 +225,21 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
           dual_slip[q] = duals.empty() || !slipping
                              ? slip[q]
                              : Point<dim>(trial_norm * duals.slip[position * n_face_q + q]);
-          friction_coefficient[q] = slipping ? point.friction_weight / (trial_norm * trial_norm) : 0.0;
+          friction_coefficient[q] =
+              slipping ? point.friction_weight / (trial_norm * trial_norm) : 0.0;
         }
         for (int q = 0; q < n_face_q && !exact_friction; ++q) {
           const ContactPoint<dim>& point = state[position * n_face_q + q];
           const Real slip_speed = point.tangential_velocity.norm();
           const Real s2 = slip_speed * slip_speed + settings_.friction.d_t * settings_.friction.d_t;
           slip[q] = point.tangential_velocity;
-          dual_slip[q] = duals.empty() ? slip[q]
-                                       : Point<dim>(std::sqrt(s2) * duals.slip[position * n_face_q + q]);
-          friction_coefficient[q] = point.friction_threshold / (s2 * std::sqrt(s2));  // τ_f/s³
+          dual_slip[q] = duals.empty()
+                             ? slip[q]
+                             : Point<dim>(std::sqrt(s2) * duals.slip[position * n_face_q + q]);
+          friction_coefficient[q] = point.friction_threshold / (s2 * std::sqrt(s2)); // τ_f/s³
         }
-        add_friction_tangent<dim>(facet_values, slip, dual_slip, friction_coefficient, local_tangent);
+        add_friction_tangent<dim>(facet_values, slip, dual_slip, friction_coefficient,
+                                  local_tangent);
       }
       plan_->scatter(cell, local_tangent, constraints_.values, *tangent);
     }
@@ -252,7 +258,7 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       for (int node = 0; node < mesh_.nodes_per_cell(); ++node) {
         divergence_row.template segment<dim>(node * dim) = grad.col(node);
         deviator_row.template segment<dim>(node * dim) = dev * grad.col(node);
-        if (axisymmetric()) {  // the hoop slot: ε̇_θθ(φ_a e_r) = φ_a/r
+        if (axisymmetric()) { // the hoop slot: ε̇_θθ(φ_a e_r) = φ_a/r
           const Real hoop = full_values.shape(q)[node] / full_values.point(q)[1];
           divergence_row[node * dim + 1] += hoop;
           deviator_row[node * dim + 1] += deviators[q](2, 2) * hoop;
@@ -260,8 +266,10 @@ void FormingProblem<dim>::assemble_newton(const VectorX& u, std::span<const Real
       }
       coupling->cells.push_back(cell);
       coupling->coefficients.push_back(c * full_values.JxW(q));
-      coupling->rows.insert(coupling->rows.end(), divergence_row.data(), divergence_row.data() + n_local);
-      coupling->rows.insert(coupling->rows.end(), deviator_row.data(), deviator_row.data() + n_local);
+      coupling->rows.insert(coupling->rows.end(), divergence_row.data(),
+                            divergence_row.data() + n_local);
+      coupling->rows.insert(coupling->rows.end(), deviator_row.data(),
+                            deviator_row.data() + n_local);
     }
   }
 }
@@ -275,7 +283,7 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
   Index last_cell = -1;
   for (std::size_t k = 0; k < coupling.cells.size(); ++k) {
     const Index cell = coupling.cells[k];
-    if (cell != last_cell) {  // points of one cell are stored together
+    if (cell != last_cell) { // points of one cell are stored together
       for (int a = 0; a < n_nodes; ++a)
         for (int i = 0; i < dim; ++i) {
           const Index row = plan_->free_index(fem::dof_of<dim>(mesh_.cells(a, cell), i));
@@ -318,8 +326,7 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
   }
 }
 
-template <int dim>
-Real FormingProblem<dim>::driven_force(const VectorX& internal_force) const {
+template <int dim> Real FormingProblem<dim>::driven_force(const VectorX& internal_force) const {
   Real force = 0.0;
   for (Index dof : constraints_.driven_dofs) force += internal_force[dof];
   return force;
@@ -344,25 +351,26 @@ void FormingProblem<dim>::update_slip_duals(const VectorX& u, const VectorX& ste
 }
 
 template <int dim>
-std::vector<Point<dim>> FormingProblem<dim>::trial_tractions(
-    const std::vector<ContactPoint<dim>>& state,
-    const FrictionMultipliers<dim>* friction_multipliers) const {
+std::vector<Point<dim>>
+FormingProblem<dim>::trial_tractions(const std::vector<ContactPoint<dim>>& state,
+                                     const FrictionMultipliers<dim>* friction_multipliers) const {
   const bool given = friction_multipliers && !friction_multipliers->traction.empty();
   std::vector<Point<dim>> trial(state.size());
   for (std::size_t k = 0; k < state.size(); ++k) {
     const Point<dim>& n = state[k].normal;
-    const Point<dim> lambda =
-        given ? Point<dim>(friction_multipliers->traction[k] - friction_multipliers->traction[k].dot(n) * n)
-              : Point<dim>::Zero();
+    const Point<dim> lambda = given ? Point<dim>(friction_multipliers->traction[k] -
+                                                 friction_multipliers->traction[k].dot(n) * n)
+                                    : Point<dim>::Zero();
     trial[k] = lambda + augmentation() * state[k].tangential_velocity;
   }
   return trial;
 }
 
 template <int dim>
-void FormingProblem<dim>::update_exact_slip_duals(const VectorX& u, const VectorX& step, bool primal,
-                                                  const FrictionMultipliers<dim>* friction_multipliers,
-                                                  std::vector<Point<dim>>& slip_duals) const {
+void FormingProblem<dim>::update_exact_slip_duals(
+    const VectorX& u, const VectorX& step, bool primal,
+    const FrictionMultipliers<dim>* friction_multipliers,
+    std::vector<Point<dim>>& slip_duals) const {
   const std::vector<ContactPoint<dim>> state = contact_state(u), change = contact_state(step);
   const std::vector<Point<dim>> trial = trial_tractions(state, friction_multipliers);
   slip_duals.resize(state.size());
@@ -373,14 +381,15 @@ void FormingProblem<dim>::update_exact_slip_duals(const VectorX& u, const Vector
       lambda.setZero();
       continue;
     }
-    const Point<dim> trial_change = augmentation() * change[k].tangential_velocity;  // δt
+    const Point<dim> trial_change = augmentation() * change[k].tangential_velocity; // δt
     const Real size = trial[k].norm();
     if (size <= threshold) {
-      lambda = (trial[k] + trial_change) / threshold;  // stick: λ = t/τ_f is linear in t
+      lambda = (trial[k] + trial_change) / threshold; // stick: λ = t/τ_f is linear in t
     } else {
       if (primal) lambda = trial[k] / size;
       // Newton on |t| λ − t = 0: λ + δλ = (t + δt)/|t| − λ (t·δt)/|t|².
-      lambda = (trial[k] + trial_change) / size - lambda * (trial[k].dot(trial_change) / (size * size));
+      lambda =
+          (trial[k] + trial_change) / size - lambda * (trial[k].dot(trial_change) / (size * size));
     }
     if (lambda.norm() > 1.0) lambda.normalize();
   }
@@ -399,7 +408,8 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(mesh_.n_cells()) * n_q);
   fem::CellValues<dim> values(mesh_.order, full_rule_);
-  typename fem::CellValues<dim>::Gradients coordinates, velocities, step_velocities, next_velocities;
+  typename fem::CellValues<dim>::Gradients coordinates, velocities, step_velocities,
+      next_velocities;
   const physics::FlowLaw& law = settings_.law;
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
     gather(cell, &u, coordinates, velocities);
@@ -423,7 +433,7 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
         // Newton on ε̄̇ w − σ_p(ε̄̇) ė = 0 at (u, w) along the step:
         // w + δw = ν ė + ν ė(δu) + (σ_p′ ė − w) dε̄̇/ε̄̇.
         const Tensor3 step_dev = physics::deviator(strain_rate_at(values, step_velocities, q));
-        const Real rate_change = 2.0 / 3.0 * dev.cwiseProduct(step_dev).sum() / eps;  // dε̄̇
+        const Real rate_change = 2.0 / 3.0 * dev.cwiseProduct(step_dev).sum() / eps; // dε̄̇
         w = nu * (dev + step_dev) + (nu_derivative * dev - w) * (rate_change / eps);
       } else {
         w = law.secant_viscosity(next_eps) * next_dev;
@@ -453,7 +463,7 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
       const Tensor3 next_dev = physics::deviator(strain_rate_at(values, next_velocities, q));
       const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
       Tensor3& w = duals[cell * n_q + q];
-      if (next_eps <= law.rate1 || next_eps >= law.rate2) {  // linear law: w = ν ė exactly
+      if (next_eps <= law.rate1 || next_eps >= law.rate2) { // linear law: w = ν ė exactly
         w = law.secant_viscosity(next_eps) * next_dev;
         continue;
       }
@@ -474,7 +484,8 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
   const Real d_t = settings_.friction.d_t;
   all_duals.slip.assign(after.size(), Point<dim>::Zero());
   if (has_exact_friction()) {
-    // The traction that secant step used over τ_f: s(previous) t(next)/τ_f = t(next)/max(τ_f, |t|)(previous).
+    // The traction that secant step used over τ_f: s(previous) t(next)/τ_f = t(next)/max(τ_f,
+    // |t|)(previous).
     if (!previous) return;
     const std::vector<Point<dim>> trial_after = trial_tractions(after, friction_multipliers);
     const std::vector<Point<dim>> trial_before = trial_tractions(before, friction_multipliers);
@@ -507,10 +518,12 @@ template std::vector<Real> FormingProblem<2>::friction_thresholds(const VectorX&
 template std::vector<Real> FormingProblem<3>::friction_thresholds(const VectorX&) const;
 template void FormingProblem<2>::assemble_newton(const VectorX&, std::span<const Real>,
                                                  const NewtonDuals<2>&, VectorX&, LinearSystem*,
-                                                 UnsymmetricTangent<2>*, const FrictionMultipliers<2>*) const;
+                                                 UnsymmetricTangent<2>*,
+                                                 const FrictionMultipliers<2>*) const;
 template void FormingProblem<3>::assemble_newton(const VectorX&, std::span<const Real>,
                                                  const NewtonDuals<3>&, VectorX&, LinearSystem*,
-                                                 UnsymmetricTangent<3>*, const FrictionMultipliers<3>*) const;
+                                                 UnsymmetricTangent<3>*,
+                                                 const FrictionMultipliers<3>*) const;
 template void FormingProblem<2>::apply_coupling(const UnsymmetricTangent<2>&, const VectorX&,
                                                 VectorX&) const;
 template void FormingProblem<3>::apply_coupling(const UnsymmetricTangent<3>&, const VectorX&,
@@ -518,4 +531,4 @@ template void FormingProblem<3>::apply_coupling(const UnsymmetricTangent<3>&, co
 template Real FormingProblem<2>::driven_force(const VectorX&) const;
 template Real FormingProblem<3>::driven_force(const VectorX&) const;
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

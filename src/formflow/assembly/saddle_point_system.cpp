@@ -75,8 +75,7 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
   Triplets fixed;
   for (Index column = 0; column < divergence_free_.outerSize(); ++column)
     for (SparseMatrix::InnerIterator it(divergence_free_, column); it; ++it) {
-      if (pinned_ && it.row() == 0)
-        continue;
+      if (pinned_ && it.row() == 0) continue;
       fixed.emplace_back(n_velocity_ + it.row(), column, it.value());
       fixed.emplace_back(column, n_velocity_ + it.row(), it.value());
     }
@@ -84,16 +83,13 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
     for (Index column = 0; column < mass_.outerSize(); ++column)
       for (SparseMatrix::InnerIterator it(mass_, column); it; ++it)
         fixed.emplace_back(n_velocity_ + it.row(), n_velocity_ + column, -d_ * it.value());
-  if (pinned_)
-    fixed.emplace_back(n_velocity_, n_velocity_, 1.0);
-  for (const auto& entry : fixed)
-    entries.emplace_back(entry.row(), entry.col(), 0.0);
+  if (pinned_) fixed.emplace_back(n_velocity_, n_velocity_, 1.0);
+  for (const auto& entry : fixed) entries.emplace_back(entry.row(), entry.col(), 0.0);
   const Index size = n_velocity_ + n_pressure_;
   matrix_ = from_triplets(size, size, entries);
 
   static_values_.assign(static_cast<std::size_t>(matrix_.nonZeros()), 0.0);
-  for (const auto& entry : fixed)
-    static_values_[slot(entry.row(), entry.col())] += entry.value();
+  for (const auto& entry : fixed) static_values_[slot(entry.row(), entry.col())] += entry.value();
   for (Index column = 0; column < lower.outerSize(); ++column)
     for (Index k = lower.outerIndexPtr()[column]; k < lower.outerIndexPtr()[column + 1]; ++k) {
       const Index row = lower.innerIndexPtr()[k];
@@ -118,8 +114,7 @@ template <int dim> void SaddlePointSystem<dim>::fill_matrix(const LinearSystem& 
   const Real* lower = velocity.matrix.valuePtr();
   for (std::size_t k = 0; k < lower_slot_.size(); ++k) {
     values[lower_slot_[k]] += lower[k];
-    if (upper_slot_[k] >= 0)
-      values[upper_slot_[k]] += lower[k];
+    if (upper_slot_[k] >= 0) values[upper_slot_[k]] += lower[k];
   }
 }
 
@@ -129,10 +124,8 @@ VectorX SaddlePointSystem<dim>::rhs(const LinearSystem& velocity, const VectorX&
   rhs.head(n_velocity_) = velocity.rhs;
   // B u − d M (p + δp) = 0 with the prescribed velocities moved across.
   rhs.tail(n_pressure_) = -(divergence_prescribed_ * problem_.constraints().values);
-  if (d_ > 0)
-    rhs.tail(n_pressure_) += d_ * (mass_ * pressure);
-  if (pinned_)
-    rhs[n_velocity_] = 0.0; // δp_0 = 0
+  if (d_ > 0) rhs.tail(n_pressure_) += d_ * (mass_ * pressure);
+  if (pinned_) rhs[n_velocity_] = 0.0; // δp_0 = 0
   return rhs;
 }
 
@@ -148,8 +141,7 @@ void SaddlePointSystem<dim>::add_pressure_load(const VectorX& increment,
 }
 
 template <int dim> void SaddlePointSystem<dim>::fix_pressure_level(VectorX& pressure) const {
-  if (!pinned_)
-    return;
+  if (!pinned_) return;
   pressure.array() -= pressure_weights_.dot(pressure) / pressure_weights_.sum();
 }
 

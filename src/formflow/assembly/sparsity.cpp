@@ -10,7 +10,8 @@ namespace formflow::assembly {
 
 namespace {
 
-SparseMatrix pattern_from(Index rows, Index columns, const std::vector<Eigen::Triplet<Real, Index>>& entries) {
+SparseMatrix pattern_from(Index rows, Index columns,
+                          const std::vector<Eigen::Triplet<Real, Index>>& entries) {
   SparseMatrix pattern(rows, columns);
   pattern.setFromTriplets(entries.begin(), entries.end());
   pattern.makeCompressed();
@@ -26,7 +27,7 @@ Index slot_of(const SparseMatrix& matrix, Index row, Index column) {
   return static_cast<Index>(found - matrix.innerIndexPtr());
 }
 
-}  // namespace
+} // namespace
 
 ScatterPlan::ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, const BlockDofs& blocks)
     : blocks_(blocks), free_index_(n_dofs, -1), prescribed_index_(n_dofs, -1) {
@@ -42,7 +43,8 @@ ScatterPlan::ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, cons
       const Index row_free = free_index_[dofs[a]], row_prescribed = prescribed_index_[dofs[a]];
       for (int b = 0; b < n; ++b) {
         const Index column_free = free_index_[dofs[b]];
-        if (row_free >= 0 && column_free >= row_free) matrix_entries.emplace_back(column_free, row_free, 0.0);
+        if (row_free >= 0 && column_free >= row_free)
+          matrix_entries.emplace_back(column_free, row_free, 0.0);
         if (row_prescribed >= 0) reaction_entries.emplace_back(row_prescribed, dofs[b], 0.0);
       }
     }
@@ -62,11 +64,13 @@ ScatterPlan::ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, cons
     for (int a = 0; a < n; ++a) {
       for (int b = a; b < n; ++b) {
         const Index i = free_index_[dofs[a]], j = free_index_[dofs[b]];
-        slots_.push_back(i >= 0 && j >= 0 ? slot_of(matrix_pattern_, std::max(i, j), std::min(i, j)) : -1);
+        slots_.push_back(i >= 0 && j >= 0 ? slot_of(matrix_pattern_, std::max(i, j), std::min(i, j))
+                                          : -1);
       }
       if (prescribed_index_[dofs[a]] >= 0)
         for (int b = 0; b < n; ++b)
-          reaction_slots_.push_back({a, b, slot_of(reaction_pattern_, prescribed_index_[dofs[a]], dofs[b])});
+          reaction_slots_.push_back(
+              {a, b, slot_of(reaction_pattern_, prescribed_index_[dofs[a]], dofs[b])});
     }
     slot_offsets_.push_back(static_cast<Index>(slots_.size()));
     reaction_offsets_.push_back(static_cast<Index>(reaction_slots_.size()));
@@ -87,8 +91,8 @@ void ScatterPlan::clear(LinearSystem& system) {
   system.prescribed_loads.setZero();
 }
 
-void ScatterPlan::scatter(Index block, const MatrixX& local_matrix, const VectorX& prescribed_values,
-                          LinearSystem& system) const {
+void ScatterPlan::scatter(Index block, const MatrixX& local_matrix,
+                          const VectorX& prescribed_values, LinearSystem& system) const {
   const Index* dofs = blocks_.dofs.data() + blocks_.offsets[block];
   const int n = blocks_.block_size(block);
   FF_ASSERT(local_matrix.rows() == n && local_matrix.cols() == n, "local matrix size");
@@ -101,7 +105,8 @@ void ScatterPlan::scatter(Index block, const MatrixX& local_matrix, const Vector
     if (row < 0) continue;
     // Move the prescribed columns to the right-hand side: F_f −= K_fc u_c (most
     // blocks have none: the list is precomputed, not searched per row).
-    for (Index k = prescribed_local_offsets_[block]; k < prescribed_local_offsets_[block + 1]; ++k) {
+    for (Index k = prescribed_local_offsets_[block]; k < prescribed_local_offsets_[block + 1];
+         ++k) {
       const int b = prescribed_local_[k];
       system.rhs[row] -= local_matrix(a, b) * prescribed_values[dofs[b]];
     }
@@ -127,4 +132,4 @@ VectorX ScatterPlan::expand(const VectorX& free_values, const VectorX& prescribe
   return full;
 }
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -14,7 +14,7 @@ using SparseMatrix = Eigen::SparseMatrix<Real, Eigen::ColMajor, Index>;
 
 /// A list of blocks (cells, contact faces), each a list of global dofs.
 struct BlockDofs {
-  std::vector<Index> offsets{0};  ///< block k owns dofs[offsets[k] .. offsets[k+1])
+  std::vector<Index> offsets{0}; ///< block k owns dofs[offsets[k] .. offsets[k+1])
   std::vector<Index> dofs;
   void add(const std::vector<Index>& block_dofs) {
     dofs.insert(dofs.end(), block_dofs.begin(), block_dofs.end());
@@ -27,9 +27,9 @@ struct BlockDofs {
 /// The linear system K_ff u_f = F_f after eliminating the prescribed dofs, and
 /// the rows K_c· of the prescribed dofs (their reactions are K_c· u).
 struct LinearSystem {
-  SparseMatrix matrix;         ///< K_ff, lower triangle only (symmetric)
-  VectorX rhs;                 ///< F_f = −K_fc u_c (+ loads)
-  SparseMatrix reaction_rows;  ///< K_c·, n_constrained × n_dofs
+  SparseMatrix matrix;        ///< K_ff, lower triangle only (symmetric)
+  VectorX rhs;                ///< F_f = −K_fc u_c (+ loads)
+  SparseMatrix reaction_rows; ///< K_c·, n_constrained × n_dofs
   /// F_c, loads on the prescribed rows (n_constrained): reactions are K_c· u − F_c.
   VectorX prescribed_loads;
 };
@@ -38,7 +38,7 @@ struct LinearSystem {
 /// the mesh never changes, each local entry's storage slot is found once and
 /// every later assembly is a plain indexed add (no sorting, no search).
 class ScatterPlan {
- public:
+public:
   /// `prescribed[dof]` marks Dirichlet dofs; `blocks` are all blocks that will be scattered.
   ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, const BlockDofs& blocks);
 
@@ -65,7 +65,7 @@ class ScatterPlan {
   /// Full dof vector from the free solution and the prescribed values.
   VectorX expand(const VectorX& free_values, const VectorX& prescribed_values) const;
 
- private:
+private:
   struct ReactionSlot {
     int local_row, local_column;
     Index slot;
@@ -74,12 +74,12 @@ class ScatterPlan {
   std::vector<Index> free_index_, prescribed_index_;
   Index n_free_ = 0;
   SparseMatrix matrix_pattern_, reaction_pattern_;
-  std::vector<Index> slot_offsets_;  ///< per block, into slots_
-  std::vector<Index> slots_;  ///< per block: local pairs a ≤ b, slot in K_ff or −1
-  std::vector<Index> prescribed_local_offsets_;  ///< per block, into prescribed_local_
-  std::vector<int> prescribed_local_;  ///< per block: local positions of its prescribed dofs
+  std::vector<Index> slot_offsets_; ///< per block, into slots_
+  std::vector<Index> slots_;        ///< per block: local pairs a ≤ b, slot in K_ff or −1
+  std::vector<Index> prescribed_local_offsets_; ///< per block, into prescribed_local_
+  std::vector<int> prescribed_local_; ///< per block: local positions of its prescribed dofs
   std::vector<Index> reaction_offsets_;
   std::vector<ReactionSlot> reaction_slots_;
 };
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

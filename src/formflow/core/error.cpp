@@ -14,20 +14,16 @@ std::string render(const std::string& file, int line, const std::string& key,
   if (!hint.empty()) text += fmt::format(" ({})", hint);
   return text;
 }
-}  // namespace
+} // namespace
 
 InputError::InputError(std::string file_, int line_, std::string key_, std::string message_,
                        std::string hint_)
-    : std::runtime_error(render(file_, line_, key_, message_, hint_)),
-      file(std::move(file_)),
-      line(line_),
-      key(std::move(key_)),
-      message(std::move(message_)),
-      hint(std::move(hint_)) {}
+    : std::runtime_error(render(file_, line_, key_, message_, hint_)), file(std::move(file_)),
+      line(line_), key(std::move(key_)), message(std::move(message_)), hint(std::move(hint_)) {}
 
-void fail_assertion(const char* condition, const char* file, int line,
-                    const std::string& message) {
-  throw InternalError(fmt::format("{}:{}: assertion `{}` failed: {}", file, line, condition, message));
+void fail_assertion(const char* condition, const char* file, int line, const std::string& message) {
+  throw InternalError(
+      fmt::format("{}:{}: assertion `{}` failed: {}", file, line, condition, message));
 }
 
-}  // namespace formflow
+} // namespace formflow

@@ -12,7 +12,7 @@ namespace formflow {
 /// and event counts ("factorization" calls, "krylov iterations", ...) that say what
 /// the seconds bought.
 class PhaseTimes {
- public:
+public:
   void add(const std::string& phase, double seconds) { seconds_[phase] += seconds; }
   void count(const std::string& event, long n = 1) { counts_[event] += n; }
   long counted(const std::string& event) const {
@@ -26,7 +26,7 @@ class PhaseTimes {
   const std::map<std::string, double>& all() const { return seconds_; }
   const std::map<std::string, long>& all_counts() const { return counts_; }
 
- private:
+private:
   std::map<std::string, double> seconds_;
   std::map<std::string, long> counts_;
 };
@@ -34,7 +34,7 @@ class PhaseTimes {
 /// Adds the time between construction and destruction to `times[phase]` and
 /// counts the entry under the phase's name.
 class ScopedTimer {
- public:
+public:
   ScopedTimer(PhaseTimes& times, std::string phase)
       : times_(times), phase_(std::move(phase)), start_(std::chrono::steady_clock::now()) {
     times_.count(phase_);
@@ -46,10 +46,10 @@ class ScopedTimer {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
 
- private:
+private:
   PhaseTimes& times_;
   std::string phase_;
   std::chrono::steady_clock::time_point start_;
 };
 
-}  // namespace formflow
+} // namespace formflow

@@ -4,7 +4,7 @@
 
 #include "formflow/fem/lagrange.hpp"
 
-#include <Eigen/LU>  // determinant() and inverse() of the Jacobian
+#include <Eigen/LU> // determinant() and inverse() of the Jacobian
 
 namespace formflow::fem {
 
@@ -21,8 +21,7 @@ CellValues<dim>::CellValues(int order, const QuadratureRule<dim>& rule) : weight
   points_.assign(n_q, Point<dim>::Zero());
 }
 
-template <int dim>
-bool CellValues<dim>::reinit(const Gradients& cell_nodes) {
+template <int dim> bool CellValues<dim>::reinit(const Gradients& cell_nodes) {
   bool valid = true;
   for (int q = 0; q < n_points(); ++q) {
     // J_ij = ∂x_i/∂ξ_j = Σ_a X_ia ∂N_a/∂ξ_j
@@ -46,8 +45,7 @@ FacetValues<dim>::FacetValues(int order, const QuadratureRule<dim - 1>& face_rul
   points_.assign(n_q, Point<dim>::Zero());
 }
 
-template <int dim>
-void FacetValues<dim>::reinit(const Gradients& cell_nodes, int local_face) {
+template <int dim> void FacetValues<dim>::reinit(const Gradients& cell_nodes, int local_face) {
   const int axis = local_face / 2;
   const Real side = (local_face % 2 == 0) ? -1.0 : 1.0;
   Point<dim> reference_normal = Point<dim>::Zero();
@@ -60,7 +58,8 @@ void FacetValues<dim>::reinit(const Gradients& cell_nodes, int local_face) {
     tabulate_shape<dim>(order_, xi, shape_[q], reference_gradients);
     const Tensor2<dim> jacobian = cell_nodes * reference_gradients.transpose();
     // Nanson: n dA = det J · J⁻ᵀ N dA_ref.
-    const Point<dim> scaled = jacobian.determinant() * jacobian.transpose().inverse() * reference_normal;
+    const Point<dim> scaled =
+        jacobian.determinant() * jacobian.transpose().inverse() * reference_normal;
     const Real measure = scaled.norm();
     normals_[q] = scaled / measure;
     jxw_[q] = face_rule_.weights[q] * measure;
@@ -73,4 +72,4 @@ template class CellValues<3>;
 template class FacetValues<2>;
 template class FacetValues<3>;
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

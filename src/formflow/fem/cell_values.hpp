@@ -8,16 +8,13 @@
 
 namespace formflow::fem {
 
-template <int dim>
-class CellValuesCache;
-template <int dim>
-class FacetValuesCache;
+template <int dim> class CellValuesCache;
+template <int dim> class FacetValuesCache;
 
 /// Tabulates the reference shape functions once per rule; `reinit` maps them
 /// to one physical cell (isoparametric map x(ξ) = Σ_a X_a N_a(ξ)).
-template <int dim>
-class CellValues {
- public:
+template <int dim> class CellValues {
+public:
   using Gradients = Eigen::Matrix<Real, dim, Eigen::Dynamic>;
 
   CellValues(int order, const QuadratureRule<dim>& rule);
@@ -41,8 +38,8 @@ class CellValues {
     for (int q = 0; q < n_points(); ++q) jxw_[q] *= points_[q][1];
   }
 
- private:
-  friend class CellValuesCache<dim>;  // stores and restores the mapped values (fem/values_cache.hpp)
+private:
+  friend class CellValuesCache<dim>; // stores and restores the mapped values (fem/values_cache.hpp)
   int n_nodes_ = 0;
   std::vector<Real> weights_;
   std::vector<VectorX> shape_;
@@ -54,9 +51,8 @@ class CellValues {
 
 /// Shape values, JxW (surface measure) and outward unit normals on one face
 /// of a cell; `face_rule` is a (dim−1)-dimensional rule placed on the face.
-template <int dim>
-class FacetValues {
- public:
+template <int dim> class FacetValues {
+public:
   using Gradients = Eigen::Matrix<Real, dim, Eigen::Dynamic>;
 
   FacetValues(int order, const QuadratureRule<dim - 1>& face_rule);
@@ -79,8 +75,9 @@ class FacetValues {
   /// until the next reinit. `normal` must be a unit vector.
   void set_normal(int q, const Point<dim>& normal) { normals_[q] = normal; }
 
- private:
-  friend class FacetValuesCache<dim>;  // stores and restores the mapped values (fem/values_cache.hpp)
+private:
+  friend class FacetValuesCache<dim>; // stores and restores the mapped values
+                                      // (fem/values_cache.hpp)
   int order_;
   QuadratureRule<dim - 1> face_rule_;
   std::vector<VectorX> shape_;
@@ -89,4 +86,4 @@ class FacetValues {
   std::vector<Point<dim>> points_;
 };
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

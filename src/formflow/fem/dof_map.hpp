@@ -11,14 +11,12 @@ namespace formflow::fem {
 /// Global dof of component `component` of node `node`: node·dim + component.
 /// Local dofs of a cell follow the same rule with local node numbers, so a
 /// kernel's row a·dim + i is the i-th component at local node a.
-template <int dim>
-constexpr Index dof_of(Index node, int component) {
+template <int dim> constexpr Index dof_of(Index node, int component) {
   return node * dim + component;
 }
 
 /// Global dofs of a list of nodes, node-major.
-template <int dim, typename Nodes>
-std::vector<Index> dofs_of_nodes(const Nodes& nodes) {
+template <int dim, typename Nodes> std::vector<Index> dofs_of_nodes(const Nodes& nodes) {
   std::vector<Index> dofs;
   dofs.reserve(nodes.size() * dim);
   for (Index node : nodes)
@@ -26,4 +24,4 @@ std::vector<Index> dofs_of_nodes(const Nodes& nodes) {
   return dofs;
 }
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

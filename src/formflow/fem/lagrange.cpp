@@ -19,7 +19,7 @@ void basis_1d(int order, Real x, std::array<Real, 3>& value, std::array<Real, 3>
   }
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 void tabulate_shape(int order, const Point<dim>& xi, VectorX& values,
@@ -51,8 +51,7 @@ void tabulate_shape(int order, const Point<dim>& xi, VectorX& values,
   }
 }
 
-template <int dim>
-Point<dim> reference_node(int order, int local) {
+template <int dim> Point<dim> reference_node(int order, int local) {
   Point<dim> xi;
   int rest = local;
   for (int d = 0; d < dim; ++d) {
@@ -62,19 +61,20 @@ Point<dim> reference_node(int order, int local) {
   return xi;
 }
 
-template void tabulate_shape<2>(int, const Point<2>&, VectorX&, Eigen::Matrix<Real, 2, Eigen::Dynamic>&);
-template void tabulate_shape<3>(int, const Point<3>&, VectorX&, Eigen::Matrix<Real, 3, Eigen::Dynamic>&);
+template void tabulate_shape<2>(int, const Point<2>&, VectorX&,
+                                Eigen::Matrix<Real, 2, Eigen::Dynamic>&);
+template void tabulate_shape<3>(int, const Point<3>&, VectorX&,
+                                Eigen::Matrix<Real, 3, Eigen::Dynamic>&);
 template Point<2> reference_node<2>(int, int);
 template Point<3> reference_node<3>(int, int);
 
-}  // namespace formflow::fem
+} // namespace formflow::fem
 
 #include "formflow/fem/quadrature.hpp"
 
 namespace formflow::fem {
 
-template <int dim>
-MatrixX gauss_to_nodes(int order, int n_points_per_direction) {
+template <int dim> MatrixX gauss_to_nodes(int order, int n_points_per_direction) {
   std::vector<Real> gauss, unused;
   gauss_1d(n_points_per_direction, gauss, unused);
   const int n_side = order + 1, m = n_points_per_direction;
@@ -111,4 +111,4 @@ template MatrixX gauss_to_nodes<1>(int, int);
 template MatrixX gauss_to_nodes<2>(int, int);
 template MatrixX gauss_to_nodes<3>(int, int);
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

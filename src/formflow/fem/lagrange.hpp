@@ -11,7 +11,9 @@ namespace formflow::fem {
 /// Q1: bilinear/trilinear, 2^dim nodes; Q2: biquadratic/triquadratic, 3^dim nodes.
 enum class ElementKind { Q1, Q2 };
 
-inline int element_order(ElementKind kind) { return kind == ElementKind::Q1 ? 1 : 2; }
+inline int element_order(ElementKind kind) {
+  return kind == ElementKind::Q1 ? 1 : 2;
+}
 inline std::string_view element_name(ElementKind kind) {
   return kind == ElementKind::Q1 ? "Q1" : "Q2";
 }
@@ -29,7 +31,9 @@ inline std::string_view element_name(ElementKind kind) {
 /// VTK orders these cells differently; io/vtu.cpp maps between the two.
 
 /// 1D node coordinate `i` of an element of `order` (0 ≤ i ≤ order).
-inline Real lattice_coordinate(int order, int i) { return -1.0 + 2.0 * i / order; }
+inline Real lattice_coordinate(int order, int i) {
+  return -1.0 + 2.0 * i / order;
+}
 
 /// Values (n_nodes) and reference gradients (dim × n_nodes) of the
 /// tensor-product shape functions of `order` at reference point `xi`.
@@ -38,10 +42,9 @@ void tabulate_shape(int order, const Point<dim>& xi, VectorX& values,
                     Eigen::Matrix<Real, dim, Eigen::Dynamic>& gradients);
 
 /// The reference coordinates of local node `local` of an element of `order`.
-template <int dim>
-Point<dim> reference_node(int order, int local);
+template <int dim> Point<dim> reference_node(int order, int local);
 
-}  // namespace formflow::fem
+} // namespace formflow::fem
 
 namespace formflow::fem {
 
@@ -50,7 +53,6 @@ namespace formflow::fem {
 /// for node a (tensor product of 1D Lagrange polynomials through the Gauss
 /// points). Shape (n_nodes, n_points^dim). One point per direction gives the
 /// constant (cell mean) extrapolation.
-template <int dim>
-MatrixX gauss_to_nodes(int order, int n_points_per_direction);
+template <int dim> MatrixX gauss_to_nodes(int order, int n_points_per_direction);
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

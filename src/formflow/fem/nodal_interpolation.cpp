@@ -43,22 +43,24 @@ Point<dim> reference_coordinates(const mesh::Mesh<dim>& mesh, Index cell, const 
   return xi;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& source_values,
                                 int components, const mesh::Mesh<dim>& target) {
   FF_ASSERT(source_values.size() == source.n_nodes() * components,
-                  "source field has one value per node and component");
+            "source field has one value per node and component");
   // Buckets: a uniform grid over the source's bounding box, each cell entered in
   // every bucket its (slightly enlarged) bounding box touches.
-  const Point<dim> low = source.nodes.rowwise().minCoeff(), high = source.nodes.rowwise().maxCoeff();
+  const Point<dim> low = source.nodes.rowwise().minCoeff(),
+                   high = source.nodes.rowwise().maxCoeff();
   const Real per_direction = std::ceil(std::pow(static_cast<Real>(source.n_cells()), 1.0 / dim));
   const int n_buckets = std::max(1, static_cast<int>(per_direction));
   const Point<dim> width = ((high - low) / n_buckets).cwiseMax(1e-300);
   auto bucket_of = [&](const Point<dim>& x, int direction) {
-    return std::clamp(static_cast<int>(std::floor((x[direction] - low[direction]) / width[direction])),
-                      0, n_buckets - 1);
+    return std::clamp(
+        static_cast<int>(std::floor((x[direction] - low[direction]) / width[direction])), 0,
+        n_buckets - 1);
   };
   auto flat = [&](const std::array<int, dim>& index) {
     int f = 0;
@@ -78,7 +80,8 @@ VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& so
     const Point<dim> margin = 1e-6 * (cell_high - cell_low) + Point<dim>::Constant(1e-12);
     cell_low -= margin, cell_high += margin;
     std::array<int, dim> first, last, index;
-    for (int d = 0; d < dim; ++d) first[d] = bucket_of(cell_low, d), last[d] = bucket_of(cell_high, d);
+    for (int d = 0; d < dim; ++d)
+      first[d] = bucket_of(cell_low, d), last[d] = bucket_of(cell_high, d);
     index = first;
     while (true) {
       buckets[flat(index)].push_back(cell);
@@ -143,4 +146,4 @@ template VectorX interpolate_nodal_field<2>(const mesh::Mesh<2>&, const VectorX&
 template VectorX interpolate_nodal_field<3>(const mesh::Mesh<3>&, const VectorX&, int,
                                             const mesh::Mesh<3>&);
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

@@ -19,4 +19,4 @@ template <int dim>
 VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& source_values,
                                 int components, const mesh::Mesh<dim>& target);
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

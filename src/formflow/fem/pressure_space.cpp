@@ -8,13 +8,10 @@ namespace formflow::fem {
 
 template <int dim> int pressure_functions_per_cell(PressureSpace space) {
   switch (space) {
-  case PressureSpace::P0:
-    return 1;
-  case PressureSpace::P1disc:
-    return dim + 1;
+  case PressureSpace::P0: return 1;
+  case PressureSpace::P1disc: return dim + 1;
   case PressureSpace::Q1disc:
-  case PressureSpace::Q1:
-    return 1 << dim;
+  case PressureSpace::Q1: return 1 << dim;
   }
   return 0;
 }
@@ -22,21 +19,17 @@ template <int dim> int pressure_functions_per_cell(PressureSpace space) {
 template <int dim> VectorX tabulate_pressure(PressureSpace space, const Point<dim>& xi) {
   VectorX values(pressure_functions_per_cell<dim>(space));
   switch (space) {
-  case PressureSpace::P0:
-    values[0] = 1.0;
-    break;
+  case PressureSpace::P0: values[0] = 1.0; break;
   case PressureSpace::P1disc:
     values[0] = 1.0;
-    for (int i = 0; i < dim; ++i)
-      values[i + 1] = xi[i];
+    for (int i = 0; i < dim; ++i) values[i + 1] = xi[i];
     break;
   case PressureSpace::Q1disc:
     // Monomial ∏_{i ∈ bits(k)} ξ_i: 1, ξ, η, ξη (, ζ, ξζ, ηζ, ξηζ).
     for (int k = 0; k < values.size(); ++k) {
       values[k] = 1.0;
       for (int i = 0; i < dim; ++i)
-        if (k & (1 << i))
-          values[k] *= xi[i];
+        if (k & (1 << i)) values[k] *= xi[i];
     }
     break;
   case PressureSpace::Q1: {

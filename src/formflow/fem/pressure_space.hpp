@@ -22,14 +22,10 @@ enum class PressureSpace { P0, P1disc, Q1disc, Q1 };
 
 inline std::string_view pressure_space_name(PressureSpace space) {
   switch (space) {
-  case PressureSpace::P0:
-    return "P0";
-  case PressureSpace::P1disc:
-    return "P1disc";
-  case PressureSpace::Q1disc:
-    return "Q1disc";
-  case PressureSpace::Q1:
-    return "Q1";
+  case PressureSpace::P0: return "P0";
+  case PressureSpace::P1disc: return "P1disc";
+  case PressureSpace::Q1disc: return "Q1disc";
+  case PressureSpace::Q1: return "Q1";
   }
   return "?";
 }

@@ -22,15 +22,15 @@ CellValuesCache<dim>::CellValuesCache(Index n_cells, CellValues<dim> values,
   }
 }
 
-template <int dim>
-void CellValuesCache<dim>::load(Index cell, CellValues<dim>& values) const {
+template <int dim> void CellValuesCache<dim>::load(Index cell, CellValues<dim>& values) const {
   const Real* in = data_.data() + per_cell_ * static_cast<std::size_t>(cell);
   // Eigen assignments, not std::copy_n: a call to memmove per point cost more than the copy.
   using Gradients = typename CellValues<dim>::Gradients;
   for (int q = 0; q < n_points_; ++q, in += dim * n_nodes_)
     values.gradients_[q] = Eigen::Map<const Gradients>(in, dim, n_nodes_);
   for (int q = 0; q < n_points_; ++q) values.jxw_[q] = *in++;
-  for (int q = 0; q < n_points_; ++q, in += dim) values.points_[q] = Eigen::Map<const Point<dim>>(in);
+  for (int q = 0; q < n_points_; ++q, in += dim)
+    values.points_[q] = Eigen::Map<const Point<dim>>(in);
 }
 
 template <int dim>
@@ -69,4 +69,4 @@ template class CellValuesCache<3>;
 template class FacetValuesCache<2>;
 template class FacetValuesCache<3>;
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

@@ -13,9 +13,8 @@ namespace formflow::fem {
 
 /// Gradients, JxW and points of CellValues at one rule for every cell.
 /// Memory: n_cells · n_points · (dim · n_nodes + 1 + dim) doubles.
-template <int dim>
-class CellValuesCache {
- public:
+template <int dim> class CellValuesCache {
+public:
   /// `map(cell, values)` maps `values` to `cell` (reinit, and in axisymmetry
   /// weight_by_radius): whatever it leaves in `values` is what load() restores.
   CellValuesCache(Index n_cells, CellValues<dim> values,
@@ -26,17 +25,16 @@ class CellValuesCache {
 
   std::size_t bytes() const { return data_.size() * sizeof(Real); }
 
- private:
+private:
   int n_points_ = 0, n_nodes_ = 0;
-  std::size_t per_cell_ = 0;  ///< doubles per cell: gradients, then JxW, then points
+  std::size_t per_cell_ = 0; ///< doubles per cell: gradients, then JxW, then points
   std::vector<Real> data_;
 };
 
 /// Shape values, JxW, normals and points of FacetValues for a list of faces
 /// (the contact faces Γ3, by their position in that list).
-template <int dim>
-class FacetValuesCache {
- public:
+template <int dim> class FacetValuesCache {
+public:
   /// `map(position, values)` maps `values` to face `position` (reinit, radius
   /// weighting, replaced normals): load() restores exactly that.
   FacetValuesCache(Index n_faces, FacetValues<dim> values,
@@ -46,10 +44,10 @@ class FacetValuesCache {
 
   std::size_t bytes() const { return data_.size() * sizeof(Real); }
 
- private:
+private:
   int n_points_ = 0, n_nodes_ = 0;
-  std::size_t per_face_ = 0;  ///< doubles per face: shapes, then JxW, normals, points
+  std::size_t per_face_ = 0; ///< doubles per face: shapes, then JxW, normals, points
   std::vector<Real> data_;
 };
 
-}  // namespace formflow::fem
+} // namespace formflow::fem

@@ -56,16 +56,13 @@ void write_file_atomically(const std::filesystem::path& path,
   {
     errno = 0;
     std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
-    if (!stream)
-      fail_writing(temporary, errno);
+    if (!stream) fail_writing(temporary, errno);
     writer(stream);
     stream.flush();
     // Checked before close() too: a full disk shows up here, and a failed close is caught below.
-    if (!stream)
-      fail_writing(temporary, errno);
+    if (!stream) fail_writing(temporary, errno);
     stream.close();
-    if (!stream)
-      fail_writing(temporary, errno);
+    if (!stream) fail_writing(temporary, errno);
   }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);

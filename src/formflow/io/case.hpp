@@ -30,12 +30,12 @@ struct Case {
   physics::Symmetry symmetry = physics::Symmetry::Plane;
   fem::ElementKind element = fem::ElementKind::Q2;
   Real mesh_size = 1.0;
-  int volumetric_points = 2;  ///< Gauss points per direction of the volumetric (penalty) term
+  int volumetric_points = 2; ///< Gauss points per direction of the volumetric (penalty) term
   physics::PowerLaw material;
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
-  assembly::Formulation formulation;  ///< penalty or mixed; exact-constraint (Uzawa) settings
+  assembly::Formulation formulation; ///< penalty or mixed; exact-constraint (Uzawa) settings
   physics::Friction friction;
-  assembly::ContactSettings contact;  ///< face or nodal contact normals
+  assembly::ContactSettings contact; ///< face or nodal contact normals
   physics::Penalty penalty;
   solvers::IterationControl solver;
   /// Verification: a manufactured solution on the unit square replaces the
@@ -43,17 +43,17 @@ struct Case {
   physics::ManufacturedSolution manufactured = physics::ManufacturedSolution::None;
   mesh::BoxDistortion distortion;
 
-  std::string source;  ///< the case file path, or "<default>" for the embedded benchmark
+  std::string source; ///< the case file path, or "<default>" for the embedded benchmark
 
   mesh::MeshSource mesh_source = mesh::MeshSource::Structured;
-  std::string mesh_file;  ///< .msh path as written (relative: to the case file's directory)
+  std::string mesh_file; ///< .msh path as written (relative: to the case file's directory)
   /// Physical group name in mesh_file → boundary part name (mesh::label_name);
   /// empty: the physical names are the part names themselves.
   std::map<std::string, std::string> mesh_boundaries;
 
   /// Where a key got its value, for errors found after loading (e.g. in the mesh file).
   struct KeyLocation {
-    std::string file;  ///< case file path or "--set"
+    std::string file; ///< case file path or "--set"
     int line = 0;
   };
   /// By dotted key name; entries of a table key as "key.entry" ("mesh.boundaries.ram").
@@ -68,4 +68,4 @@ using Override = std::pair<std::string, std::string>;
 /// `overrides`. Throws InputError naming file, line, key and what would be valid.
 Case load_case(const std::string& path, const std::vector<Override>& overrides);
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -93,9 +93,12 @@ std::optional<KeyValue> convert(const CaseKey& key, const toml::value& value) {
       std::array<Real, 2> point{};
       for (std::size_t k = 0; k < 2; ++k) {
         const toml::value& number = entry.as_array()[k];
-        if (number.is_floating()) point[k] = number.as_floating();
-        else if (number.is_integer()) point[k] = static_cast<Real>(number.as_integer());
-        else return std::nullopt;
+        if (number.is_floating())
+          point[k] = number.as_floating();
+        else if (number.is_integer())
+          point[k] = static_cast<Real>(number.as_integer());
+        else
+          return std::nullopt;
       }
       points.push_back(point);
     }
@@ -139,10 +142,9 @@ std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml
 /// Accumulates keys into a Case (starting from the table's defaults), remembering
 /// where each was set, so that cross-key errors can point at the key set last.
 class CaseBuilder {
- public:
+public:
   CaseBuilder() {
-    for (const CaseKey& key : case_keys())
-      key.set(case_, key.default_value);
+    for (const CaseKey& key : case_keys()) key.set(case_, key.default_value);
   }
 
   void set(const CaseKey& key, const toml::value& value, const std::string& file, int line) {
@@ -161,7 +163,7 @@ class CaseBuilder {
       throw InputError(file, line, name, problem->message, problem->hint);
     key.set(case_, *converted);
     origins_[name] = Origin{file, line, ++n_set_};
-    if (value.is_table())  // entries of a table key, so later errors can name their line
+    if (value.is_table()) // entries of a table key, so later errors can name their line
       for (const auto& [entry, entry_value] : value.as_table())
         origins_[name + "." + entry] =
             Origin{file, file == "--set" ? line : line_of(entry_value), n_set_};
@@ -175,11 +177,10 @@ class CaseBuilder {
       const toml::value& entry_value = *pointer;
       const std::string name(key.name);
       if (!entry_value.is_string())
-        throw InputError(file, line_of(entry_value), name,
-                         fmt::format("entry \"{}\": expected a string, got {}", entry,
-                                     describe(entry_value)),
-                         fmt::format("e.g. {} = \"{}\"", entry,
-                                     key.choices.empty() ? "" : key.choices.front()));
+        throw InputError(
+            file, line_of(entry_value), name,
+            fmt::format("entry \"{}\": expected a string, got {}", entry, describe(entry_value)),
+            fmt::format("e.g. {} = \"{}\"", entry, key.choices.empty() ? "" : key.choices.front()));
       if (const auto problem = check_key_value(key, NameMap{{entry, entry_value.as_string().str}}))
         throw InputError(file, line_of(entry_value), name, problem->message, problem->hint);
     }
@@ -204,7 +205,7 @@ class CaseBuilder {
     return case_;
   }
 
- private:
+private:
   Origin origin(const std::string& name) const {
     const auto found = origins_.find(name);
     return found == origins_.end() ? Origin{} : found->second;
@@ -274,14 +275,15 @@ class CaseBuilder {
             "wired to the Taylor–Hood saddle-point solve",
             "use friction.regularization = \"regularized\", or formulation.pressure = \"P1disc\"");
     if (case_.element == fem::ElementKind::Q1 && pressure != PressureSpace::P0)
-      blame({"formulation.pressure", "mesh.element"},
-            pressure == PressureSpace::Q1
-                ? std::string("Q1 velocity with the Q1 pressure is not inf-sup stable (spurious "
-                              "pressure modes, docs/mixed.md)")
-                : fmt::format("Q1 velocity with the {} pressure locks (more pressure than velocity "
-                              "freedom per cell)",
-                              fem::pressure_space_name(pressure)),
-            "with mesh.element = \"Q1\" use formulation.pressure = \"P0\"; or mesh.element = \"Q2\"");
+      blame(
+          {"formulation.pressure", "mesh.element"},
+          pressure == PressureSpace::Q1
+              ? std::string("Q1 velocity with the Q1 pressure is not inf-sup stable (spurious "
+                            "pressure modes, docs/mixed.md)")
+              : fmt::format("Q1 velocity with the {} pressure locks (more pressure than velocity "
+                            "freedom per cell)",
+                            fem::pressure_space_name(pressure)),
+          "with mesh.element = \"Q1\" use formulation.pressure = \"P0\"; or mesh.element = \"Q2\"");
     if (case_.element == fem::ElementKind::Q1 && case_.penalty.d == 0)
       blame({"penalty.d", "mesh.element"},
             "Q1–P0 is not inf-sup stable (Remark 4.3: checkerboard pressure, β_h → 0), so the "
@@ -296,10 +298,10 @@ class CaseBuilder {
     for (const std::string& name : names)
       if (origin(name).order > origin(blamed).order) blamed = name;
     const Origin where = origin(blamed);
-    throw InputError(where.file, where.line, blamed,
-                     fmt::format("value {}: {}",
-                                 format_key_value(find_case_key(blamed)->get(case_)), message),
-                     hint);
+    throw InputError(
+        where.file, where.line, blamed,
+        fmt::format("value {}: {}", format_key_value(find_case_key(blamed)->get(case_)), message),
+        hint);
   }
 
   /// mesh.file is needed by, and only by, mesh.source = "file"; so is mesh.boundaries.
@@ -312,8 +314,8 @@ class CaseBuilder {
                        "e.g. file = \"meshes/die.msh\" in [mesh]");
     }
     for (const std::string name : {"mesh.file", "mesh.boundaries"}) {
-      const bool set = name == "mesh.file" ? !case_.mesh_file.empty()
-                                           : !case_.mesh_boundaries.empty();
+      const bool set =
+          name == "mesh.file" ? !case_.mesh_file.empty() : !case_.mesh_boundaries.empty();
       if (from_file || !set) continue;
       const Origin where = origin(name);
       throw InputError(where.file, where.line, name,
@@ -379,8 +381,7 @@ class CaseBuilder {
     const std::string name = "geometry.die_profile";
     const auto& points = geometry.die_profile;
     const std::string shape = "[[0, H_in], ..., [x_n, H_out]] with x increasing, y non-increasing";
-    if (points.size() < 2)
-      die_error(name, "a polyline die needs at least two points", shape);
+    if (points.size() < 2) die_error(name, "a polyline die needs at least two points", shape);
     if (points.front()[0] != 0 || points.front()[1] != geometry.entry_half_height)
       die_error(name,
                 fmt::format("the first point [{}, {}] is not the die entry [0, {}]",
@@ -393,12 +394,15 @@ class CaseBuilder {
                 "end the profile at y = geometry.exit_half_height");
     for (std::size_t k = 1; k < points.size(); ++k) {
       if (!(points[k][0] > points[k - 1][0]))
-        die_error(name, fmt::format("x is not increasing at point {} ([{}, {}])", k + 1,
-                                    points[k][0], points[k][1]),
+        die_error(name,
+                  fmt::format("x is not increasing at point {} ([{}, {}])", k + 1, points[k][0],
+                              points[k][1]),
                   shape);
       if (points[k][1] > points[k - 1][1])
-        die_error(name, fmt::format("y increases at point {} ([{}, {}]): the die must not "
-                                    "widen", k + 1, points[k][0], points[k][1]),
+        die_error(name,
+                  fmt::format("y increases at point {} ([{}, {}]): the die must not "
+                              "widen",
+                              k + 1, points[k][0], points[k][1]),
                   shape);
     }
   }
@@ -447,7 +451,7 @@ InputError syntax_error(const std::string& path, const toml::syntax_error& error
     if (summary.rfind(prefix, 0) == 0) summary.erase(0, prefix.size());
   if (const auto colon = summary.find(": ");
       colon != std::string::npos && summary.find(' ') > colon)
-    summary.erase(0, colon + 2);  // toml::parse_table: → drop the parser function name
+    summary.erase(0, colon + 2); // toml::parse_table: → drop the parser function name
   while (std::getline(lines, line)) {
     const auto bar = line.find(" | ");
     if (bar == std::string::npos) continue;
@@ -490,8 +494,7 @@ std::string did_you_mean(std::string_view name) {
 
 std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table) {
   std::vector<std::pair<std::string, const toml::value*>> entries;
-  for (const auto& [name, value] : table.as_table())
-    entries.emplace_back(name, &value);
+  for (const auto& [name, value] : table.as_table()) entries.emplace_back(name, &value);
   std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
     const auto la = a.second->location(), lb = b.second->location();
     return std::pair(la.line(), la.column()) < std::pair(lb.line(), lb.column());
@@ -544,15 +547,14 @@ void apply_override(CaseBuilder& builder, const Override& assignment) {
   builder.set(*key, parse_override_value(assignment.second), file, 0);
 }
 
-}  // namespace
+} // namespace
 
 Case load_case(const std::string& path, const std::vector<Override>& overrides) {
   CaseBuilder builder;
   if (!path.empty()) apply_document(builder, read_document(path), path);
-  for (const Override& assignment : overrides)
-    apply_override(builder, assignment);
+  for (const Override& assignment : overrides) apply_override(builder, assignment);
   builder.check_cross_keys();
   return builder.finish(path.empty() ? "<default>" : path);
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

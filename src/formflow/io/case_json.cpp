@@ -19,4 +19,4 @@ nlohmann::ordered_json case_to_json(const Case& case_) {
   return json;
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -13,4 +13,4 @@ namespace formflow::io {
 /// the order of the key table (docs/case-reference.md), then "source".
 nlohmann::ordered_json case_to_json(const Case& case_);
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -47,8 +47,8 @@ struct CaseKey {
   std::string_view name;
   KeyType type = KeyType::Real;
   KeyValue default_value;
-  Bound lower;  ///< Real/Integer only
-  Bound upper;  ///< Real/Integer only
+  Bound lower; ///< Real/Integer only
+  Bound upper; ///< Real/Integer only
   std::vector<std::string_view> choices;
   std::string_view constraint;
   std::string_view unit;
@@ -112,4 +112,4 @@ std::string valid_values_text(const CaseKey& key);
 /// section with key, type, default, valid values, unit and description.
 std::string case_reference_markdown();
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -31,8 +31,7 @@ std::string bound_text(const Bound& bound, bool lower) {
 
 std::string choices_text(const CaseKey& key) {
   std::string text;
-  for (std::string_view choice : key.choices)
-    text += (text.empty() ? "" : ", ") + quoted(choice);
+  for (std::string_view choice : key.choices) text += (text.empty() ? "" : ", ") + quoted(choice);
   return text;
 }
 
@@ -71,7 +70,7 @@ std::string default_case_file() {
   return text + "```\n";
 }
 
-}  // namespace
+} // namespace
 
 std::string format_key_value(const KeyValue& value) {
   if (const auto* real = std::get_if<Real>(&value)) return format_real(*real);
@@ -150,10 +149,9 @@ std::string case_reference_markdown() {
       "`--set mesh.element=Q1`, `--set 'friction.on=[\"die\"]'`. Checks that involve two\n"
       "keys (mesh size against the lengths, exit against entry height, rate1 against\n"
       "rate2) run after all keys are set. `formflow check CASE` validates without solving.\n\n";
-  for (const CaseSection& section : case_sections())
-    text += section_table(section);
+  for (const CaseSection& section : case_sections()) text += section_table(section);
   text += "## The default case\n\nEquivalent to running without a case file:\n\n";
   return text + default_case_file();
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

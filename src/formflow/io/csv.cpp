@@ -32,12 +32,9 @@ void append_reals(std::string& out, std::string_view file, std::size_t row,
 std::string_view part_name(int part) {
   // ContactSample::part counts from Container in mesh::BoundaryLabel order.
   switch (part) {
-  case 0:
-    return mesh::label_name(mesh::BoundaryLabel::Container);
-  case 1:
-    return mesh::label_name(mesh::BoundaryLabel::Die);
-  default:
-    throw InternalError(fmt::format("contact.csv: unknown contact part {}", part));
+  case 0: return mesh::label_name(mesh::BoundaryLabel::Container);
+  case 1: return mesh::label_name(mesh::BoundaryLabel::Die);
+  default: throw InternalError(fmt::format("contact.csv: unknown contact part {}", part));
   }
 }
 

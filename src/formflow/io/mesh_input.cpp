@@ -42,7 +42,8 @@ void check_jacobians(const Case& case_, const mesh::Mesh<2>& mesh) {
   fem::CellValues<2> values(mesh.order, fem::gauss_rule<2>(mesh.order + 1));
   fem::CellValues<2>::Gradients coordinates(2, mesh.nodes_per_cell());
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    for (int a = 0; a < mesh.nodes_per_cell(); ++a) coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+      coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
     if (values.reinit(coordinates)) continue;
     const Point<2> centre = coordinates.rowwise().mean();
     const Case::KeyLocation where = location_of(case_, "mesh.file");
@@ -56,9 +57,9 @@ void check_jacobians(const Case& case_, const mesh::Mesh<2>& mesh) {
 }
 
 std::vector<mesh::PhysicalBoundary> boundary_map(const Case& case_) {
-  std::vector<mesh::PhysicalBoundary> map;  // empty: the physical names are the part names
+  std::vector<mesh::PhysicalBoundary> map; // empty: the physical names are the part names
   for (const auto& [name, part] : case_.mesh_boundaries)
-    map.push_back({name, *mesh::label_from_name(part)});  // validated by the key table
+    map.push_back({name, *mesh::label_from_name(part)}); // validated by the key table
   return map;
 }
 
@@ -73,11 +74,11 @@ mesh::Mesh<2> read_mesh_file(const Case& case_) {
     if (error.subject == Subject::Boundaries) key = "mesh.boundaries";
     if (error.subject == Subject::Group) key = "mesh.boundaries." + error.group;
     // A key at its default has no line: blame the line of mesh.file (or of the map).
-    const Case::KeyLocation where =
-        location_of(case_, key, key.rfind("mesh.boundaries.", 0) == 0 ? "mesh.boundaries" : "mesh.file");
-    const std::string message =
-        error.subject == Subject::File ? error.message
-                                       : fmt::format("{}: {}", case_.mesh_file, error.message);
+    const Case::KeyLocation where = location_of(
+        case_, key, key.rfind("mesh.boundaries.", 0) == 0 ? "mesh.boundaries" : "mesh.file");
+    const std::string message = error.subject == Subject::File
+                                    ? error.message
+                                    : fmt::format("{}: {}", case_.mesh_file, error.message);
     throw InputError(where.file, where.line, key, message, error.hint);
   }
 }
@@ -85,19 +86,21 @@ mesh::Mesh<2> read_mesh_file(const Case& case_) {
 /// The part that carries the process speed must exist, or nothing drives the flow.
 void check_driven_part(const Case& case_, const mesh::Mesh<2>& mesh) {
   const bool extrusion = case_.process.type == physics::ProcessType::Extrusion;
-  const mesh::BoundaryLabel driven = extrusion ? mesh::BoundaryLabel::Rear : mesh::BoundaryLabel::Front;
+  const mesh::BoundaryLabel driven =
+      extrusion ? mesh::BoundaryLabel::Rear : mesh::BoundaryLabel::Front;
   for (const mesh::BoundaryFacet& facet : mesh.facets)
     if (facet.label == driven) return;
   const Case::KeyLocation where = location_of(case_, "mesh.boundaries");
-  throw InputError(where.file, where.line, "mesh.boundaries",
-                   fmt::format("{}: no boundary facet is \"{}\", where {} drives the flow",
-                               case_.mesh_file, mesh::label_name(driven),
-                               extrusion ? "the ram of the extrusion" : "the pull of the drawing"),
-                   fmt::format("map the physical curve of that end to \"{}\"", mesh::label_name(driven)));
+  throw InputError(
+      where.file, where.line, "mesh.boundaries",
+      fmt::format("{}: no boundary facet is \"{}\", where {} drives the flow", case_.mesh_file,
+                  mesh::label_name(driven),
+                  extrusion ? "the ram of the extrusion" : "the pull of the drawing"),
+      fmt::format("map the physical curve of that end to \"{}\"", mesh::label_name(driven)));
 }
 #endif
 
-}  // namespace
+} // namespace
 
 mesh::Mesh<2> load_mesh(const Case& case_) {
   const int order = fem::element_order(case_.element);
@@ -128,4 +131,4 @@ mesh::Mesh<2> load_mesh(const Case& case_) {
 #endif
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -13,4 +13,4 @@ namespace formflow::io {
 /// InputErrors naming the case file and line of the key at fault.
 mesh::Mesh<2> load_mesh(const Case& case_);
 
-}  // namespace formflow::io
+} // namespace formflow::io

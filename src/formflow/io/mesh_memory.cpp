@@ -73,12 +73,12 @@ std::string valid_size_text(const Case& case_, Real smallest, Real memory_bytes)
   return "";
 }
 
-}  // namespace
+} // namespace
 
 std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real size) {
   Real cells = 0.0;
   if (is_manufactured(case_))
-    cells = 1.0 / (size * size);  // the unit square
+    cells = 1.0 / (size * size); // the unit square
   else if (case_.mesh_source == mesh::MeshSource::File)
     return std::nullopt;
   else
@@ -127,4 +127,4 @@ std::optional<KeyProblem> mesh_memory_problem(const Case& case_, Real memory_byt
                   run_bytes_per_dof)};
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -25,9 +25,9 @@ inline constexpr Real fallback_memory_bytes = 64.0 * 1024 * 1024 * 1024;
 
 /// The mesh a case asks for, counted before it is built.
 struct MeshMemoryEstimate {
-  Real cells = 0.0;  ///< exact for the structured grid; Gmsh's mesh has about as many
-  Real dofs = 0.0;   ///< velocity dofs, 2·order²·cells (interior nodes; a slight undercount)
-  Real bytes = 0.0;  ///< run_bytes_per_dof · dofs
+  Real cells = 0.0; ///< exact for the structured grid; Gmsh's mesh has about as many
+  Real dofs = 0.0;  ///< velocity dofs, 2·order²·cells (interior nodes; a slight undercount)
+  Real bytes = 0.0; ///< run_bytes_per_dof · dofs
 };
 
 /// The estimate for `case_` with mesh.size = `size`; std::nullopt for a mesh
@@ -45,4 +45,4 @@ Real machine_memory_bytes();
 /// hint; std::nullopt when it fits.
 std::optional<KeyProblem> mesh_memory_problem(const Case& case_, Real memory_bytes);
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -31,8 +31,7 @@ void write_results(const std::string& directory, const Case& case_, const mesh::
 
   const std::filesystem::path root(directory);
   std::filesystem::create_directories(root);
-  for (const auto& [name, contents] : files)
-    write_file_atomically(root / name, contents);
+  for (const auto& [name, contents] : files) write_file_atomically(root / name, contents);
 }
 
 } // namespace formflow::io

@@ -20,4 +20,4 @@ void write_results(const std::string& directory, const Case& case_, const mesh::
 /// The summary.json document as text (also what `formflow run --json` prints).
 std::string summary_json(const Case& case_, const post::Results& results);
 
-}  // namespace formflow::io
+} // namespace formflow::io

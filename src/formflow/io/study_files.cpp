@@ -28,7 +28,7 @@ std::optional<Real> l2_of(const std::optional<post::ErrorNorms>& norms) {
   return norms ? std::optional<Real>(norms->l2) : std::nullopt;
 }
 
-}  // namespace
+} // namespace
 
 std::string study_csv(const post::StudyTable& table) {
   std::string out =
@@ -90,4 +90,4 @@ void write_study(const std::string& directory, const post::StudyTable& table) {
   write_file_atomically(folder / "corner.svg", corner.svg);
 }
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -24,4 +24,4 @@ std::string corner_csv(const post::StudyTable& table);
 /// profiles also corner.csv, corner.png and corner.svg.
 void write_study(const std::string& directory, const post::StudyTable& table);
 
-}  // namespace formflow::io
+} // namespace formflow::io

@@ -74,9 +74,8 @@ json contact_json(const Case& case_, const post::Results& results) {
   out["container"] = zones_json(results.container_zones);
   out["die"] = zones_json(results.die_zones);
   if (exact)
-    out["augmented_lagrangian"] = {
-        {"outer_iterations", results.augmentation.outer_iterations},
-        {"multiplier_change", results.augmentation.multiplier_change}};
+    out["augmented_lagrangian"] = {{"outer_iterations", results.augmentation.outer_iterations},
+                                   {"multiplier_change", results.augmentation.multiplier_change}};
   return out;
 }
 
@@ -87,8 +86,9 @@ json mesh_json(const Case& case_, const post::Results& results) {
   // A verification run meshes the unit square itself, whatever mesh.source says.
   const bool manufactured = case_.manufactured != physics::ManufacturedSolution::None;
   const bool from_file = !manufactured && case_.mesh_source == mesh::MeshSource::File;
-  json out = {{"source", manufactured ? "box" : std::get<std::string>(
-                                                    find_case_key("mesh.source")->get(case_))},
+  json out = {{"source", manufactured
+                             ? "box"
+                             : std::get<std::string>(find_case_key("mesh.source")->get(case_))},
               {"elements", results.n_cells},
               {"nodes", results.n_nodes},
               {"dofs", results.n_dofs},
@@ -102,10 +102,8 @@ json mesh_json(const Case& case_, const post::Results& results) {
 json timing_json(const PhaseTimes& timing) {
   json out = json::object();
   // The phases every run has are always present, so readers need no defaults.
-  for (const char* phase : {"total", "assembly", "factorization", "solve"})
-    out[phase] = 0.0;
-  for (const auto& [phase, seconds] : timing.all())
-    out[phase] = seconds;
+  for (const char* phase : {"total", "assembly", "factorization", "solve"}) out[phase] = 0.0;
+  for (const auto& [phase, seconds] : timing.all()) out[phase] = seconds;
   return out;
 }
 
@@ -142,7 +140,8 @@ json summary_document(const Case& case_, const post::Results& results) {
                            {"krylov_iterations", results.timing.counted("krylov iterations")}};
   // How often each timed phase ran (timing_s / timing_calls = cost per call).
   json calls = json::object();
-  for (const auto& [phase, seconds] : results.timing.all()) calls[phase] = results.timing.counted(phase);
+  for (const auto& [phase, seconds] : results.timing.all())
+    calls[phase] = results.timing.counted(phase);
   out["timing_calls"] = std::move(calls);
   out["history"] = std::move(history);
   out["history_pressure"] = std::move(history_pressure);

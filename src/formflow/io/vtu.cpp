@@ -47,8 +47,7 @@ void check_finite(std::string_view name, const VectorX& values) {
 
 /// What goes before item `i` of a list written `per_line` items to a line.
 const char* separator(Index i, Index per_line) {
-  if (i % per_line != 0)
-    return " ";
+  if (i % per_line != 0) return " ";
   return i == 0 ? "          " : "\n          ";
 }
 
@@ -76,8 +75,7 @@ void cells_section(Out out, const mesh::Mesh<2>& mesh) {
                       "format=\"ascii\">\n");
   for (Index c = 0; c < mesh.n_cells(); ++c) {
     fmt::format_to(out, "         ");
-    for (const int local : order)
-      fmt::format_to(out, " {}", mesh.cells(local, c));
+    for (const int local : order) fmt::format_to(out, " {}", mesh.cells(local, c));
     fmt::format_to(out, "\n");
   }
   fmt::format_to(out, "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
@@ -87,8 +85,7 @@ void cells_section(Out out, const mesh::Mesh<2>& mesh) {
   fmt::format_to(out, "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
                       "format=\"ascii\">\n");
   const int type = vtk_cell_type(mesh.order);
-  for (Index c = 0; c < mesh.n_cells(); ++c)
-    fmt::format_to(out, "{}{}", separator(c, 20), type);
+  for (Index c = 0; c < mesh.n_cells(); ++c) fmt::format_to(out, "{}{}", separator(c, 20), type);
   fmt::format_to(out, "\n        </DataArray>\n      </Cells>\n");
 }
 
@@ -114,8 +111,7 @@ void cell_data_section(Out out, const mesh::Mesh<2>& mesh, const post::Fields& f
   scalar_array(out, "hydrostatic_stress", fields.cell_hydrostatic_stress);
   scalar_array(out, "hydrostatic_pressure", fields.cell_hydrostatic_stress, -1.0);
   fmt::format_to(out, "        <DataArray type=\"Int64\" Name=\"cell_id\" format=\"ascii\">\n");
-  for (Index c = 0; c < mesh.n_cells(); ++c)
-    fmt::format_to(out, "{}{}", separator(c, 10), c);
+  for (Index c = 0; c < mesh.n_cells(); ++c) fmt::format_to(out, "{}{}", separator(c, 10), c);
   fmt::format_to(out, "\n        </DataArray>\n      </CellData>\n");
 }
 
@@ -134,8 +130,7 @@ void check_fields(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
   check_size("cell hydrostatic_stress", static_cast<Index>(fields.cell_hydrostatic_stress.size()),
              n_cells);
   check_finite("velocity", fields.velocity);
-  for (const auto& [name, values] : nodal)
-    check_finite(name, *values);
+  for (const auto& [name, values] : nodal) check_finite(name, *values);
   check_finite("cell equivalent_strain_rate", fields.cell_equivalent_strain_rate);
   check_finite("cell hydrostatic_stress", fields.cell_hydrostatic_stress);
   for (Index n = 0; n < mesh.n_nodes(); ++n)
@@ -146,18 +141,14 @@ void check_fields(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
 } // namespace
 
 int vtk_cell_type(int order) {
-  if (order == 1)
-    return 9;
-  if (order == 2)
-    return 28;
+  if (order == 1) return 9;
+  if (order == 2) return 28;
   throw InternalError(fmt::format("fields.vtu: no VTK cell type for order {}", order));
 }
 
 std::span<const int> vtk_node_order(int order) {
-  if (order == 1)
-    return vtk_from_q1;
-  if (order == 2)
-    return vtk_from_q2;
+  if (order == 1) return vtk_from_q1;
+  if (order == 2) return vtk_from_q2;
   throw InternalError(fmt::format("fields.vtu: no VTK node order for order {}", order));
 }
 

@@ -40,7 +40,7 @@ std::vector<Point<2>> vertex_lattice(const Point<2>& lower, const Point<2>& uppe
   return vertices;
 }
 
-}  // namespace
+} // namespace
 
 Mesh<2> make_box_mesh(const Point<2>& lower, const Point<2>& upper, int n_x, int n_y, int order,
                       const BoxDistortion& distortion) {
@@ -83,4 +83,4 @@ Mesh<2> make_box_mesh(const Point<2>& lower, const Point<2>& upper, int n_x, int
   return mesh;
 }
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

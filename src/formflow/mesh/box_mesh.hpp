@@ -4,14 +4,13 @@
 
 #include "formflow/mesh/mesh.hpp"
 
-
 namespace formflow::mesh {
 
 /// How the interior nodes of a box mesh are moved off the uniform lattice.
 enum class Distortion {
-  None,    ///< uniform rectangles (affine cells)
-  Smooth,  ///< the image of the uniform mesh under one fixed smooth map (non-affine cells)
-  Random,  ///< each interior vertex moved by an independent random offset (non-affine cells)
+  None,   ///< uniform rectangles (affine cells)
+  Smooth, ///< the image of the uniform mesh under one fixed smooth map (non-affine cells)
+  Random, ///< each interior vertex moved by an independent random offset (non-affine cells)
 };
 
 /// The distortion and its size. Smooth: the vertices move by the fixed map
@@ -22,7 +21,7 @@ enum class Distortion {
 struct BoxDistortion {
   Distortion kind = Distortion::None;
   Real amplitude = 0.1;
-  int seed = 1;  ///< ≥ 0
+  int seed = 1; ///< ≥ 0
 };
 
 /// `n_x` × `n_y` cells of polynomial `order` (1 or 2) on [lower, upper]. The
@@ -33,4 +32,4 @@ struct BoxDistortion {
 Mesh<2> make_box_mesh(const Point<2>& lower, const Point<2>& upper, int n_x, int n_y, int order,
                       const BoxDistortion& distortion = {});
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

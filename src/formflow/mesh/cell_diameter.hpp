@@ -15,7 +15,6 @@ struct CellDiameterRange {
 /// The diameter of a cell is the largest distance between two of its nodes
 /// (Q2 mid-side and centre nodes included, so a curved edge counts through its
 /// middle node). A square of side h has diameter √2·h. {0, 0} for no cells.
-template <int dim>
-CellDiameterRange cell_diameter_range(const Mesh<dim>& mesh);
+template <int dim> CellDiameterRange cell_diameter_range(const Mesh<dim>& mesh);
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

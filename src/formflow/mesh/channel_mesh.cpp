@@ -48,11 +48,11 @@ Mesh<2> make_channel_mesh(const ChannelGeometry& geometry, Real size, int order)
         lattice_node[lattice_index(i, j)] = static_cast<Index>(points.size());
         // The last lattice line is placed on the exact end coordinate so that
         // rounding in `spacing` never moves a boundary.
-        const Real x = i <= lattice_container_x
-                           ? geometry.container_length * i / lattice_container_x
-                           : geometry.container_length + geometry.exit_length *
-                                                             (i - lattice_container_x) /
-                                                             (lattice_total_x - lattice_container_x);
+        const Real x =
+            i <= lattice_container_x
+                ? geometry.container_length * i / lattice_container_x
+                : geometry.container_length + geometry.exit_length * (i - lattice_container_x) /
+                                                  (lattice_total_x - lattice_container_x);
         const Real y = j <= lattice_exit_y
                            ? geometry.exit_half_height * j / lattice_exit_y
                            : geometry.exit_half_height +
@@ -64,7 +64,7 @@ Mesh<2> make_channel_mesh(const ChannelGeometry& geometry, Real size, int order)
   for (std::size_t n = 0; n < points.size(); ++n) mesh.nodes.col(static_cast<Index>(n)) = points[n];
 
   const int n_side = order + 1;
-  std::vector<std::array<int, 2>> cell_origin;  // lattice origin of each cell
+  std::vector<std::array<int, 2>> cell_origin; // lattice origin of each cell
   for (int cj = 0; cj < n_entry_y; ++cj)
     for (int ci = 0; ci < n_container_x + n_exit_x; ++ci)
       if (ci < n_container_x || cj < n_exit_y) cell_origin.push_back({ci * order, cj * order});
@@ -93,12 +93,12 @@ Mesh<2> make_channel_mesh(const ChannelGeometry& geometry, Real size, int order)
       if (cell_exists(neighbour[face][0], neighbour[face][1])) continue;
       BoundaryLabel label{};
       switch (face) {
-        case 0: label = BoundaryLabel::Rear; break;
-        case 1: label = ci + 1 == n_container_x ? BoundaryLabel::Die : BoundaryLabel::Front; break;
-        case 2: label = BoundaryLabel::Symmetry; break;
-        default:
-          label = ci < n_container_x ? BoundaryLabel::Container : BoundaryLabel::FreeExit;
-          break;
+      case 0: label = BoundaryLabel::Rear; break;
+      case 1: label = ci + 1 == n_container_x ? BoundaryLabel::Die : BoundaryLabel::Front; break;
+      case 2: label = BoundaryLabel::Symmetry; break;
+      default:
+        label = ci < n_container_x ? BoundaryLabel::Container : BoundaryLabel::FreeExit;
+        break;
       }
       mesh.facets.push_back({static_cast<Index>(c), face, label});
     }
@@ -106,4 +106,4 @@ Mesh<2> make_channel_mesh(const ChannelGeometry& geometry, Real size, int order)
   return mesh;
 }
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

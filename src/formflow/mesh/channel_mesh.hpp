@@ -23,12 +23,12 @@ struct ChannelGeometry {
   Real exit_half_height = 5.0;
   Real exit_length = 10.0;
   DieShape die = DieShape::Square;
-  Real die_angle = 15.0;   ///< wedge semi-angle in degrees, 0 < α < 90
-  Real die_radius = 10.0;  ///< arc radius, ≥ H_in − H_out
+  Real die_angle = 15.0;  ///< wedge semi-angle in degrees, 0 < α < 90
+  Real die_radius = 10.0; ///< arc radius, ≥ H_in − H_out
   /// Polyline die face as (x, y) with x measured from the die entry x = L_c:
   /// starts at (0, H_in), ends at y = H_out, x increasing, y non-increasing.
   std::vector<std::array<Real, 2>> die_profile{};
-  Real land_length = 0.0;  ///< straight die land y = H_out after the die face (contact)
+  Real land_length = 0.0; ///< straight die land y = H_out after the die face (contact)
 };
 
 /// Number of cells that `size` fits into `length`, or -1 when it does not fit
@@ -41,4 +41,4 @@ int cells_along(Real length, Real size);
 /// Precondition: `size` fits every length (checked by the case validation).
 Mesh<2> make_channel_mesh(const ChannelGeometry& geometry, Real size, int order);
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

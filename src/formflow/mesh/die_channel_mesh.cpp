@@ -104,11 +104,11 @@ void add_square_die_land(const ChannelGeometry& geometry, Mesh<2>& mesh) {
   }
 }
 
-}  // namespace
+} // namespace
 
 Real die_channel_cell_count(const ChannelGeometry& geometry, Real size) {
   const Real rows_in = geometry.entry_half_height / size;
-  if (geometry.die == DieShape::Square)  // the container block and the exit block
+  if (geometry.die == DieShape::Square) // the container block and the exit block
     return geometry.container_length / size * rows_in +
            geometry.exit_length / size * (geometry.exit_half_height / size);
   // One mapped block: the columns of make_mapped_mesh times H_in/size rows.
@@ -137,4 +137,4 @@ void free_container_wall(Mesh<2>& mesh) {
     if (facet.label == BoundaryLabel::Container) facet.label = BoundaryLabel::FreeEntry;
 }
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

@@ -32,4 +32,4 @@ void free_container_wall(Mesh<2>& mesh);
 /// x of the end of the die face (and start of the land), from the channel origin.
 Real die_exit_position(const ChannelGeometry& geometry);
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

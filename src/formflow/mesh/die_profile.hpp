@@ -15,7 +15,7 @@ namespace formflow::mesh {
 /// length √(R² − (R − ΔH)²). Polyline: the given points.
 /// Precondition: the geometry passed the case validation (io/case_file.cpp).
 class DieProfile {
- public:
+public:
   explicit DieProfile(const ChannelGeometry& geometry);
 
   /// x extent of the die face.
@@ -26,9 +26,9 @@ class DieProfile {
   /// start there so that the mesh follows the face exactly.
   const std::vector<Real>& breakpoints() const { return breakpoints_; }
 
- private:
+private:
   ChannelGeometry geometry_;
   std::vector<Real> breakpoints_;
 };
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

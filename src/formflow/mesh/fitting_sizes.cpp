@@ -22,7 +22,7 @@ NearestFittingSizes nearest_fitting_sizes(std::span<const Real> lengths, Real si
   NearestFittingSizes out;
   constexpr int search = 10000;
   for (const Real length : lengths) {
-    if (length / size > 1e7) continue;  // no sensible mesh; also keeps the cell counts in int
+    if (length / size > 1e7) continue; // no sensible mesh; also keeps the cell counts in int
     const int coarsest = std::max(1, static_cast<int>(std::ceil(length / size)));
     for (int n = coarsest; n < coarsest + search; ++n)
       if (fits_all(length / n)) {
@@ -38,4 +38,4 @@ NearestFittingSizes nearest_fitting_sizes(std::span<const Real> lengths, Real si
   return out;
 }
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

@@ -31,4 +31,4 @@ std::vector<Real> lengths_to_fit(const ChannelGeometry& geometry);
 /// Searches length/n for each of `lengths` (up to 10 000 values of n each).
 NearestFittingSizes nearest_fitting_sizes(std::span<const Real> lengths, Real size);
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

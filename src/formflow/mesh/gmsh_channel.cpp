@@ -21,7 +21,8 @@ namespace geo = gmsh::model::geo;
 /// Adds the segments of the polyline `points` as one part; returns their curve tags.
 std::vector<int> add_polyline(const std::vector<int>& points) {
   std::vector<int> curves;
-  for (std::size_t k = 0; k + 1 < points.size(); ++k) curves.push_back(geo::addLine(points[k], points[k + 1]));
+  for (std::size_t k = 0; k + 1 < points.size(); ++k)
+    curves.push_back(geo::addLine(points[k], points[k + 1]));
   return curves;
 }
 
@@ -31,7 +32,7 @@ void add_part(BoundaryLabel label, const std::vector<int>& curves) {
   gmsh::model::setPhysicalName(1, group, std::string(label_name(label)));
 }
 
-}  // namespace
+} // namespace
 
 std::vector<Point<2>> square_die_face(const ChannelGeometry& geometry) {
   return {Point<2>(geometry.container_length, geometry.entry_half_height),
@@ -76,7 +77,8 @@ void build_channel_model(const GmshSession& session, const ChannelGeometry& geom
     const int front_bottom = point(front, 0.0);
     const int front_top = point(front, geometry.exit_half_height);
     std::vector<int> die;
-    for (auto p = die_face.rbegin(); p != die_face.rend(); ++p) die.push_back(point(p->x(), p->y()));
+    for (auto p = die_face.rbegin(); p != die_face.rend(); ++p)
+      die.push_back(point(p->x(), p->y()));
     const int rear_top = point(0.0, geometry.entry_half_height);
 
     const std::map<BoundaryLabel, std::vector<int>> parts = {
@@ -103,7 +105,7 @@ void build_channel_model(const GmshSession& session, const ChannelGeometry& geom
     gmsh::option::setNumber("Mesh.Algorithm", 6);
     gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 3);
     gmsh::option::setNumber("Mesh.RecombineAll", 1);
-    gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0);  // quad-9, not quad-8
+    gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0); // quad-9, not quad-8
     gmsh::model::mesh::generate(2);
     if (order == 2) gmsh::model::mesh::setOrder(2);
   });
@@ -114,11 +116,11 @@ Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry,
   GmshSession session;
   build_channel_model(session, geometry, die_face, size, order);
   try {
-    return mesh_from_gmsh_model(session, {}, order);  // the groups carry the part names
+    return mesh_from_gmsh_model(session, {}, order); // the groups carry the part names
   } catch (const MeshFileError& error) {
     // Our own geometry: a failure here is a bug, not the user's input.
     throw InternalError("Gmsh channel mesh: " + error.message);
   }
 }
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

@@ -39,4 +39,4 @@ inline Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry, Real size
   return make_gmsh_channel_mesh(geometry, die_face_polyline(geometry, size), size, order);
 }
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

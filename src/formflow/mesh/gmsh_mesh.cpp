@@ -64,12 +64,11 @@ std::vector<std::size_t> read_cells(int order) {
   for (std::size_t k = 0; k < types.size(); ++k) {
     const int type = types[k];
     if (type == gmsh_quad4 || type == gmsh_quad9) continue;
-    const std::string found = fmt::format("{} elements of type \"{}\"", element_tags[k].size(),
-                                          element_type_name(type));
+    const std::string found =
+        fmt::format("{} elements of type \"{}\"", element_tags[k].size(), element_type_name(type));
     if (type == gmsh_quad8)
       throw MeshFileError(Subject::Element, "",
-                          found + ": 8-node serendipity quadrilaterals are not supported",
-                          q2_hint);
+                          found + ": 8-node serendipity quadrilaterals are not supported", q2_hint);
     throw MeshFileError(Subject::Element, "", found + ": formflow needs quadrilaterals",
                         "recombine the surface mesh into quadrilaterals (Mesh.RecombineAll = 1, "
                         "Mesh.RecombinationAlgorithm = 3 for an all-quad mesh)");
@@ -99,7 +98,8 @@ std::vector<std::size_t> read_cells(int order) {
 
 /// Nodes used by the cells, numbered in ascending Gmsh tag order; fills the
 /// coordinates and the connectivity and returns the index of each Gmsh tag.
-std::unordered_map<std::size_t, Index> number_nodes(const std::vector<std::size_t>& cell_tags, Mesh<2>& mesh) {
+std::unordered_map<std::size_t, Index> number_nodes(const std::vector<std::size_t>& cell_tags,
+                                                    Mesh<2>& mesh) {
   std::vector<std::size_t> used = cell_tags;
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
@@ -144,17 +144,21 @@ void orient_counter_clockwise(Mesh<2>& mesh) {
 }
 
 using EdgeKey = std::pair<Index, Index>;
-EdgeKey edge_key(Index a, Index b) { return a < b ? EdgeKey{a, b} : EdgeKey{b, a}; }
+EdgeKey edge_key(Index a, Index b) {
+  return a < b ? EdgeKey{a, b} : EdgeKey{b, a};
+}
 
 /// The faces used by one cell only, in cell order, still without labels.
-std::vector<BoundaryFacet> boundary_faces(const Mesh<2>& mesh, std::map<EdgeKey, std::size_t>& by_edge) {
+std::vector<BoundaryFacet> boundary_faces(const Mesh<2>& mesh,
+                                          std::map<EdgeKey, std::size_t>& by_edge) {
   std::map<EdgeKey, std::pair<int, BoundaryFacet>> uses;
   std::vector<EdgeKey> order;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell)
     for (int face = 0; face < 4; ++face) {
       const auto local = face_local_nodes<2>(mesh.nodes_per_side(), face);
       const EdgeKey key = edge_key(mesh.cells(local.front(), cell), mesh.cells(local.back(), cell));
-      auto [entry, inserted] = uses.try_emplace(key, 0, BoundaryFacet{cell, face, BoundaryLabel::Rear});
+      auto [entry, inserted] =
+          uses.try_emplace(key, 0, BoundaryFacet{cell, face, BoundaryLabel::Rear});
       if (inserted) order.push_back(key);
       ++entry->second.first;
     }
@@ -211,7 +215,7 @@ std::map<std::string, int> physical_curves(std::map<std::string, int>& other_dim
   for (const auto& [dim, tag] : groups) {
     std::string name;
     gmsh::model::getPhysicalName(dim, tag, name);
-    if (name.empty()) name = fmt::format("#{}", tag);  // unnamed groups: only their tag
+    if (name.empty()) name = fmt::format("#{}", tag); // unnamed groups: only their tag
     if (dim == 1)
       curves[name] = tag;
     else
@@ -228,7 +232,7 @@ void label_facets(const std::vector<PhysicalBoundary>& boundaries, Mesh<2>& mesh
   const std::map<std::string, int> curves = physical_curves(other_dimensions);
   std::map<std::string, BoundaryLabel> mapped;
   for (const PhysicalBoundary& entry : boundaries) mapped[entry.name] = entry.label;
-  if (boundaries.empty())  // no map: the curves named like a part are that part
+  if (boundaries.empty()) // no map: the curves named like a part are that part
     for (const auto& [name, tag] : curves)
       if (const auto label = label_from_name(name)) mapped[name] = *label;
 
@@ -254,7 +258,7 @@ void label_facets(const std::vector<PhysicalBoundary>& boundaries, Mesh<2>& mesh
     if (entry == mapped.end()) {
       const auto on_boundary = std::find_if(edges.begin(), edges.end(),
                                             [&](const EdgeKey& e) { return by_edge.count(e) > 0; });
-      if (on_boundary == edges.end()) continue;  // an inner curve (e.g. for mesh grading)
+      if (on_boundary == edges.end()) continue; // an inner curve (e.g. for mesh grading)
       throw MeshFileError(Subject::Boundaries, name,
                           fmt::format("physical curve \"{}\" lies on the boundary (e.g. {}) but "
                                       "is not mapped to a boundary part",
@@ -290,7 +294,8 @@ void label_facets(const std::vector<PhysicalBoundary>& boundaries, Mesh<2>& mesh
       std::find(labelled.begin(), labelled.end(), false) - labelled.begin());
   const BoundaryFacet& facet = mesh.facets[first];
   const auto local = face_local_nodes<2>(mesh.nodes_per_side(), facet.local_face);
-  const EdgeKey edge = edge_key(mesh.cells(local.front(), facet.cell), mesh.cells(local.back(), facet.cell));
+  const EdgeKey edge =
+      edge_key(mesh.cells(local.front(), facet.cell), mesh.cells(local.back(), facet.cell));
   throw MeshFileError(Subject::Boundaries, "",
                       fmt::format("{} boundary facets are in no mapped physical curve, e.g. {}",
                                   missing, segment_text(mesh, edge)),
@@ -298,7 +303,7 @@ void label_facets(const std::vector<PhysicalBoundary>& boundaries, Mesh<2>& mesh
                       "its name in [mesh.boundaries]");
 }
 
-}  // namespace
+} // namespace
 
 int lexicographic_of_gmsh_node(int order, int gmsh_node) {
   return order == 1 ? lexicographic_of_gmsh_q1.at(static_cast<std::size_t>(gmsh_node))
@@ -332,7 +337,8 @@ Mesh<2> read_gmsh_mesh(const std::string& path, const std::vector<PhysicalBounda
   try {
     session.call([&] { gmsh::open(path); });
   } catch (const GmshFailure& failure) {
-    throw MeshFileError(Subject::File, "", fmt::format("Gmsh cannot read {}: {}", path, failure.what()),
+    throw MeshFileError(Subject::File, "",
+                        fmt::format("Gmsh cannot read {}: {}", path, failure.what()),
                         "give a Gmsh .msh file (format 4.1 or 2.2, ASCII or binary)");
   }
   return mesh_from_gmsh_model(session, boundaries, order);
@@ -346,4 +352,4 @@ void write_gmsh_mesh(const GmshSession& session, const std::string& path, bool b
   });
 }
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

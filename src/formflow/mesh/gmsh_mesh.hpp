@@ -27,7 +27,7 @@ int lexicographic_of_gmsh_node(int order, int gmsh_node);
 struct MeshFileError : std::runtime_error {
   enum class Subject { File, Group, Element, Boundaries };
   Subject subject;
-  std::string group;  ///< the physical name concerned (Subject::Group), else empty
+  std::string group; ///< the physical name concerned (Subject::Group), else empty
   std::string message;
   std::string hint;
 
@@ -61,4 +61,4 @@ Mesh<2> read_gmsh_mesh(const std::string& path, const std::vector<PhysicalBounda
 /// Writes the mesh of the current model of `session` as .msh format 4.1.
 void write_gmsh_mesh(const GmshSession& session, const std::string& path, bool binary);
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

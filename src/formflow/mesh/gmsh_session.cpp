@@ -16,7 +16,7 @@ namespace {
 // session instead of letting two users corrupt each other's model.
 std::atomic<bool> session_open{false};
 
-}  // namespace
+} // namespace
 
 GmshSession::GmshSession(bool verbose) {
   if (session_open.exchange(true))
@@ -32,4 +32,4 @@ GmshSession::~GmshSession() {
   session_open = false;
 }
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

@@ -20,7 +20,7 @@ struct GmshFailure : std::runtime_error {
 /// not depend on the user's Gmsh settings; nothing is printed unless
 /// `verbose` (General.Terminal).
 class GmshSession {
- public:
+public:
   explicit GmshSession(bool verbose = false);
   ~GmshSession();
   GmshSession(const GmshSession&) = delete;
@@ -28,8 +28,7 @@ class GmshSession {
 
   /// Runs `action` (Gmsh API calls) and turns Gmsh's own exceptions (thrown as
   /// std::string) into GmshFailure carrying Gmsh's message.
-  template <class Action>
-  decltype(auto) call(Action&& action) const {
+  template <class Action> decltype(auto) call(Action&& action) const {
     try {
       return action();
     } catch (const std::string& message) {
@@ -38,4 +37,4 @@ class GmshSession {
   }
 };
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

@@ -6,13 +6,13 @@ namespace formflow::mesh {
 
 std::string_view label_name(BoundaryLabel label) {
   switch (label) {
-    case BoundaryLabel::Rear: return "rear";
-    case BoundaryLabel::FreeEntry: return "free_entry";
-    case BoundaryLabel::Container: return "container";
-    case BoundaryLabel::Die: return "die";
-    case BoundaryLabel::FreeExit: return "free_exit";
-    case BoundaryLabel::Front: return "front";
-    case BoundaryLabel::Symmetry: return "symmetry";
+  case BoundaryLabel::Rear: return "rear";
+  case BoundaryLabel::FreeEntry: return "free_entry";
+  case BoundaryLabel::Container: return "container";
+  case BoundaryLabel::Die: return "die";
+  case BoundaryLabel::FreeExit: return "free_exit";
+  case BoundaryLabel::Front: return "front";
+  case BoundaryLabel::Symmetry: return "symmetry";
   }
   return "unknown";
 }
@@ -23,8 +23,7 @@ std::optional<BoundaryLabel> label_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-template <int dim>
-std::vector<int> face_local_nodes(int n_side, int local_face) {
+template <int dim> std::vector<int> face_local_nodes(int n_side, int local_face) {
   const int axis = local_face / 2;
   const int fixed = (local_face % 2 == 0) ? 0 : n_side - 1;
   int n_cell = 1;
@@ -46,4 +45,4 @@ std::vector<int> face_local_nodes(int n_side, int local_face) {
 template std::vector<int> face_local_nodes<2>(int, int);
 template std::vector<int> face_local_nodes<3>(int, int);
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

@@ -14,13 +14,13 @@ namespace formflow::mesh {
 
 /// Boundary parts of SPEC §1. Physics refers to these labels, never to coordinates.
 enum class BoundaryLabel {
-  Rear,       ///< Γ1, the rear end (ram side)
-  FreeEntry,  ///< Γ2, free surface before the die
-  Container,  ///< Γ3, contact with the container wall
-  Die,        ///< Γ3, contact with the die face
-  FreeExit,   ///< Γ4, free surface after the die
-  Front,      ///< Γ5, the front end
-  Symmetry,   ///< Γ6, the symmetry plane
+  Rear,      ///< Γ1, the rear end (ram side)
+  FreeEntry, ///< Γ2, free surface before the die
+  Container, ///< Γ3, contact with the container wall
+  Die,       ///< Γ3, contact with the die face
+  FreeExit,  ///< Γ4, free surface after the die
+  Front,     ///< Γ5, the front end
+  Symmetry,  ///< Γ6, the symmetry plane
 };
 inline constexpr int n_boundary_labels = 7;
 
@@ -44,9 +44,8 @@ struct BoundaryFacet {
 /// Mesh of tensor-product Lagrange cells of polynomial order 1 or 2.
 /// Cell nodes are stored in lexicographic order of the reference lattice,
 /// x fastest (see fem/lagrange.hpp for the drawing).
-template <int dim>
-struct Mesh {
-  int order = 1;  ///< 1: Q1 (2^dim nodes per cell), 2: Q2 (3^dim nodes per cell)
+template <int dim> struct Mesh {
+  int order = 1; ///< 1: Q1 (2^dim nodes per cell), 2: Q2 (3^dim nodes per cell)
   /// Node coordinates, shape (dim, n_nodes).
   Eigen::Matrix<Real, dim, Eigen::Dynamic> nodes;
   /// Cell connectivity, shape (nodes_per_cell, n_cells), lexicographic order.
@@ -61,7 +60,6 @@ struct Mesh {
 
 /// Lexicographic local node indices of face `local_face` of a cell with
 /// `n_side` nodes per direction, in lexicographic order along the face.
-template <int dim>
-std::vector<int> face_local_nodes(int n_side, int local_face);
+template <int dim> std::vector<int> face_local_nodes(int n_side, int local_face);
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

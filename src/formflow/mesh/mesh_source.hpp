@@ -9,4 +9,4 @@ namespace formflow::mesh {
 /// (gmsh_channel.hpp); file: a user's .msh read through Gmsh (gmsh_mesh.hpp).
 enum class MeshSource { Structured, Gmsh, File };
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

@@ -6,15 +6,13 @@
 
 namespace formflow::mesh {
 
-template <int dim>
-Mesh<dim> translated(const Mesh<dim>& mesh, const Point<dim>& shift) {
+template <int dim> Mesh<dim> translated(const Mesh<dim>& mesh, const Point<dim>& shift) {
   Mesh<dim> moved = mesh;
   moved.nodes.colwise() += shift;
   return moved;
 }
 
-template <int dim>
-Mesh<dim> mirrored(const Mesh<dim>& mesh, int axis) {
+template <int dim> Mesh<dim> mirrored(const Mesh<dim>& mesh, int axis) {
   FF_ASSERT(axis >= 0 && axis < dim, "mirror axis out of range");
   Mesh<dim> image = mesh;
   image.nodes.row(axis) *= -1.0;
@@ -37,4 +35,4 @@ template Mesh<3> translated<3>(const Mesh<3>&, const Point<3>&);
 template Mesh<2> mirrored<2>(const Mesh<2>&, int);
 template Mesh<3> mirrored<3>(const Mesh<3>&, int);
 
-}  // namespace formflow::mesh
+} // namespace formflow::mesh

@@ -10,22 +10,22 @@ namespace formflow::physics {
 
 Real FlowLaw::coefficient() const {
   switch (kind) {
-    case FlowLawKind::PiecewisePower: return A;
-    case FlowLawKind::NortonHoff: return std::sqrt(3.0) * K * std::pow(std::sqrt(3.0), m);
-    case FlowLawKind::HenselSpittel:
-      return hs_A * std::exp(hs_m1 * temperature) * std::pow(strain, hs_m2) *
-             std::exp(hs_m4 / strain);
-    case FlowLawKind::PerfectlyPlastic: return sigma0;
+  case FlowLawKind::PiecewisePower: return A;
+  case FlowLawKind::NortonHoff: return std::sqrt(3.0) * K * std::pow(std::sqrt(3.0), m);
+  case FlowLawKind::HenselSpittel:
+    return hs_A * std::exp(hs_m1 * temperature) * std::pow(strain, hs_m2) *
+           std::exp(hs_m4 / strain);
+  case FlowLawKind::PerfectlyPlastic: return sigma0;
   }
   return 0.0;
 }
 
 Real FlowLaw::exponent() const {
   switch (kind) {
-    case FlowLawKind::PiecewisePower: return alpha;
-    case FlowLawKind::NortonHoff: return m;
-    case FlowLawKind::HenselSpittel: return hs_m3 + hs_m8 * temperature;
-    case FlowLawKind::PerfectlyPlastic: return 0.0;
+  case FlowLawKind::PiecewisePower: return alpha;
+  case FlowLawKind::NortonHoff: return m;
+  case FlowLawKind::HenselSpittel: return hs_m3 + hs_m8 * temperature;
+  case FlowLawKind::PerfectlyPlastic: return 0.0;
   }
   return 0.0;
 }
@@ -37,7 +37,9 @@ Real FlowLaw::secant_viscosity(Real rate) const {
   return coefficient() * std::pow(clamped, exponent() - 1.0);
 }
 
-Real FlowLaw::yield_stress(Real rate) const { return secant_viscosity(rate) * rate; }
+Real FlowLaw::yield_stress(Real rate) const {
+  return secant_viscosity(rate) * rate;
+}
 
 Real FlowLaw::yield_stress_derivative(Real rate) const {
   if (rate < rate1 || rate > rate2) return secant_viscosity(rate);
@@ -77,4 +79,4 @@ std::optional<std::string> check_flow_law(const FlowLaw& law) {
   return std::nullopt;
 }
 
-}  // namespace formflow::physics
+} // namespace formflow::physics

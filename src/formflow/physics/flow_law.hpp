@@ -26,16 +26,16 @@ enum class FlowLawKind { PiecewisePower, NortonHoff, HenselSpittel, PerfectlyPla
 
 struct FlowLaw {
   FlowLawKind kind = FlowLawKind::PiecewisePower;
-  Real A = 1.7320508075688772;  ///< √3: shear yield k = σ_p/√3 ≈ 1 (PiecewisePower)
-  Real alpha = 1e-3;            ///< strain-rate sensitivity, 0 < α ≤ 1 (PiecewisePower)
-  Real rate1 = 1e-3;            ///< lower limit of the power-law range
-  Real rate2 = 1e3;             ///< upper limit of the power-law range
-  Real K = 1.0;                       ///< Norton–Hoff consistency (stress·time^m)
-  Real m = 0.1;                       ///< Norton–Hoff rate sensitivity, 0 < m ≤ 1
-  Real sigma0 = 1.7320508075688772;   ///< PerfectlyPlastic yield stress
+  Real A = 1.7320508075688772;      ///< √3: shear yield k = σ_p/√3 ≈ 1 (PiecewisePower)
+  Real alpha = 1e-3;                ///< strain-rate sensitivity, 0 < α ≤ 1 (PiecewisePower)
+  Real rate1 = 1e-3;                ///< lower limit of the power-law range
+  Real rate2 = 1e3;                 ///< upper limit of the power-law range
+  Real K = 1.0;                     ///< Norton–Hoff consistency (stress·time^m)
+  Real m = 0.1;                     ///< Norton–Hoff rate sensitivity, 0 < m ≤ 1
+  Real sigma0 = 1.7320508075688772; ///< PerfectlyPlastic yield stress
   /// Hensel–Spittel parameters (see FlowLawKind) and the state it is evaluated at.
-  Real hs_A = 1.7320508075688772, hs_m1 = 0.0, hs_m2 = 0.0, hs_m3 = 0.1, hs_m4 = 0.0,
-       hs_m8 = 0.0, temperature = 0.0, strain = 1.0;
+  Real hs_A = 1.7320508075688772, hs_m1 = 0.0, hs_m2 = 0.0, hs_m3 = 0.1, hs_m4 = 0.0, hs_m8 = 0.0,
+       temperature = 0.0, strain = 1.0;
 
   /// C of σ_p = C ε̄̇^m on [rate1, rate2].
   Real coefficient() const;
@@ -67,4 +67,4 @@ using PowerLaw = FlowLaw;
 /// std::nullopt. A law that fails is refused at load time (io/case_file.cpp).
 std::optional<std::string> check_flow_law(const FlowLaw& law);
 
-}  // namespace formflow::physics
+} // namespace formflow::physics

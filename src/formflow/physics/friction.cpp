@@ -37,4 +37,4 @@ void NonlocalAverage::apply(const std::vector<Real>& pressure, std::vector<Real>
       averaged[i] += coefficients_[k] * pressure[neighbours_[k]];
 }
 
-}  // namespace formflow::physics
+} // namespace formflow::physics

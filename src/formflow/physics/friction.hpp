@@ -13,7 +13,7 @@ namespace formflow::physics {
 /// a fixed averaging operator over the quadrature points of Γ3, built once
 /// because the contact boundary does not move. Radius 0 gives the local pressure.
 class NonlocalAverage {
- public:
+public:
   /// `points`: coordinates of the Γ3 quadrature points (dim × n, any dim);
   /// `weights`: their surface measures JxW.
   NonlocalAverage(const MatrixX& points, const std::vector<Real>& weights, Real radius);
@@ -22,7 +22,7 @@ class NonlocalAverage {
   void apply(const std::vector<Real>& pressure, std::vector<Real>& averaged) const;
   int size() const { return static_cast<int>(offsets_.size()) - 1; }
 
- private:
+private:
   // Compressed rows of neighbour indices and normalised weights.
   std::vector<int> offsets_;
   std::vector<int> neighbours_;
@@ -44,7 +44,8 @@ inline Real friction_weight(Real threshold, Real slip_speed, Real d_t) {
 /// its traction stays clearly below the Coulomb limit, |σ_T| < 0.99 τ_f, which is
 /// |u_T| < 7.02 d_T (0.99/√(1 − 0.99²)): a slip far below the process speed.
 inline bool is_sticking_regularized(Real threshold, Real slip_speed, Real d_t) {
-  return threshold > 0 && friction_weight(threshold, slip_speed, d_t) * slip_speed < 0.99 * threshold;
+  return threshold > 0 &&
+         friction_weight(threshold, slip_speed, d_t) * slip_speed < 0.99 * threshold;
 }
 
 /// Exact Coulomb law in Alart–Curnier form: λ_T = proj_{|λ| ≤ τ_f}(t) with the trial
@@ -55,4 +56,4 @@ inline Real coulomb_projection_factor(Real threshold, Real trial_norm) {
   return trial_norm <= threshold ? 1.0 : threshold / trial_norm;
 }
 
-}  // namespace formflow::physics
+} // namespace formflow::physics

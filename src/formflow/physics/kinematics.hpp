@@ -10,8 +10,7 @@ namespace formflow::physics {
 
 /// ε̇ = ½(∇u + ∇uᵀ) as a 3×3 tensor from the dim×dim velocity gradient
 /// (∇u)_ij = ∂u_i/∂x_j. Plane strain (dim = 2) leaves ε̇_zz = 0.
-template <int dim>
-Tensor3 strain_rate(const Tensor2<dim>& velocity_gradient) {
+template <int dim> Tensor3 strain_rate(const Tensor2<dim>& velocity_gradient) {
   Tensor3 rate = Tensor3::Zero();
   rate.template topLeftCorner<dim, dim>() =
       0.5 * (velocity_gradient + velocity_gradient.transpose());
@@ -34,7 +33,9 @@ void add_hoop_rate(Tensor3& rate, const Tensor2<dim>& velocity_gradient, Real ra
 }
 
 /// Volumetric rate ε̇_V = tr ε̇.
-inline Real volumetric_rate(const Tensor3& rate) { return rate.trace(); }
+inline Real volumetric_rate(const Tensor3& rate) {
+  return rate.trace();
+}
 
 /// Deviator ė = ε̇ − ⅓ ε̇_V I (ė_zz = −⅓ ε̇_V in plane strain).
 inline Tensor3 deviator(const Tensor3& rate) {
@@ -47,4 +48,4 @@ inline Real equivalent_strain_rate(const Tensor3& rate) {
   return std::sqrt(2.0 / 3.0 * dev.cwiseProduct(dev).sum());
 }
 
-}  // namespace formflow::physics
+} // namespace formflow::physics

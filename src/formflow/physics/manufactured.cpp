@@ -43,7 +43,7 @@ Point<2> StreamFunctionField::velocity(const Point<2>& x) const {
 
 Tensor2<2> StreamFunctionField::gradient(const Point<2>& x) const {
   Tensor2<2> g;
-  g << psi(1, 1, x), psi(0, 2, x),  //  ∂(ψ_y)/∂x, ∂(ψ_y)/∂y
+  g << psi(1, 1, x), psi(0, 2, x), //  ∂(ψ_y)/∂x, ∂(ψ_y)/∂y
       -psi(2, 0, x), -psi(1, 1, x);
   return g;
 }
@@ -77,9 +77,10 @@ Point<2> manufactured_body_force(const PowerLaw& law, const StreamFunctionField&
     const Real rate_bar_k = 2.0 / 3.0 * dev.cwiseProduct(deviator(rate_k)).sum() / rate_bar;
     // f_i = −∂_k τ_ik, τ = ⅔ ν ε̇.
     for (int i = 0; i < 2; ++i)
-      force[i] -= 2.0 / 3.0 * (viscosity_slope * rate_bar_k * rate(i, k) + viscosity * rate_k(i, k));
+      force[i] -=
+          2.0 / 3.0 * (viscosity_slope * rate_bar_k * rate(i, k) + viscosity * rate_k(i, k));
   }
   return force;
 }
 
-}  // namespace formflow::physics
+} // namespace formflow::physics

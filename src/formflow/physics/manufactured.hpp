@@ -11,9 +11,9 @@ namespace formflow::physics {
 
 /// Which exact solution a verification case uses (case key verification.solution).
 enum class ManufacturedSolution {
-  None,       ///< not a verification case: the forming process of the case
-  Smooth,     ///< uniform extension plus a smooth vortex: curved streamlines, shear
-  Extension,  ///< uniform extension u = (x, −y): the patch test (reproduced exactly)
+  None,      ///< not a verification case: the forming process of the case
+  Smooth,    ///< uniform extension plus a smooth vortex: curved streamlines, shear
+  Extension, ///< uniform extension u = (x, −y): the patch test (reproduced exactly)
 };
 
 /// Plane velocity u = (∂ψ/∂y, −∂ψ/∂x) from the stream function
@@ -23,7 +23,7 @@ enum class ManufacturedSolution {
 /// rate ∂u_x/∂x stays positive, hence ε̄̇ > 0 everywhere (no degenerate
 /// viscosity) and the body force is smooth.
 class StreamFunctionField {
- public:
+public:
   /// c = `extension`, a = `amplitude`, k_x = `wave_x`, k_y = `wave_y`.
   StreamFunctionField(Real extension, Real amplitude, Real wave_x, Real wave_y);
   /// The fields of ManufacturedSolution::Smooth (c = 1, a = 1/4, k = (π, 2π))
@@ -36,7 +36,7 @@ class StreamFunctionField {
   /// Second derivatives: hessians[i](j, k) = ∂²u_i/∂x_j∂x_k.
   std::array<Tensor2<2>, 2> hessians(const Point<2>& x) const;
 
- private:
+private:
   /// ∂^(m+n)ψ/∂x^m ∂y^n at x, for m + n ≤ 3.
   Real psi(int m, int n, const Point<2>& x) const;
   Real extension_, amplitude_, wave_x_, wave_y_;
@@ -49,4 +49,4 @@ class StreamFunctionField {
 Point<2> manufactured_body_force(const PowerLaw& law, const StreamFunctionField& field,
                                  const Point<2>& x);
 
-}  // namespace formflow::physics
+} // namespace formflow::physics

@@ -18,7 +18,7 @@ enum class Symmetry { Plane, Axisymmetric };
 
 struct Process {
   ProcessType type = ProcessType::Extrusion;
-  Real speed = 1.0;  ///< u⁰, the prescribed normal speed on Γ1 (extrusion) or Γ5 (drawing)
+  Real speed = 1.0; ///< u⁰, the prescribed normal speed on Γ1 (extrusion) or Γ5 (drawing)
   RamCondition ram = RamCondition::Sliding;
 };
 
@@ -34,9 +34,9 @@ enum class FrictionRegularization { Regularized, None };
 
 /// Nonlocal Coulomb friction (eq. 3.14–3.15) on the chosen parts of Γ3.
 struct Friction {
-  Real mu = 0.0;        ///< Coulomb coefficient μ_f ≥ 0
-  Real radius = 0.0;    ///< mollifier radius h of σ̄_N; 0 = local pressure
-  Real d_t = 1e-6;      ///< regularisation d_T > 0
+  Real mu = 0.0;     ///< Coulomb coefficient μ_f ≥ 0
+  Real radius = 0.0; ///< mollifier radius h of σ̄_N; 0 = local pressure
+  Real d_t = 1e-6;   ///< regularisation d_T > 0
   bool on_container = true;
   bool on_die = true;
   FrictionRegularization regularization = FrictionRegularization::Regularized;
@@ -48,4 +48,4 @@ struct Friction {
   Real newton_augmentation = 100.0;
 };
 
-}  // namespace formflow::physics
+} // namespace formflow::physics

@@ -24,7 +24,8 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
   for (std::size_t first = 0; first < contact.size(); first += n_q) {
     const mesh::BoundaryFacet& facet = mesh.facets[contact[first].facet];
     const auto face = mesh::face_local_nodes<2>(mesh.nodes_per_side(), facet.local_face);
-    segments.push_back({first, mesh.cells(face.front(), facet.cell), mesh.cells(face.back(), facet.cell)});
+    segments.push_back(
+        {first, mesh.cells(face.front(), facet.cell), mesh.cells(face.back(), facet.cell)});
     by_node.emplace(segments.back().from, segments.size() - 1);
     by_node.emplace(segments.back().to, segments.size() - 1);
   }
@@ -43,7 +44,7 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
       const auto range = by_node.equal_range(node);
       const auto unused = std::count_if(range.first, range.second,
                                         [&](const auto& entry) { return !used[entry.second]; });
-      if (unused != 1) continue;  // interior joint, not a chain end
+      if (unused != 1) continue; // interior joint, not a chain end
       const bool on_rear = std::binary_search(rear.begin(), rear.end(), node);
       const Real key = on_rear ? -1.0 : mesh.nodes(0, node);
       if (key < best) best = key, start = node;
@@ -59,7 +60,8 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
   for (std::optional<Index> start = chain_start(); start; start = chain_start()) {
     for (Index node = *start;;) {
       auto range = by_node.equal_range(node);
-      auto next = std::find_if(range.first, range.second, [&](const auto& entry) { return !used[entry.second]; });
+      auto next = std::find_if(range.first, range.second,
+                               [&](const auto& entry) { return !used[entry.second]; });
       if (next == range.second) break;
       const Segment& segment = segments[next->second];
       used[next->second] = true;
@@ -86,7 +88,8 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
         sample.part = mesh.facets[point.facet].label == mesh::BoundaryLabel::Die ? 1 : 0;
         along.push_back(sample);
       }
-      std::sort(along.begin(), along.end(), [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
+      std::sort(along.begin(), along.end(),
+                [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
       samples.insert(samples.end(), along.begin(), along.end());
       for (int q = 0; q < n_q; ++q) {
         const auto& point = contact[segment.first_point + q];
@@ -99,4 +102,4 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
   return samples;
 }
 
-}  // namespace formflow::post
+} // namespace formflow::post

@@ -11,7 +11,8 @@ namespace formflow::post {
 
 template <int dim>
 CornerProfile corner_profile(const assembly::FormingProblem<dim>& problem, const VectorX& u,
-                             const Point<dim>& corner, Real r_min, Real r_max, int bins_per_decade) {
+                             const Point<dim>& corner, Real r_min, Real r_max,
+                             int bins_per_decade) {
   FF_ASSERT(r_min > 0 && r_max > r_min && bins_per_decade > 0, "corner profile range");
   const int n_bins =
       static_cast<int>(std::ceil(std::log10(r_max / r_min) * bins_per_decade - 1e-9));
@@ -27,8 +28,8 @@ CornerProfile corner_profile(const assembly::FormingProblem<dim>& problem, const
       if (distance < r_min || distance >= r_max) continue;
       const int bin = static_cast<int>(std::floor(std::log10(distance / r_min) * bins_per_decade));
       if (bin < 0 || bin >= n_bins) continue;
-      const Real rate = physics::equivalent_strain_rate(
-          physics::strain_rate<dim>(physics::velocity_gradient<dim>(velocities, values.gradients(q))));
+      const Real rate = physics::equivalent_strain_rate(physics::strain_rate<dim>(
+          physics::velocity_gradient<dim>(velocities, values.gradients(q))));
       area[bin] += values.JxW(q);
       integral[bin] += rate * values.JxW(q);
       largest[bin] = std::max(largest[bin], rate);
@@ -49,4 +50,4 @@ template CornerProfile corner_profile<2>(const assembly::FormingProblem<2>&, con
 template CornerProfile corner_profile<3>(const assembly::FormingProblem<3>&, const VectorX&,
                                          const Point<3>&, Real, Real, int);
 
-}  // namespace formflow::post
+} // namespace formflow::post

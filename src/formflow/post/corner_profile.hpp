@@ -12,9 +12,9 @@ namespace formflow::post {
 /// [r_min·10^(k/n), r_min·10^((k+1)/n)) with n bins per decade. Only bins that
 /// contain quadrature points are kept.
 struct CornerProfile {
-  std::vector<Real> radius;     ///< geometric centre of the annulus
-  std::vector<Real> mean_rate;  ///< area-weighted mean ε̄̇ over the material in the annulus
-  std::vector<Real> max_rate;   ///< largest ε̄̇ at a quadrature point in the annulus
+  std::vector<Real> radius;    ///< geometric centre of the annulus
+  std::vector<Real> mean_rate; ///< area-weighted mean ε̄̇ over the material in the annulus
+  std::vector<Real> max_rate;  ///< largest ε̄̇ at a quadrature point in the annulus
 };
 
 /// The profile of velocity `u` around `corner` from the points of the full
@@ -24,4 +24,4 @@ template <int dim>
 CornerProfile corner_profile(const assembly::FormingProblem<dim>& problem, const VectorX& u,
                              const Point<dim>& corner, Real r_min, Real r_max, int bins_per_decade);
 
-}  // namespace formflow::post
+} // namespace formflow::post

@@ -46,16 +46,15 @@ Real hydrostatic_square(const assembly::FormingProblem<dim>& problem, const Vect
     problem.gather(cell, &u_h, coordinates, velocities);
     values.reinit(coordinates);
     for (int q = 0; q < values.n_points(); ++q) {
-      const Real stress =
-          physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() /
-          problem.settings().penalty.d;
+      const Real stress = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() /
+                          problem.settings().penalty.d;
       sum += stress * stress * values.JxW(q);
     }
   }
   return sum;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 ErrorNorms error_norms(const assembly::FormingProblem<dim>& problem, const VectorX& u_h,
@@ -74,7 +73,7 @@ ErrorNorms difference_norms(const assembly::FormingProblem<dim>& problem, const 
   Real strain_square = 0.0, l2_square = 0.0;
   add_domain_terms<dim>(problem, difference, nullptr, strain_square, l2_square);
   for (const auto& point : problem.contact_state(difference))
-    strain_square += point.normal_velocity * point.normal_velocity * point.weight;  // ∫_Γ3 e_N²
+    strain_square += point.normal_velocity * point.normal_velocity * point.weight; // ∫_Γ3 e_N²
   return {std::sqrt(strain_square), std::sqrt(l2_square), 0.0};
 }
 
@@ -87,4 +86,4 @@ template ErrorNorms difference_norms<2>(const assembly::FormingProblem<2>&, cons
 template ErrorNorms difference_norms<3>(const assembly::FormingProblem<3>&, const VectorX&,
                                         const VectorX&);
 
-}  // namespace formflow::post
+} // namespace formflow::post

@@ -20,8 +20,7 @@ struct ErrorNorms {
 };
 
 /// The exact field: velocity and its gradient (∇u)_ij = ∂u_i/∂x_j at a point.
-template <int dim>
-struct ExactVelocity {
+template <int dim> struct ExactVelocity {
   std::function<Point<dim>(const Point<dim>&)> velocity;
   std::function<Tensor2<dim>(const Point<dim>&)> gradient;
 };
@@ -42,4 +41,4 @@ template <int dim>
 ErrorNorms difference_norms(const assembly::FormingProblem<dim>& problem, const VectorX& u_a,
                             const VectorX& u_b);
 
-}  // namespace formflow::post
+} // namespace formflow::post

@@ -15,17 +15,16 @@ void average(VectorX& sum, const VectorX& count) {
     if (count[k] > 0) sum[k] /= count[k];
 }
 
-template <int dim>
-fem::QuadratureRule<dim> node_rule(int order, int n_nodes) {
+template <int dim> fem::QuadratureRule<dim> node_rule(int order, int n_nodes) {
   fem::QuadratureRule<dim> rule;
   for (int a = 0; a < n_nodes; ++a) {
     rule.points.push_back(fem::reference_node<dim>(order, a));
-    rule.weights.push_back(1.0);  // unused: only the gradients at the nodes are wanted
+    rule.weights.push_back(1.0); // unused: only the gradients at the nodes are wanted
   }
   return rule;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX& u,
@@ -33,7 +32,8 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   const auto& mesh = problem.mesh();
   const Real d = problem.settings().penalty.d;
   const assembly::ConstraintMultipliers<dim>* mixed =
-      problem.multipliers() && problem.multipliers()->has_pressure_space() ? problem.multipliers() : nullptr;
+      problem.multipliers() && problem.multipliers()->has_pressure_space() ? problem.multipliers()
+                                                                           : nullptr;
   const int n = mesh.nodes_per_cell();
   fem::CellValues<dim> at_nodes(mesh.order, node_rule<dim>(mesh.order, n));
   fem::CellValues<dim> full_values(mesh.order, problem.full_rule());
@@ -78,8 +78,10 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
       for (int q = 0; q < volumetric_values.n_points(); ++q) {
         // σ_H = ε̇_V/d (eq. 3.6), the Lagrange multiplier of incompressibility.
         stress_at_points[q] = (velocities.cwiseProduct(volumetric_values.gradients(q)).sum() +
-                               problem.hoop_rate_at(volumetric_values, velocities, q)) / d;
-        fields.cell_hydrostatic_stress[cell] += stress_at_points[q] * volumetric_values.JxW(q) / area;
+                               problem.hoop_rate_at(volumetric_values, velocities, q)) /
+                              d;
+        fields.cell_hydrostatic_stress[cell] +=
+            stress_at_points[q] * volumetric_values.JxW(q) / area;
       }
       nodal_stress = pressure_to_nodes * stress_at_points;
     }
@@ -130,4 +132,4 @@ template Fields nodal_fields<2>(const assembly::FormingProblem<2>&, const Vector
 template Fields nodal_fields<3>(const assembly::FormingProblem<3>&, const VectorX&,
                                 const std::vector<assembly::ContactPoint<3>>&);
 
-}  // namespace formflow::post
+} // namespace formflow::post

@@ -32,8 +32,8 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
       mean_pressure_of_cells_at(problem, u, mesh::BoundaryLabel::Rear);
   results.fields = nodal_fields(problem, u, contact);
   results.max_equivalent_strain_rate = results.fields.cell_equivalent_strain_rate.maxCoeff();
-  results.max_equivalent_strain_rate =
-      std::max(results.max_equivalent_strain_rate, results.fields.equivalent_strain_rate.maxCoeff());
+  results.max_equivalent_strain_rate = std::max(results.max_equivalent_strain_rate,
+                                                results.fields.equivalent_strain_rate.maxCoeff());
   if constexpr (dim == 2) results.contact = contact_profile(problem, contact);
   contact_zones(problem, contact, results.container_zones, results.die_zones);
 }
@@ -43,4 +43,4 @@ template void evaluate_results<2>(const assembly::FormingProblem<2>&, const Vect
 template void evaluate_results<3>(const assembly::FormingProblem<3>&, const VectorX&, Results&,
                                   const assembly::FrictionMultipliers<3>*);
 
-}  // namespace formflow::post
+} // namespace formflow::post

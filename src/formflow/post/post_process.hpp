@@ -44,4 +44,4 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
                       Results& results,
                       const assembly::FrictionMultipliers<dim>* multipliers = nullptr);
 
-}  // namespace formflow::post
+} // namespace formflow::post

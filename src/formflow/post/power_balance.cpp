@@ -28,12 +28,13 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
       power.viscous_form += 2.0 / 3.0 * settings.law.secant_viscosity(equivalent) *
                             measured.cwiseProduct(measured).sum() * full_values.JxW(q);
     }
-    if (mixed) continue;  // the pressure term's power follows the loop
+    if (mixed) continue; // the pressure term's power follows the loop
     for (int q = 0; q < volumetric_values.n_points(); ++q) {
       const Real volumetric =
           physics::velocity_gradient<dim>(velocities, volumetric_values.gradients(q)).trace() +
           problem.hoop_rate_at(volumetric_values, velocities, q);
-      power.volumetric_penalty += volumetric * volumetric / settings.penalty.d * volumetric_values.JxW(q);
+      power.volumetric_penalty +=
+          volumetric * volumetric / settings.penalty.d * volumetric_values.JxW(q);
     }
   }
   // Mixed: ∫ σ_H div u dx = (1/d)‖P div u‖² for d > 0, → 0 for the exact constraint.
@@ -60,14 +61,15 @@ Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, con
     problem.gather(facet.cell, &u, coordinates, velocities);
     problem.reinit(values, coordinates);
     if (problem.multipliers() && problem.multipliers()->has_pressure_space()) {
-      integral -= problem.multipliers()->pressure_integral(facet.cell, u);  // −σ_H dx
+      integral -= problem.multipliers()->pressure_integral(facet.cell, u); // −σ_H dx
       for (int q = 0; q < values.n_points(); ++q) area += values.JxW(q);
       continue;
     }
     for (int q = 0; q < values.n_points(); ++q) {
-      const Real volumetric = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() +
-                              problem.hoop_rate_at(values, velocities, q);
-      integral += -volumetric / problem.settings().penalty.d * values.JxW(q);  // −σ_H dx
+      const Real volumetric =
+          physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() +
+          problem.hoop_rate_at(values, velocities, q);
+      integral += -volumetric / problem.settings().penalty.d * values.JxW(q); // −σ_H dx
       area += values.JxW(q);
     }
   }
@@ -78,7 +80,9 @@ template PowerTerms compute_powers<2>(const assembly::FormingProblem<2>&, const 
                                       const std::vector<assembly::ContactPoint<2>>&);
 template PowerTerms compute_powers<3>(const assembly::FormingProblem<3>&, const VectorX&,
                                       const std::vector<assembly::ContactPoint<3>>&);
-template Real mean_pressure_of_cells_at<2>(const assembly::FormingProblem<2>&, const VectorX&, mesh::BoundaryLabel);
-template Real mean_pressure_of_cells_at<3>(const assembly::FormingProblem<3>&, const VectorX&, mesh::BoundaryLabel);
+template Real mean_pressure_of_cells_at<2>(const assembly::FormingProblem<2>&, const VectorX&,
+                                           mesh::BoundaryLabel);
+template Real mean_pressure_of_cells_at<3>(const assembly::FormingProblem<3>&, const VectorX&,
+                                           mesh::BoundaryLabel);
 
-}  // namespace formflow::post
+} // namespace formflow::post

@@ -15,58 +15,58 @@ namespace formflow::post {
 /// the half model and divided by the height the speed is imposed on (ram height
 /// for extrusion, exit half height for drawing).
 struct Pressures {
-  Real ram_reaction = 0.0;   ///< reaction force on the driven end / its height
-  Real power_balance = 0.0;  ///< (plastic dissipation + friction power) / (u⁰·height)
-  Real total_power = 0.0;    ///< all discrete terms of b and j_dT / (u⁰·height)
+  Real ram_reaction = 0.0;  ///< reaction force on the driven end / its height
+  Real power_balance = 0.0; ///< (plastic dissipation + friction power) / (u⁰·height)
+  Real total_power = 0.0;   ///< all discrete terms of b and j_dT / (u⁰·height)
   /// Mean of −σ_H (compression positive) over the column of cells touching the ram.
   Real mean_hydrostatic_near_ram = 0.0;
 };
 
 /// Powers (per unit depth of the half model) of each discrete term at the final velocity.
 struct PowerTerms {
-  Real plastic_dissipation = 0.0;  ///< ∫ σ_p(ε̄̇) ε̄̇ dx
-  Real viscous_form = 0.0;         ///< a(u; u, u) (≥ dissipation when the full ε̇ is used)
-  Real volumetric_penalty = 0.0;   ///< ∫ ε̇_V²/d dx
-  Real contact_penalty = 0.0;      ///< ∫_Γ3 u_N²/d_N dΓ
-  Real friction = 0.0;             ///< ∫_Γ3 λ_T·u_T dΓ (regularised: τ_f |u_T|²/√(|u_T|² + d_T²))
+  Real plastic_dissipation = 0.0; ///< ∫ σ_p(ε̄̇) ε̄̇ dx
+  Real viscous_form = 0.0;        ///< a(u; u, u) (≥ dissipation when the full ε̇ is used)
+  Real volumetric_penalty = 0.0;  ///< ∫ ε̇_V²/d dx
+  Real contact_penalty = 0.0;     ///< ∫_Γ3 u_N²/d_N dΓ
+  Real friction = 0.0; ///< ∫_Γ3 λ_T·u_T dΓ (regularised: τ_f |u_T|²/√(|u_T|² + d_T²))
   Real total() const { return viscous_form + volumetric_penalty + contact_penalty + friction; }
 };
 
 /// One sample of the contact boundary Γ3 (a facet quadrature point), ordered by arc length.
 struct ContactSample {
-  Real arc_length = 0.0;        ///< s, measured along Γ3 from the ram end of the container wall
+  Real arc_length = 0.0; ///< s, measured along Γ3 from the ram end of the container wall
   Real x = 0.0, y = 0.0;
-  Real contact_pressure = 0.0;  ///< −σ_N = u_N/d_N (local, not mollified)
-  Real friction_stress = 0.0;   ///< |σ_T| = |λ_T|, the friction traction magnitude
-  Real slip_velocity = 0.0;     ///< |u_T|
-  bool sticking = false;        ///< ContactPoint::sticking (regularised: |u_T| < 7 d_T)
-  int part = 0;                 ///< 0 container, 1 die (mesh::BoundaryLabel order)
+  Real contact_pressure = 0.0; ///< −σ_N = u_N/d_N (local, not mollified)
+  Real friction_stress = 0.0;  ///< |σ_T| = |λ_T|, the friction traction magnitude
+  Real slip_velocity = 0.0;    ///< |u_T|
+  bool sticking = false;       ///< ContactPoint::sticking (regularised: |u_T| < 7 d_T)
+  int part = 0;                ///< 0 container, 1 die (mesh::BoundaryLabel order)
 };
 
 /// Stick and slip zones of one contact part, measured with the Γ3 quadrature weights
 /// (each point stands for its share JxW of the boundary).
 struct ContactZones {
-  Real length = 0.0;        ///< measure of the part
-  Real stick_length = 0.0;  ///< where ContactPoint::sticking
+  Real length = 0.0;       ///< measure of the part
+  Real stick_length = 0.0; ///< where ContactPoint::sticking
   Real slip_length() const { return length - stick_length; }
 };
 
 /// Outcome of the augmented-Lagrangian loop of exact friction (zero when regularised).
 struct Augmentation {
-  int outer_iterations = 0;      ///< multiplier updates
-  Real multiplier_change = 0.0;  ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
+  int outer_iterations = 0;     ///< multiplier updates
+  Real multiplier_change = 0.0; ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
 };
 
 /// Fields on the mesh nodes (averaged from integration points) and cell means.
 struct Fields {
   /// Velocity, shape (dim · n_nodes), node-major: (u_x, u_y) of node 0, node 1, ...
   VectorX velocity;
-  VectorX equivalent_strain_rate;  ///< n_nodes, ε̄̇
-  VectorX hydrostatic_stress;      ///< n_nodes, σ_H (tension positive)
-  VectorX contact_pressure;        ///< n_nodes, 0 away from Γ3
-  VectorX friction_stress;         ///< n_nodes, 0 away from Γ3
-  VectorX cell_equivalent_strain_rate;  ///< n_cells, cell mean
-  VectorX cell_hydrostatic_stress;      ///< n_cells, cell mean
+  VectorX equivalent_strain_rate;      ///< n_nodes, ε̄̇
+  VectorX hydrostatic_stress;          ///< n_nodes, σ_H (tension positive)
+  VectorX contact_pressure;            ///< n_nodes, 0 away from Γ3
+  VectorX friction_stress;             ///< n_nodes, 0 away from Γ3
+  VectorX cell_equivalent_strain_rate; ///< n_cells, cell mean
+  VectorX cell_hydrostatic_stress;     ///< n_cells, cell mean
 };
 
 struct Results {
@@ -93,7 +93,7 @@ struct Results {
   std::vector<ContactSample> contact;
   ContactZones container_zones, die_zones;
   Augmentation augmentation;
-  PhaseTimes timing;  ///< seconds per phase: total, mesh, assembly, factorization, solve, post
+  PhaseTimes timing; ///< seconds per phase: total, mesh, assembly, factorization, solve, post
 };
 
-}  // namespace formflow::post
+} // namespace formflow::post

@@ -34,7 +34,7 @@ void pressure_estimate(const StudyRung& first, const StudyRung& second, StudyRun
   if (std::abs(ratio_a - ratio_b) > 1e-6 * ratio_b || std::abs(std::log(ratio_b)) < 1e-12) return;
   const Real step_a = second.pressure.ram_reaction - first.pressure.ram_reaction;
   const Real step_b = third.pressure.ram_reaction - second.pressure.ram_reaction;
-  if (!(step_a * step_b > 0)) return;  // not monotone: no asymptotic range yet
+  if (!(step_a * step_b > 0)) return; // not monotone: no asymptotic range yet
   const Real order = std::log(step_a / step_b) / std::log(ratio_b);
   third.pressure_order = order;
   const Real denominator = std::pow(ratio_b, order) - 1.0;
@@ -42,7 +42,7 @@ void pressure_estimate(const StudyRung& first, const StudyRung& second, StudyRun
     third.pressure_extrapolated = third.pressure.ram_reaction + step_b / denominator;
 }
 
-}  // namespace
+} // namespace
 
 void compute_orders(StudyTable& table) {
   auto& rungs = table.rungs;
@@ -53,11 +53,12 @@ void compute_orders(StudyTable& table) {
     const std::optional<ErrorNorms>& now = rung.error ? rung.error : rung.difference;
     const std::optional<ErrorNorms>& before = previous.error ? previous.error : previous.difference;
     if (now && before) {
-      rung.order_v = observed_order(previous.parameter, before->v_norm, rung.parameter, now->v_norm);
+      rung.order_v =
+          observed_order(previous.parameter, before->v_norm, rung.parameter, now->v_norm);
       rung.order_l2 = observed_order(previous.parameter, before->l2, rung.parameter, now->l2);
     }
     if (k >= 2 && rungs[k - 2].converged()) pressure_estimate(rungs[k - 2], previous, rung);
   }
 }
 
-}  // namespace formflow::post
+} // namespace formflow::post

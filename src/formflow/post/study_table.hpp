@@ -14,16 +14,16 @@ namespace formflow::post {
 
 /// One run of a study.
 struct StudyRung {
-  std::string value_text;  ///< the varied key's value as given
-  Real parameter = 0.0;    ///< its numeric value (> 0: the x axis of the log-log plot)
+  std::string value_text; ///< the varied key's value as given
+  Real parameter = 0.0;   ///< its numeric value (> 0: the x axis of the log-log plot)
   Index dofs = 0;
   int iterations = 0;
   solvers::StopReason stop_reason = solvers::StopReason::MaxIterations;
   Real seconds = 0.0;
   Pressures pressure;
-  std::optional<ErrorNorms> error;       ///< against the exact field (manufactured solutions)
-  std::optional<ErrorNorms> difference;  ///< ‖u − u_last‖ when every rung has the same mesh
-  std::optional<Real> reciprocal_condition;  ///< CHOLMOD rcond of K(u), when asked for
+  std::optional<ErrorNorms> error;      ///< against the exact field (manufactured solutions)
+  std::optional<ErrorNorms> difference; ///< ‖u − u_last‖ when every rung has the same mesh
+  std::optional<Real> reciprocal_condition; ///< CHOLMOD rcond of K(u), when asked for
   /// Observed orders against the parameter between the previous rung and this
   /// one, ln(e_k/e_{k−1}) / ln(p_k/p_{k−1}), of `error` (or else of `difference`).
   std::optional<Real> order_v, order_l2;
@@ -37,8 +37,8 @@ struct StudyRung {
 };
 
 struct StudyTable {
-  std::string key;          ///< the varied case key ("mesh.size")
-  std::string description;  ///< one line: which case, which fixed overrides
+  std::string key;         ///< the varied case key ("mesh.size")
+  std::string description; ///< one line: which case, which fixed overrides
   std::vector<StudyRung> rungs;
   /// The order theory predicts for the V and L2 norms of this ladder (drawn
   /// as reference slopes), when known: Theorem 4.1 for a manufactured
@@ -56,7 +56,8 @@ struct StudyTable {
 /// breaks the three-rung pressure estimate.
 void compute_orders(StudyTable& table);
 
-/// ln(e_k/e_{k−1}) / ln(p_k/p_{k−1}); nullopt unless all four are finite and positive, p_k ≠ p_{k−1}.
+/// ln(e_k/e_{k−1}) / ln(p_k/p_{k−1}); nullopt unless all four are finite and positive, p_k ≠
+/// p_{k−1}.
 std::optional<Real> observed_order(Real p_previous, Real e_previous, Real p, Real e);
 
-}  // namespace formflow::post
+} // namespace formflow::post

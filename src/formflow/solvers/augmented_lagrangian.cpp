@@ -38,7 +38,8 @@ std::pair<Real, Real> multiplier_norms(const std::vector<assembly::ContactPoint<
 } // namespace
 
 template <int dim>
-Real update_friction_multipliers(const assembly::FormingProblem<dim>& problem, const VectorX& velocity,
+Real update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
+                                 const VectorX& velocity,
                                  assembly::FrictionMultipliers<dim>& multipliers) {
   // λᵏ⁺¹ = proj(λᵏ + r uᵏ_T): the traction contact_state evaluates for λᵏ at uᵏ.
   const auto state = problem.contact_state(velocity, &multipliers);
@@ -70,8 +71,7 @@ augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSo
     const IterationObserver renumbered = [&](const IterationRecord& record) {
       IterationRecord shifted = record;
       shifted.iteration += offset;
-      if (on_iteration)
-        on_iteration(shifted);
+      if (on_iteration) on_iteration(shifted);
     };
     SecantOutcome step =
         inner(outcome.multipliers, warm ? &solve.velocity : nullptr, inner_control, renumbered);
@@ -84,8 +84,7 @@ augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSo
     solve.stop_reason = step.stop_reason;
     warm = true;
     ++outcome.augmentations;
-    if (step.stop_reason != StopReason::Converged)
-      return outcome;
+    if (step.stop_reason != StopReason::Converged) return outcome;
 
     outcome.multiplier_change =
         update_friction_multipliers(problem, solve.velocity, outcome.multipliers);
@@ -93,8 +92,7 @@ augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSo
       solve.stop_reason = StopReason::NonFinite;
       return outcome;
     }
-    if (outcome.multiplier_change < control.tolerance)
-      return outcome; // Converged
+    if (outcome.multiplier_change < control.tolerance) return outcome; // Converged
   }
 }
 

@@ -48,7 +48,8 @@ augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSo
 /// One Uzawa update λᵏ⁺¹ = proj_{|λ| ≤ τ_f(u)}(λᵏ + r u_T) at `velocity`, in place;
 /// returns ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3) (0 where there is no friction at all).
 template <int dim>
-Real update_friction_multipliers(const assembly::FormingProblem<dim>& problem, const VectorX& velocity,
+Real update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
+                                 const VectorX& velocity,
                                  assembly::FrictionMultipliers<dim>& multipliers);
 
 /// The secant-modulus iteration as the inner solve (same solver and timers throughout).

@@ -51,4 +51,4 @@ template AugmentedOutcome<3> augmented_newton<3>(const assembly::FormingProblem<
                                                  const IterationControl&, const IterationObserver&,
                                                  PhaseTimes&, const VectorX*);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -22,4 +22,4 @@ AugmentedOutcome<dim> augmented_newton(const assembly::FormingProblem<dim>& prob
                                        const IterationObserver& on_iteration, PhaseTimes& times,
                                        const VectorX* initial = nullptr);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -9,7 +9,7 @@ namespace formflow::solvers {
 namespace {
 
 class CholmodSolver final : public LinearSolver {
- public:
+public:
   CholmodSolver() {
     // CHOLMOD prints its own warnings (e.g. "not positive definite") unless
     // silenced; we report failures through return values instead.
@@ -29,12 +29,14 @@ class CholmodSolver final : public LinearSolver {
   }
   std::string name() const override { return "cholmod-supernodal"; }
 
- private:
+private:
   Eigen::CholmodSupernodalLLT<assembly::SparseMatrix, Eigen::Lower> factorization_;
 };
 
-}  // namespace
+} // namespace
 
-std::unique_ptr<LinearSolver> make_cholmod_solver() { return std::make_unique<CholmodSolver>(); }
+std::unique_ptr<LinearSolver> make_cholmod_solver() {
+  return std::make_unique<CholmodSolver>();
+}
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -13,9 +13,9 @@ Real reciprocal_condition_estimate(const assembly::SparseMatrix& lower) {
   // A simplicial LLᵀ keeps the diagonal of L directly readable by cholmod_rcond.
   common.supernodal = CHOLMOD_SIMPLICIAL;
   common.final_ll = 1;
-  assembly::SparseMatrix copy = lower;  // viewAsCholmod needs a non-const matrix
+  assembly::SparseMatrix copy = lower; // viewAsCholmod needs a non-const matrix
   cholmod_sparse view = Eigen::viewAsCholmod(Eigen::Ref<assembly::SparseMatrix>(copy));
-  view.stype = -1;  // symmetric, lower triangle stored
+  view.stype = -1; // symmetric, lower triangle stored
   cholmod_factor* factor = cholmod_analyze(&view, &common);
   Real rcond = 0.0;
   if (factor && cholmod_factorize(&view, factor, &common) && common.status == CHOLMOD_OK)
@@ -25,4 +25,4 @@ Real reciprocal_condition_estimate(const assembly::SparseMatrix& lower) {
   return rcond;
 }
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -12,4 +12,4 @@ namespace formflow::solvers {
 /// 0 when the factorisation fails (not positive definite).
 Real reciprocal_condition_estimate(const assembly::SparseMatrix& lower);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

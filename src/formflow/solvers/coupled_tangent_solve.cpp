@@ -10,8 +10,8 @@
 namespace formflow::solvers {
 namespace {
 class JacobianOperator;
-}  // namespace
-}  // namespace formflow::solvers
+} // namespace
+} // namespace formflow::solvers
 
 // Eigen's matrix-free pattern ("Matrix-free solvers" in the Eigen manual): an
 // EigenBase type with the traits of a sparse matrix and its own product.
@@ -19,18 +19,22 @@ namespace Eigen::internal {
 template <>
 struct traits<formflow::solvers::JacobianOperator>
     : public traits<Eigen::SparseMatrix<formflow::Real, Eigen::ColMajor, formflow::Index>> {};
-}  // namespace Eigen::internal
+} // namespace Eigen::internal
 
 namespace formflow::solvers {
 namespace {
 
 /// J x = T x + N x with T from its lower triangle.
 class JacobianOperator : public Eigen::EigenBase<JacobianOperator> {
- public:
+public:
   using Scalar = Real;
   using RealScalar = Real;
   using StorageIndex = Index;
-  enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic, IsRowMajor = false };
+  enum {
+    ColsAtCompileTime = Eigen::Dynamic,
+    MaxColsAtCompileTime = Eigen::Dynamic,
+    IsRowMajor = false
+  };
 
   JacobianOperator(const assembly::SparseMatrix& lower, const CouplingProduct& coupling)
       : lower_(lower), coupling_(coupling) {}
@@ -38,8 +42,8 @@ class JacobianOperator : public Eigen::EigenBase<JacobianOperator> {
   Eigen::Index cols() const { return lower_.cols(); }
 
   template <typename Rhs>
-  Eigen::Product<JacobianOperator, Rhs, Eigen::AliasFreeProduct> operator*(
-      const Eigen::MatrixBase<Rhs>& x) const {
+  Eigen::Product<JacobianOperator, Rhs, Eigen::AliasFreeProduct>
+  operator*(const Eigen::MatrixBase<Rhs>& x) const {
     return Eigen::Product<JacobianOperator, Rhs, Eigen::AliasFreeProduct>(*this, x.derived());
   }
 
@@ -48,35 +52,32 @@ class JacobianOperator : public Eigen::EigenBase<JacobianOperator> {
     coupling_(x, y);
   }
 
- private:
+private:
   const assembly::SparseMatrix& lower_;
   const CouplingProduct& coupling_;
 };
 
 /// T⁻¹ from the factorisation held by a LinearSolver (already computed).
 class FactorPreconditioner {
- public:
+public:
   void attach(LinearSolver* factorized) { factorized_ = factorized; }
-  template <typename Matrix>
-  FactorPreconditioner& analyzePattern(const Matrix&) { return *this; }
-  template <typename Matrix>
-  FactorPreconditioner& factorize(const Matrix&) { return *this; }
-  template <typename Matrix>
-  FactorPreconditioner& compute(const Matrix&) { return *this; }
-  template <typename Rhs>
-  VectorX solve(const Rhs& b) const {
+  template <typename Matrix> FactorPreconditioner& analyzePattern(const Matrix&) { return *this; }
+  template <typename Matrix> FactorPreconditioner& factorize(const Matrix&) { return *this; }
+  template <typename Matrix> FactorPreconditioner& compute(const Matrix&) { return *this; }
+  template <typename Rhs> VectorX solve(const Rhs& b) const {
     VectorX x;
-    if (!factorized_->solve(VectorX(b), x)) x.setConstant(b.size(), std::numeric_limits<Real>::quiet_NaN());
+    if (!factorized_->solve(VectorX(b), x))
+      x.setConstant(b.size(), std::numeric_limits<Real>::quiet_NaN());
     return x;
   }
   Eigen::ComputationInfo info() const { return Eigen::Success; }
 
- private:
+private:
   LinearSolver* factorized_ = nullptr;
 };
 
-}  // namespace
-}  // namespace formflow::solvers
+} // namespace
+} // namespace formflow::solvers
 
 namespace Eigen::internal {
 template <typename Rhs>
@@ -93,7 +94,7 @@ struct generic_product_impl<formflow::solvers::JacobianOperator, Rhs, SparseShap
     dst += alpha * product;
   }
 };
-}  // namespace Eigen::internal
+} // namespace Eigen::internal
 
 namespace formflow::solvers {
 
@@ -124,4 +125,4 @@ KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
   return outcome;
 }
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -15,8 +15,8 @@ using CouplingProduct = std::function<void(const VectorX& x, VectorX& y)>;
 
 struct KrylovOutcome {
   bool converged = false;
-  int iterations = 0;    ///< GMRES iterations = extra triangular solves
-  Real residual = 0.0;   ///< final ‖T⁻¹(b − Jδ)‖ / ‖T⁻¹b‖
+  int iterations = 0;  ///< GMRES iterations = extra triangular solves
+  Real residual = 0.0; ///< final ‖T⁻¹(b − Jδ)‖ / ‖T⁻¹b‖
 };
 
 /// Solves (T + N) δ = b, T the symmetric matrix given by its lower triangle and
@@ -30,4 +30,4 @@ KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
                                     const VectorX& rhs, VectorX& delta, Real tolerance,
                                     int max_iterations);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

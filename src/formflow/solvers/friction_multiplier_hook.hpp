@@ -15,10 +15,9 @@ namespace formflow::solvers {
 /// search); after the iteration, `after_iteration(velocity)` may update them and
 /// says whether they have settled. The loop stops as converged only
 /// when its own change is below δ and they have settled.
-template <int dim>
-struct FrictionMultiplierHook {
+template <int dim> struct FrictionMultiplierHook {
   const assembly::FrictionMultipliers<dim>* multipliers = nullptr;
   std::function<bool(const VectorX& velocity)> after_iteration;
 };
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -31,7 +31,7 @@ SecantOutcome run_lagged_iteration(const assembly::FormingProblem<dim>& problem,
                                    const std::function<void(const IterationRecord&)>& on_iteration,
                                    const VectorX* start, Solve&& solve) {
   SecantOutcome outcome;
-  outcome.velocity = problem.constraints().values;  // u = 0 except prescribed values
+  outcome.velocity = problem.constraints().values; // u = 0 except prescribed values
   if (start) {
     outcome.velocity = *start;
   } else if (const LaggedStep first = solve(nullptr, outcome.velocity); first.stop) {
@@ -66,4 +66,4 @@ SecantOutcome run_lagged_iteration(const assembly::FormingProblem<dim>& problem,
   return outcome;
 }
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -12,7 +12,7 @@ namespace formflow::solvers {
 /// Direct solver of K x = b for a symmetric positive definite K given by its
 /// lower triangle. Failures are reported by return value, never by exception.
 class LinearSolver {
- public:
+public:
   virtual ~LinearSolver() = default;
   /// Fill-reducing ordering and symbolic factorisation of the pattern of `lower`.
   virtual bool analyze(const assembly::SparseMatrix& lower) = 0;
@@ -31,4 +31,4 @@ std::unique_ptr<LinearSolver> make_cholmod_solver();
 /// (both triangles) in analyze/factorize.
 std::unique_ptr<LinearSolver> make_umfpack_solver();
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

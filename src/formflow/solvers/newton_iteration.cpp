@@ -40,21 +40,20 @@ constexpr Real max_forcing = 1e-2, min_forcing = 1e-3;
 constexpr int max_krylov_iterations = 20;
 
 /// Working state shared by the steps of one solve.
-template <int dim>
-struct NewtonWork {
+template <int dim> struct NewtonWork {
   const assembly::FormingProblem<dim>& problem;
   LinearSolver& solver;
   PhaseTimes& times;
   assembly::LinearSystem secant, tangent;
   assembly::UnsymmetricTangent<dim> coupling;
-  VectorX force;                     ///< internal force K(u)u at the last residual evaluation
-  assembly::NewtonDuals<dim> duals;  ///< empty = primal (the exact tangent)
-  Real forcing = max_forcing;        ///< GMRES tolerance η of the next Newton step
-  Real tolerance = 0.0;              ///< δ of the stop rule
+  VectorX force;                    ///< internal force K(u)u at the last residual evaluation
+  assembly::NewtonDuals<dim> duals; ///< empty = primal (the exact tangent)
+  Real forcing = max_forcing;       ///< GMRES tolerance η of the next Newton step
+  Real tolerance = 0.0;             ///< δ of the stop rule
   /// tangent, coupling and force were assembled at the current iterate with the
   /// current duals (by the previous step's line search): no assembly needed.
   bool tangent_ready = false;
-  const FrictionMultiplierHook<dim>* friction = nullptr;  ///< exact friction's λ̂ (may be null)
+  const FrictionMultiplierHook<dim>* friction = nullptr; ///< exact friction's λ̂ (may be null)
   const assembly::FrictionMultipliers<dim>* multipliers() const {
     return friction ? friction->multipliers : nullptr;
   }
@@ -87,8 +86,8 @@ template <int dim>
 Real slope_at(NewtonWork<dim>& work, const VectorX& velocity, const VectorX& step, Real t,
               const VectorX& free_step) {
   const VectorX trial = velocity + t * step;
-  work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), work.duals, work.force,
-                               nullptr, nullptr, work.multipliers());
+  work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), work.duals,
+                               work.force, nullptr, nullptr, work.multipliers());
   return free_step.dot(free_part(work.problem.plan(), work.force));
 }
 
@@ -120,13 +119,13 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
     const CouplingProduct coupling = [&](const VectorX& x, VectorX& y) {
       work.problem.apply_coupling(work.coupling, x, y);
     };
-    const KrylovOutcome krylov = solve_coupled_tangent(
-        work.tangent.matrix, coupling, work.solver, -gradient, free_step, work.forcing,
-        max_krylov_iterations);
+    const KrylovOutcome krylov =
+        solve_coupled_tangent(work.tangent.matrix, coupling, work.solver, -gradient, free_step,
+                              work.forcing, max_krylov_iterations);
     work.times.count("krylov iterations", krylov.iterations);
     if (!free_step.allFinite()) return std::nullopt;
   }
-  const Real slope0 = free_step.dot(gradient);  // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
+  const Real slope0 = free_step.dot(gradient); // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
   if (!(slope0 < 0)) return std::nullopt;
   const VectorX step = plan.expand(free_step, VectorX::Zero(plan.n_dofs()));
 
@@ -188,7 +187,7 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   return next;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
@@ -197,8 +196,9 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
                                PhaseTimes& times, const VectorX* initial,
                                const FrictionMultiplierHook<dim>* friction) {
   SecantOutcome outcome;
-  NewtonWork<dim> work{problem, solver, times, problem.plan().make_system(),
-                       problem.plan().make_system(), {}, {}, {}};
+  NewtonWork<dim> work{
+      problem, solver, times, problem.plan().make_system(), problem.plan().make_system(),
+      {},      {},     {}};
   work.tolerance = control.tolerance;
   work.friction = friction;
   outcome.velocity = problem.constraints().values;
@@ -211,8 +211,8 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     }
   }
   if (initial) {
-    outcome.velocity = problem.plan().expand(free_part(problem.plan(), *initial),
-                                             problem.constraints().values);
+    outcome.velocity =
+        problem.plan().expand(free_part(problem.plan(), *initial), problem.constraints().values);
   } else if (auto stop = secant_step(work, nullptr, outcome.velocity)) {
     outcome.stop_reason = *stop;
     return outcome;
@@ -232,7 +232,8 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     const auto start = std::chrono::steady_clock::now();
     std::optional<VectorX> next;
     Real full_change = 0.0;
-    if (step_change <= control.newton_start) next = newton_step(work, outcome.velocity, full_change);
+    if (step_change <= control.newton_start)
+      next = newton_step(work, outcome.velocity, full_change);
     const bool newton = next.has_value();
     if (!next) {
       next.emplace();
@@ -251,16 +252,18 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     IterationRecord record;
     record.iteration = iteration;
     record.relative_change = change;
-    record.pressure = (newton ? problem.driven_force(work.force) : problem.driven_force(work.secant, *next)) /
-                      problem.driven_height();
-    record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record.pressure =
+        (newton ? problem.driven_force(work.force) : problem.driven_force(work.secant, *next)) /
+        problem.driven_height();
+    record.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.velocity = std::move(*next);
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
     const bool settled =
         !friction || !friction->after_iteration || friction->after_iteration(outcome.velocity);
     if (const auto stop = stop_after_iteration(change, step_change, record.pressure,
-                                             control.tolerance, settled)) {
+                                               control.tolerance, settled)) {
       outcome.stop_reason = *stop;
       return outcome;
     }
@@ -280,4 +283,4 @@ template SecantOutcome newton_iteration<3>(const assembly::FormingProblem<3>&, L
                                            PhaseTimes&, const VectorX*,
                                            const FrictionMultiplierHook<3>*);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -61,4 +61,4 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
                                PhaseTimes& times, const VectorX* initial = nullptr,
                                const FrictionMultiplierHook<dim>* friction = nullptr);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -7,7 +7,6 @@
 #include "formflow/solvers/lagged_iteration.hpp"
 #include "formflow/solvers/uzawa_update.hpp"
 
-
 namespace formflow::solvers {
 
 namespace {
@@ -34,12 +33,10 @@ LaggedStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
       saddle.fill_matrix(system);
       if (analyse) {
         ScopedTimer timer(times, "analysis");
-        if (!solver.analyze(saddle.matrix()))
-          return {StopReason::SolverFailed, false};
+        if (!solver.analyze(saddle.matrix())) return {StopReason::SolverFailed, false};
       }
       ScopedTimer timer(times, "factorization");
-      if (!solver.factorize(saddle.matrix()))
-        return {StopReason::SolverFailed, false};
+      if (!solver.factorize(saddle.matrix())) return {StopReason::SolverFailed, false};
     }
     const VectorX& pressure = multipliers.global_pressure();
     VectorX solution;
@@ -48,8 +45,7 @@ LaggedStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
       if (!solver.solve(saddle.rhs(system, pressure), solution))
         return {StopReason::SolverFailed, false};
     }
-    if (!solution.allFinite())
-      return {StopReason::NonFinite, false};
+    if (!solution.allFinite()) return {StopReason::NonFinite, false};
     velocity =
         problem.plan().expand(solution.head(saddle.n_velocity()), problem.constraints().values);
     VectorX next_pressure = pressure + solution.tail(saddle.n_pressure());
@@ -61,10 +57,10 @@ LaggedStep solve_saddle_point(const assembly::FormingProblem<dim>& problem, Line
       result.constraints_converged = true;
       break;
     }
-    if (const auto stop = update_multipliers(problem, velocity, settling, result.constraints_converged))
+    if (const auto stop =
+            update_multipliers(problem, velocity, settling, result.constraints_converged))
       return {stop, false};
-    if (result.constraints_converged)
-      break;
+    if (result.constraints_converged) break;
   }
   return result;
 }
@@ -85,10 +81,11 @@ saddle_point_secant_iteration(const assembly::FormingProblem<dim>& problem, Line
     ScopedTimer timer(times, "setup");
     saddle.emplace(problem, *problem.multipliers(), system);
   }
-  bool analyse = true;  // the first solve analyses the pattern
+  bool analyse = true; // the first solve analyses the pattern
   return run_lagged_iteration(
       problem, system, control, on_iteration, nullptr, [&](const VectorX* w, VectorX& next) {
-        const LaggedStep step = solve_saddle_point(problem, solver, *saddle, w, system, analyse, next, times);
+        const LaggedStep step =
+            solve_saddle_point(problem, solver, *saddle, w, system, analyse, next, times);
         analyse = false;
         return step;
       });

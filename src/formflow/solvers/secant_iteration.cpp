@@ -9,11 +9,10 @@ namespace {
 
 /// Assembles K(w), factorises and solves; returns the full velocity or a stop reason.
 template <int dim>
-std::optional<StopReason> solve_linearised(const assembly::FormingProblem<dim>& problem,
-                                           LinearSolver& solver, const VectorX* w,
-                                           assembly::LinearSystem& system, bool analyse,
-                                           VectorX& velocity, PhaseTimes& times,
-                                           const assembly::FrictionMultipliers<dim>* multipliers) {
+std::optional<StopReason>
+solve_linearised(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+                 const VectorX* w, assembly::LinearSystem& system, bool analyse, VectorX& velocity,
+                 PhaseTimes& times, const assembly::FrictionMultipliers<dim>* multipliers) {
   {
     ScopedTimer timer(times, "assembly");
     problem.assemble(w, system, multipliers);
@@ -36,17 +35,16 @@ std::optional<StopReason> solve_linearised(const assembly::FormingProblem<dim>& 
   return std::nullopt;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
-SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
-                               const IterationControl& control,
-                               const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times,
-                               const assembly::FrictionMultipliers<dim>* multipliers,
-                               const VectorX* start) {
+SecantOutcome
+secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+                 const IterationControl& control,
+                 const std::function<void(const IterationRecord&)>& on_iteration, PhaseTimes& times,
+                 const assembly::FrictionMultipliers<dim>* multipliers, const VectorX* start) {
   assembly::LinearSystem system = problem.plan().make_system();
-  bool analysed = false;  // the first solve analyses the pattern, warm start or not
+  bool analysed = false; // the first solve analyses the pattern, warm start or not
   return run_lagged_iteration(
       problem, system, control, on_iteration, start, [&](const VectorX* w, VectorX& next) {
         const std::optional<StopReason> stop =
@@ -67,4 +65,4 @@ template SecantOutcome secant_iteration<3>(const assembly::FormingProblem<3>&, L
                                            PhaseTimes&, const assembly::FrictionMultipliers<3>*,
                                            const VectorX*);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

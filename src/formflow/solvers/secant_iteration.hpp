@@ -13,7 +13,7 @@
 namespace formflow::solvers {
 
 struct SecantOutcome {
-  VectorX velocity;  ///< the last iterate (full dof vector)
+  VectorX velocity; ///< the last iterate (full dof vector)
   StopReason stop_reason = StopReason::MaxIterations;
   std::vector<IterationRecord> history;
 };
@@ -31,4 +31,4 @@ SecantOutcome secant_iteration(const assembly::FormingProblem<dim>& problem, Lin
                                const assembly::FrictionMultipliers<dim>* multipliers = nullptr,
                                const VectorX* start = nullptr);
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -12,11 +12,11 @@ enum class StopReason { Converged, MaxIterations, Diverged, NonFinite, SolverFai
 
 inline std::string_view stop_reason_name(StopReason reason) {
   switch (reason) {
-    case StopReason::Converged: return "converged";
-    case StopReason::MaxIterations: return "max_iterations";
-    case StopReason::Diverged: return "diverged";
-    case StopReason::NonFinite: return "non_finite";
-    case StopReason::SolverFailed: return "solver_failed";
+  case StopReason::Converged: return "converged";
+  case StopReason::MaxIterations: return "max_iterations";
+  case StopReason::Diverged: return "diverged";
+  case StopReason::NonFinite: return "non_finite";
+  case StopReason::SolverFailed: return "solver_failed";
   }
   return "unknown";
 }
@@ -28,9 +28,9 @@ enum class NonlinearMethod { Secant, Newton };
 /// Stopping rule of the secant iteration (SPEC §3): ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < tolerance.
 /// Newton uses the same rule on its (damped) steps, so counts are comparable.
 struct IterationControl {
-  Real tolerance = 1e-4;     ///< δ
-  int max_iterations = 500;  ///< iteration limit; reaching it is a stop reason, not an error
-  Real initial_rate = 1.0;   ///< ε̄̇ whose secant viscosity starts the iteration
+  Real tolerance = 1e-4;    ///< δ
+  int max_iterations = 500; ///< iteration limit; reaching it is a stop reason, not an error
+  Real initial_rate = 1.0;  ///< ε̄̇ whose secant viscosity starts the iteration
   NonlinearMethod method = NonlinearMethod::Newton;
   /// Newton only: secant steps are taken while the relative change exceeds this.
   Real newton_start = 0.5;
@@ -42,9 +42,9 @@ struct IterationControl {
 /// One line of the iteration history.
 struct IterationRecord {
   int iteration = 0;
-  Real relative_change = 0.0;  ///< ‖uⁿ⁺¹ − uⁿ‖ / ‖uⁿ⁺¹‖
-  Real pressure = 0.0;         ///< current process pressure (ram reaction / height)
-  Real seconds = 0.0;          ///< wall time of this iteration
+  Real relative_change = 0.0; ///< ‖uⁿ⁺¹ − uⁿ‖ / ‖uⁿ⁺¹‖
+  Real pressure = 0.0;        ///< current process pressure (ram reaction / height)
+  Real seconds = 0.0;         ///< wall time of this iteration
 };
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

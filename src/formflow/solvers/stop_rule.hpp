@@ -18,11 +18,12 @@ inline constexpr Real divergence_threshold = 1e6;
 /// for divergence (Newton: the step taken), `pressure` the monitored pressure;
 /// `others_converged` lets a loop add its own condition (Uzawa: the multipliers).
 inline std::optional<StopReason> stop_after_iteration(Real change, Real step_change, Real pressure,
-                                                      Real tolerance, bool others_converged = true) {
+                                                      Real tolerance,
+                                                      bool others_converged = true) {
   if (!std::isfinite(change) || !std::isfinite(pressure)) return StopReason::NonFinite;
   if (step_change > divergence_threshold) return StopReason::Diverged;
   if (change < tolerance && others_converged) return StopReason::Converged;
   return std::nullopt;
 }
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -6,18 +6,17 @@
 
 #include "formflow/core/error.hpp"
 
-
 namespace formflow::solvers {
 
 namespace {
 
-
 /// One secant step at the lagged velocity `w` (null: constant viscosity):
 /// factorise K_r(w) once, then Uzawa steps until the multipliers settle.
 template <int dim>
-LaggedStep solve_with_multipliers(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
-                                 const VectorX* w, assembly::LinearSystem& system, bool analyse,
-                                 VectorX& velocity, PhaseTimes& times) {
+LaggedStep solve_with_multipliers(const assembly::FormingProblem<dim>& problem,
+                                  LinearSolver& solver, const VectorX* w,
+                                  assembly::LinearSystem& system, bool analyse, VectorX& velocity,
+                                  PhaseTimes& times) {
   assembly::ConstraintMultipliers<dim>& multipliers = *problem.multipliers();
   const assembly::Formulation& formulation = multipliers.formulation();
   LaggedStep result{std::nullopt, false};
@@ -30,26 +29,22 @@ LaggedStep solve_with_multipliers(const assembly::FormingProblem<dim>& problem, 
     if (step == 0) {
       if (analyse) {
         ScopedTimer timer(times, "analysis");
-        if (!solver.analyze(system.matrix))
-          return {StopReason::SolverFailed, false};
+        if (!solver.analyze(system.matrix)) return {StopReason::SolverFailed, false};
       }
       ScopedTimer timer(times, "factorization");
-      if (!solver.factorize(system.matrix))
-        return {StopReason::SolverFailed, false};
+      if (!solver.factorize(system.matrix)) return {StopReason::SolverFailed, false};
     }
     VectorX free_velocity;
     {
       ScopedTimer timer(times, "solve");
-      if (!solver.solve(system.rhs, free_velocity))
-        return {StopReason::SolverFailed, false};
+      if (!solver.solve(system.rhs, free_velocity)) return {StopReason::SolverFailed, false};
     }
-    if (!free_velocity.allFinite())
-      return {StopReason::NonFinite, false};
+    if (!free_velocity.allFinite()) return {StopReason::NonFinite, false};
     velocity = problem.plan().expand(free_velocity, problem.constraints().values);
-    if (const auto stop = update_multipliers(problem, velocity, settling, result.constraints_converged))
+    if (const auto stop =
+            update_multipliers(problem, velocity, settling, result.constraints_converged))
       return {stop, false};
-    if (result.constraints_converged)
-      break;
+    if (result.constraints_converged) break;
   }
   return result;
 }
@@ -65,10 +60,11 @@ uzawa_secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolve
   FF_ASSERT(problem.multipliers() && problem.multipliers()->needs_uzawa(),
             "Uzawa steps need exact-constraint multipliers");
   assembly::LinearSystem system = problem.plan().make_system();
-  bool analyse = true;  // the first solve analyses the pattern
+  bool analyse = true; // the first solve analyses the pattern
   return run_lagged_iteration(
       problem, system, control, on_iteration, nullptr, [&](const VectorX* w, VectorX& next) {
-        const LaggedStep step = solve_with_multipliers(problem, solver, w, system, analyse, next, times);
+        const LaggedStep step =
+            solve_with_multipliers(problem, solver, w, system, analyse, next, times);
         analyse = false;
         return step;
       });

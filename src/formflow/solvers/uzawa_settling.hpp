@@ -18,7 +18,7 @@ namespace formflow::solvers {
 /// every secant step spent all its Uzawa steps). A floor below √tolerance
 /// counts as settled; a stall above it does not.
 class UzawaSettling {
- public:
+public:
   explicit UzawaSettling(Real tolerance) : tolerance_(tolerance) {}
 
   /// After a step with relative multiplier change `change`: true to stop stepping.
@@ -32,10 +32,10 @@ class UzawaSettling {
   /// Whether the last step ended settled (converged to the tolerance or to the floor).
   bool converged() const { return converged_; }
 
- private:
+private:
   Real tolerance_;
   Real previous_ = std::numeric_limits<Real>::infinity();
   bool converged_ = false;
 };
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -32,4 +32,4 @@ std::optional<StopReason> update_multipliers(const assembly::FormingProblem<dim>
   return std::nullopt;
 }
 
-}  // namespace formflow::solvers
+} // namespace formflow::solvers

@@ -37,7 +37,8 @@ VectorX interpolate(const Nodes& nodes, const Field& field) {
 }
 
 /// ∫ integrand(ε̇) r dA by the same quadrature, from the field's exact strain rate.
-double integrate(const fem::CellValues<2>& values, const std::function<double(const Point<2>&)>& f) {
+double integrate(const fem::CellValues<2>& values,
+                 const std::function<double(const Point<2>&)>& f) {
   double sum = 0.0;
   for (int q = 0; q < values.n_points(); ++q) sum += f(values.point(q)) * values.JxW(q);
   return sum;
@@ -52,11 +53,13 @@ TEST(Axisymmetric, VolumetricPenaltyEnergyOfARadialField) {
     const double d = 1e-3;
     add_volumetric_penalty_axisymmetric(values, d, k);
     // u = (0, r): ε̇_V = ∂u_r/∂r + u_r/r = 2, interpolated exactly by Q1 and Q2.
-    const VectorX u = interpolate(off_axis_cell(order), [](const Point<2>& p) { return Point<2>(0.0, p.y()); });
+    const VectorX u =
+        interpolate(off_axis_cell(order), [](const Point<2>& p) { return Point<2>(0.0, p.y()); });
     const double exact = integrate(values, [&](const Point<2>&) { return 4.0 / d; });
     EXPECT_TRUE(approx(u.dot(k * u), exact, 1e-12));
     // u = (2x, −r): isochoric (2 − 1 − 1 = 0), no penalty energy.
-    const VectorX w = interpolate(off_axis_cell(order), [](const Point<2>& p) { return Point<2>(2 * p.x(), -p.y()); });
+    const VectorX w = interpolate(off_axis_cell(order),
+                                  [](const Point<2>& p) { return Point<2>(2 * p.x(), -p.y()); });
     EXPECT_TRUE(approx(w.dot(k * w), 0.0, 0, 1e-9 * exact));
   }
 }
@@ -74,12 +77,15 @@ TEST(Axisymmetric, ViscousEnergyIncludesTheHoopRate) {
       // u = (x, r): ε̇ = diag(1, 1, 1) with the hoop rate u_r/r = 1: ε̇:ε̇ = 3, ė = 0.
       const VectorX u = interpolate(off_axis_cell(order), [](const Point<2>& p) { return p; });
       const double density = strain == physics::ViscousStrain::Full ? 3.0 : 0.0;
-      const double exact = integrate(values, [&](const Point<2>&) { return 2.0 / 3.0 * 1.7 * density; });
+      const double exact =
+          integrate(values, [&](const Point<2>&) { return 2.0 / 3.0 * 1.7 * density; });
       EXPECT_TRUE(approx(u.dot(k * u), exact, 1e-12, 1e-12));
       // u = (0, r): ε̇ = diag(0, 1, 1): ε̇:ε̇ = 2, ė:ė = 2 − 4/3 = 2/3.
-      const VectorX v = interpolate(off_axis_cell(order), [](const Point<2>& p) { return Point<2>(0.0, p.y()); });
+      const VectorX v =
+          interpolate(off_axis_cell(order), [](const Point<2>& p) { return Point<2>(0.0, p.y()); });
       const double v_density = strain == physics::ViscousStrain::Full ? 2.0 : 2.0 / 3.0;
-      const double v_exact = integrate(values, [&](const Point<2>&) { return 2.0 / 3.0 * 1.7 * v_density; });
+      const double v_exact =
+          integrate(values, [&](const Point<2>&) { return 2.0 / 3.0 * 1.7 * v_density; });
       EXPECT_TRUE(approx(v.dot(k * v), v_exact, 1e-12));
     }
 }
@@ -96,7 +102,9 @@ TEST(Axisymmetric, KernelsMatchTheStrainRateOfTheProblem) {
   const assembly::FormingProblem<2> problem(m, settings);
   fem::CellValues<2> values(2, problem.full_rule());
   Nodes coordinates, velocities;
-  const Field field = [](const Point<2>& p) { return Point<2>(p.x() * p.y(), 0.3 * p.y() * p.x() * p.x()); };
+  const Field field = [](const Point<2>& p) {
+    return Point<2>(p.x() * p.y(), 0.3 * p.y() * p.x() * p.x());
+  };
   VectorX u(problem.n_dofs());
   for (Index n = 0; n < m.n_nodes(); ++n) u.segment<2>(2 * n) = field(m.nodes.col(n));
   for (Index cell : {Index{0}, m.n_cells() - 1}) {
@@ -110,7 +118,8 @@ TEST(Axisymmetric, KernelsMatchTheStrainRateOfTheProblem) {
     double direct = 0.0;
     for (int q = 0; q < values.n_points(); ++q) {
       const Tensor3 rate = problem.strain_rate_at(values, velocities, q);
-      EXPECT_TRUE(approx(rate(2, 2), (velocities * values.shape(q))[1] / values.point(q)[1], 1e-14, 1e-14));
+      EXPECT_TRUE(
+          approx(rate(2, 2), (velocities * values.shape(q))[1] / values.point(q)[1], 1e-14, 1e-14));
       direct += 2.0 / 3.0 * rate.cwiseProduct(rate).sum() * values.JxW(q);
     }
     EXPECT_TRUE(approx(local.dot(k * local), direct, 1e-12));
@@ -132,5 +141,5 @@ TEST(Axisymmetric, DrivenHeightIsTheIntegralOfR) {
   EXPECT_TRUE(approx(assembly::FormingProblem<2>(m, settings).driven_height(), 0.5, 1e-14));
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Dirichlet data of extrusion (sliding, sticking ram) and drawing, checked node by node by coordinates.
+// Dirichlet data of extrusion (sliding, sticking ram) and drawing, checked node by node by
+// coordinates.
 #include "formflow/assembly/constraints.hpp"
 
 #include "formflow/fem/dof_map.hpp"
@@ -24,7 +25,9 @@ using physics::RamCondition;
 const mesh::ChannelGeometry geometry{4, 4, 2, 4};
 constexpr double speed = 1.7;
 
-bool at(double value, double target) { return std::abs(value - target) < 1e-12; }
+bool at(double value, double target) {
+  return std::abs(value - target) < 1e-12;
+}
 
 physics::Process process(ProcessType type, RamCondition ram) {
   physics::Process p;
@@ -47,12 +50,14 @@ Expected expected_at(const Point<2>& p, ProcessType type, RamCondition ram) {
   return {driven, symmetry || sticking, driven ? speed : 0.0};
 }
 
-class ProcessConstraints : public ::testing::TestWithParam<std::tuple<int, ProcessType, RamCondition>> {};
+class ProcessConstraints
+    : public ::testing::TestWithParam<std::tuple<int, ProcessType, RamCondition>> {};
 
 TEST_P(ProcessConstraints, PrescribeExactlyTheDrivenEndAndTheSymmetryPlane) {
   const auto [order, type, ram] = GetParam();
   const mesh::Mesh<2> m = mesh::make_channel_mesh(geometry, 1.0, order);
-  const assembly::DirichletConstraints c = assembly::make_process_constraints<2>(m, process(type, ram));
+  const assembly::DirichletConstraints c =
+      assembly::make_process_constraints<2>(m, process(type, ram));
   ASSERT_EQ(static_cast<Index>(c.prescribed.size()), 2 * m.n_nodes());
   ASSERT_EQ(c.values.size(), 2 * m.n_nodes());
   Index n_driven = 0;
@@ -79,14 +84,16 @@ TEST_P(ProcessConstraints, PrescribeExactlyTheDrivenEndAndTheSymmetryPlane) {
   std::vector<Index> sorted = c.driven_dofs;
   std::sort(sorted.begin(), sorted.end());
   EXPECT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
-  EXPECT_EQ(c.driven_label, type == ProcessType::Extrusion ? mesh::BoundaryLabel::Rear : mesh::BoundaryLabel::Front);
+  EXPECT_EQ(c.driven_label, type == ProcessType::Extrusion ? mesh::BoundaryLabel::Rear
+                                                           : mesh::BoundaryLabel::Front);
   // Lattice nodes on the driven end: o·4 + 1 on the rear (height 4), o·2 + 1 on the front.
   EXPECT_EQ(n_driven, type == ProcessType::Extrusion ? 4 * order + 1 : 2 * order + 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Processes, ProcessConstraints,
-    ::testing::Combine(::testing::Values(1, 2), ::testing::Values(ProcessType::Extrusion, ProcessType::Drawing),
+    ::testing::Combine(::testing::Values(1, 2),
+                       ::testing::Values(ProcessType::Extrusion, ProcessType::Drawing),
                        ::testing::Values(RamCondition::Sliding, RamCondition::Sticking)),
     [](const auto& info) {
       return std::string(std::get<0>(info.param) == 1 ? "Q1" : "Q2") +
@@ -97,23 +104,24 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ProcessConstraints, SlidingRamLeavesRearVerticalVelocityFreeExceptOnTheAxis) {
   // The paper's ram (σ_T = 0): u_y is free on Γ1 except at the symmetry corner.
   const mesh::Mesh<2> m = mesh::make_channel_mesh(geometry, 1.0, 1);
-  const auto c = assembly::make_process_constraints<2>(m, process(ProcessType::Extrusion, RamCondition::Sliding));
+  const auto c = assembly::make_process_constraints<2>(
+      m, process(ProcessType::Extrusion, RamCondition::Sliding));
   Index free_on_rear = 0;
   for (Index node = 0; node < m.n_nodes(); ++node)
     if (at(m.nodes(0, node), 0.0) && !c.prescribed[fem::dof_of<2>(node, 1)]) ++free_on_rear;
-  EXPECT_EQ(free_on_rear, 4);  // y = 1, 2, 3, 4
+  EXPECT_EQ(free_on_rear, 4); // y = 1, 2, 3, 4
 }
 
 TEST(NodesOn, AscendingUniqueAndOnTheirLine) {
   for (int order : {1, 2}) {
     const mesh::Mesh<2> m = mesh::make_channel_mesh(geometry, 1.0, order);
     const std::vector<Index> symmetry = assembly::nodes_on<2>(m, mesh::BoundaryLabel::Symmetry);
-    EXPECT_EQ(static_cast<Index>(symmetry.size()), 8 * order + 1);  // x = 0 … 8
+    EXPECT_EQ(static_cast<Index>(symmetry.size()), 8 * order + 1); // x = 0 … 8
     EXPECT_TRUE(std::is_sorted(symmetry.begin(), symmetry.end()));
     EXPECT_TRUE(std::adjacent_find(symmetry.begin(), symmetry.end()) == symmetry.end());
     for (Index node : symmetry) EXPECT_TRUE(at(m.nodes(1, node), 0.0));
     const std::vector<Index> die = assembly::nodes_on<2>(m, mesh::BoundaryLabel::Die);
-    EXPECT_EQ(static_cast<Index>(die.size()), 2 * order + 1);  // y = 2 … 4 on x = 4
+    EXPECT_EQ(static_cast<Index>(die.size()), 2 * order + 1); // y = 2 … 4 on x = 4
     for (Index node : die) {
       EXPECT_TRUE(at(m.nodes(0, node), 4.0));
       EXPECT_GE(m.nodes(1, node), 2.0 - 1e-12);
@@ -122,5 +130,5 @@ TEST(NodesOn, AscendingUniqueAndOnTheirLine) {
   }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -60,7 +60,8 @@ TEST(ContactNormals, StraightWallGivesTheFaceNormalAtEveryNode) {
     const auto normals = assembly::nodal_contact_normals<2>(mesh, all_facets(mesh), 45.0);
     ASSERT_EQ(normals.size(), 4u * (order + 1));
     const Point<2> expected = Point<2>(-0.25, 1.0).normalized();
-    for (const Point<2>& normal : normals) EXPECT_NEAR((normal - expected).norm(), 0.0, 1e-12) << order;
+    for (const Point<2>& normal : normals)
+      EXPECT_NEAR((normal - expected).norm(), 0.0, 1e-12) << order;
   }
 }
 
@@ -68,7 +69,8 @@ TEST(ContactNormals, KinkBetweenEqualFacesGivesTheBisectorOrBothFaceNormals) {
   const Real turn = 15.0 * std::numbers::pi / 180.0;
   // Top: horizontal for s ≤ 1, then turned down by `turn`, each face of length 1.
   auto top = [turn](Real s) {
-    return s <= 1.0 ? Point<2>(s, 2.0) : Point<2>(1.0 + (s - 1.0) * std::cos(turn), 2.0 - (s - 1.0) * std::sin(turn));
+    return s <= 1.0 ? Point<2>(s, 2.0)
+                    : Point<2>(1.0 + (s - 1.0) * std::cos(turn), 2.0 - (s - 1.0) * std::sin(turn));
   };
   auto bottom = [](Real s) { return Point<2>(s, 0.0); };
   for (int order : {1, 2}) {
@@ -78,10 +80,10 @@ TEST(ContactNormals, KinkBetweenEqualFacesGivesTheBisectorOrBothFaceNormals) {
     const Point<2> bisector(std::sin(turn / 2), std::cos(turn / 2));
 
     const auto averaged = assembly::nodal_contact_normals<2>(mesh, all_facets(mesh), 45.0);
-    ASSERT_EQ(top_node(mesh, 0, n_q - 1), top_node(mesh, 1, 0));  // the shared corner node
+    ASSERT_EQ(top_node(mesh, 0, n_q - 1), top_node(mesh, 1, 0)); // the shared corner node
     EXPECT_NEAR((averaged[n_q - 1] - bisector).norm(), 0.0, 1e-12) << order;
     EXPECT_NEAR((averaged[n_q] - bisector).norm(), 0.0, 1e-12) << order;
-    EXPECT_NEAR((averaged[0] - first).norm(), 0.0, 1e-12) << order;  // one face only
+    EXPECT_NEAR((averaged[0] - first).norm(), 0.0, 1e-12) << order; // one face only
     EXPECT_NEAR((averaged[2 * n_q - 1] - second).norm(), 0.0, 1e-12) << order;
 
     // A 15° turn is a corner for corner_angle = 10°: each face keeps its normal.
@@ -126,7 +128,8 @@ TEST(ContactNormals, ProblemEvaluatesContactAtTheNodesWithTheNodalNormals) {
   // u_N, u_T and −σ_N = u_N/d_N use the nodal normal (the bisector at the kink).
   const Real turn = 15.0 * std::numbers::pi / 180.0;
   auto top = [turn](Real s) {
-    return s <= 1.0 ? Point<2>(s, 2.0) : Point<2>(1.0 + (s - 1.0) * std::cos(turn), 2.0 - (s - 1.0) * std::sin(turn));
+    return s <= 1.0 ? Point<2>(s, 2.0)
+                    : Point<2>(1.0 + (s - 1.0) * std::cos(turn), 2.0 - (s - 1.0) * std::sin(turn));
   };
   for (int order : {1, 2}) {
     const auto mesh = strip(2, order, top, [](Real s) { return Point<2>(s, 0.0); });
@@ -139,7 +142,8 @@ TEST(ContactNormals, ProblemEvaluatesContactAtTheNodesWithTheNodalNormals) {
     ASSERT_TRUE(problem.contact_points_at_nodes());
 
     VectorX u(mesh.n_nodes() * 2);
-    for (Index node = 0; node < mesh.n_nodes(); ++node) u.segment<2>(fem::dof_of<2>(node, 0)) = Point<2>(1.0, 0.0);
+    for (Index node = 0; node < mesh.n_nodes(); ++node)
+      u.segment<2>(fem::dof_of<2>(node, 0)) = Point<2>(1.0, 0.0);
     const auto state = problem.contact_state(u);
     const auto normals = assembly::nodal_contact_normals<2>(mesh, all_facets(mesh), 60.0);
     ASSERT_EQ(state.size(), normals.size());
@@ -150,16 +154,16 @@ TEST(ContactNormals, ProblemEvaluatesContactAtTheNodesWithTheNodalNormals) {
       const Index node = top_node(mesh, static_cast<Index>(k) / n_q, static_cast<int>(k) % n_q);
       EXPECT_NEAR((point.position - mesh.nodes.col(node)).norm(), 0.0, 1e-12);
       EXPECT_NEAR((point.normal - normals[k]).norm(), 0.0, 1e-15);
-      EXPECT_NEAR(point.normal_velocity, normals[k].x(), 1e-15);  // u = (1, 0)
+      EXPECT_NEAR(point.normal_velocity, normals[k].x(), 1e-15); // u = (1, 0)
       EXPECT_NEAR(point.tangential_velocity.dot(point.normal), 0.0, 1e-15);
       EXPECT_NEAR(point.contact_pressure, point.normal_velocity / settings.penalty.d_n, 1e-6);
       length += point.weight;
     }
-    EXPECT_NEAR(length, 2.0, 1e-12);  // two faces of length 1
+    EXPECT_NEAR(length, 2.0, 1e-12); // two faces of length 1
     // The corner node slides: u_N there is u·(bisector), sin(7.5°), not 0 or sin 15°.
     EXPECT_NEAR(state[n_q - 1].normal_velocity, std::sin(turn / 2), 1e-12);
   }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

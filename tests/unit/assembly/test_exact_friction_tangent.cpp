@@ -22,7 +22,7 @@ assembly::ProblemSettings exact_friction_settings(physics::ViscousStrain strain,
   settings.symmetry = symmetry;
   settings.friction.mu = 0.2;
   settings.friction.regularization = physics::FrictionRegularization::None;
-  settings.friction.augmentation = 0.1;  // r = 1
+  settings.friction.augmentation = 0.1; // r = 1
   settings.penalty.d = 0.1;
   settings.penalty.d_n = 0.1;
   return settings;
@@ -124,5 +124,5 @@ TEST(ExactFrictionJacobian, FullJacobianWithTheThresholdCouplingMatchesFiniteDif
     }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -15,7 +15,7 @@ using Nodes = fem::CellValues<2>::Gradients;
 
 mesh::Mesh<2> wedge_mesh(int order) {
   mesh::ChannelGeometry geometry{1.0, 1.0, 0.6, 1.0};
-  geometry.die = mesh::DieShape::Arc;  // curved die face: curved Q2 cells
+  geometry.die = mesh::DieShape::Arc; // curved die face: curved Q2 cells
   geometry.die_radius = 1.0;
   geometry.land_length = 0.25;
   return mesh::make_die_channel_mesh(geometry, 0.125, order);
@@ -36,8 +36,10 @@ TEST_P(GeometryCache, CellValuesEqualFreshlyMappedOnes) {
   settings.symmetry = c.symmetry;
   settings.contact.normals = c.normals;
   const FormingProblem<2> problem(m, settings);
-  fem::CellValues<2> fresh_full(c.order, problem.full_rule()), fresh_volumetric(c.order, problem.volumetric_rule());
-  fem::CellValues<2> full(c.order, problem.full_rule()), volumetric(c.order, problem.volumetric_rule());
+  fem::CellValues<2> fresh_full(c.order, problem.full_rule()),
+      fresh_volumetric(c.order, problem.volumetric_rule());
+  fem::CellValues<2> full(c.order, problem.full_rule()),
+      volumetric(c.order, problem.volumetric_rule());
   Nodes coordinates, unused;
   for (Index cell = m.n_cells() - 1; cell >= 0; --cell) {
     problem.gather(cell, nullptr, coordinates, unused);
@@ -86,7 +88,7 @@ TEST_P(GeometryCache, ContactPointsEqualFreshlyMappedFaces) {
       if (c.normals == ContactNormals::Faces) {
         EXPECT_EQ(point.normal, fresh.normal(q));
         EXPECT_EQ(point.normal_velocity, velocity.dot(fresh.normal(q)));
-      } else {  // nodal normals: unit, and the velocity split along them
+      } else { // nodal normals: unit, and the velocity split along them
         EXPECT_NEAR(point.normal.norm(), 1.0, 1e-14);
         EXPECT_NEAR(point.normal_velocity, velocity.dot(point.normal), 1e-14);
       }
@@ -101,5 +103,5 @@ INSTANTIATE_TEST_SUITE_P(
                       CacheCase{2, physics::Symmetry::Axisymmetric, ContactNormals::Nodes},
                       CacheCase{1, physics::Symmetry::Plane, ContactNormals::Nodes}));
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

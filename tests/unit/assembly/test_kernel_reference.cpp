@@ -23,22 +23,21 @@ namespace {
 constexpr double roundoff = 1e-13;
 
 /// A distorted cell of `order`: each reference node moved by a smooth O(0.1) field.
-template <int dim>
-typename fem::CellValues<dim>::Gradients distorted_cell(int order) {
+template <int dim> typename fem::CellValues<dim>::Gradients distorted_cell(int order) {
   int n = 1;
   for (int d = 0; d < dim; ++d) n *= order + 1;
   typename fem::CellValues<dim>::Gradients nodes(dim, n);
   for (int a = 0; a < n; ++a) {
     const Point<dim> xi = fem::reference_node<dim>(order, a);
     for (int i = 0; i < dim; ++i)
-      nodes(i, a) = (1.0 + 0.2 * i) * xi[i] + 0.08 * std::sin(1.7 * xi.sum() + i) + 0.05 * xi[(i + 1) % dim] * xi[i];
+      nodes(i, a) = (1.0 + 0.2 * i) * xi[i] + 0.08 * std::sin(1.7 * xi.sum() + i) +
+                    0.05 * xi[(i + 1) % dim] * xi[i];
   }
   return nodes;
 }
 
 /// A symmetric 3×3 tensor, trace free when `deviatoric`, zero out of plane in 2D.
-template <int dim>
-Tensor3 tensor(double seed, bool deviatoric) {
+template <int dim> Tensor3 tensor(double seed, bool deviatoric) {
   Tensor3 t = Tensor3::Zero();
   for (int i = 0; i < dim; ++i)
     for (int j = 0; j <= i; ++j) t(i, j) = t(j, i) = std::cos(seed + 3.0 * i + 1.3 * j);
@@ -49,17 +48,18 @@ Tensor3 tensor(double seed, bool deviatoric) {
 MatrixX prefilled(int size) {
   MatrixX m(size, size);
   for (int r = 0; r < size; ++r)
-    for (int c = 0; c < size; ++c) m(r, c) = 0.01 * (r + 1) * (c + 1);  // symmetric
+    for (int c = 0; c < size; ++c) m(r, c) = 0.01 * (r + 1) * (c + 1); // symmetric
   return m;
 }
 
 struct Case {
   int dim, order;
 };
-void PrintTo(const Case& c, std::ostream* os) { *os << c.dim << "D Q" << c.order; }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.dim << "D Q" << c.order;
+}
 
-template <int dim>
-void check_viscous(int order, physics::ViscousStrain strain) {
+template <int dim> void check_viscous(int order, physics::ViscousStrain strain) {
   const fem::QuadratureRule<dim> rule = fem::gauss_rule<dim>(order + 1);
   fem::CellValues<dim> values(order, rule);
   ASSERT_TRUE(values.reinit(distorted_cell<dim>(order)));
@@ -85,8 +85,7 @@ void check_viscous(int order, physics::ViscousStrain strain) {
   EXPECT_TRUE(approx((k - reference).norm(), 0.0, 0.0, roundoff * reference.norm()));
 }
 
-template <int dim>
-void check_volumetric(int order, int n_points) {
+template <int dim> void check_volumetric(int order, int n_points) {
   const fem::QuadratureRule<dim> rule = fem::gauss_rule<dim>(n_points);
   fem::CellValues<dim> values(order, rule);
   ASSERT_TRUE(values.reinit(distorted_cell<dim>(order)));
@@ -105,8 +104,7 @@ void check_volumetric(int order, int n_points) {
   EXPECT_TRUE(approx((k - reference).norm(), 0.0, 0.0, roundoff * reference.norm()));
 }
 
-template <int dim>
-void check_tangent(int order) {
+template <int dim> void check_tangent(int order) {
   const fem::QuadratureRule<dim> rule = fem::gauss_rule<dim>(order + 1);
   fem::CellValues<dim> values(order, rule);
   ASSERT_TRUE(values.reinit(distorted_cell<dim>(order)));
@@ -117,9 +115,9 @@ void check_tangent(int order) {
     deviators.push_back(tensor<dim>(0.3 * q, true));
     duals.push_back(tensor<dim>(2.0 + 0.7 * q, true));
     a[q] = 0.2 + 0.1 * q;
-    b[q] = q == 1 ? 0.0 : -0.4 + 0.05 * q;  // a point with b = 0 too
+    b[q] = q == 1 ? 0.0 : -0.4 + 0.05 * q; // a point with b = 0 too
   }
-  a[0] = b[0] = 0.0;  // and one the kernel skips
+  a[0] = b[0] = 0.0; // and one the kernel skips
   MatrixX reference = prefilled(size);
   for (int q = 0; q < rule.size(); ++q) {
     // g_ai = (ė ∇φ_a)_i, h_ai = (w ∇φ_a)_i; a g⊗g + b ½(h⊗g + g⊗h)
@@ -130,7 +128,8 @@ void check_tangent(int order) {
         for (int r = 0; r < n; ++r)
           for (int j = 0; j < dim; ++j)
             reference(p * dim + i, r * dim + j) +=
-                values.JxW(q) * (a[q] * g(i, p) * g(j, r) + 0.5 * b[q] * (h(i, p) * g(j, r) + g(i, p) * h(j, r)));
+                values.JxW(q) *
+                (a[q] * g(i, p) * g(j, r) + 0.5 * b[q] * (h(i, p) * g(j, r) + g(i, p) * h(j, r)));
   }
   MatrixX k = prefilled(size);
   assembly::add_viscous_tangent<dim>(values, deviators, duals, a, b, k);
@@ -141,25 +140,31 @@ class KernelReference : public ::testing::TestWithParam<Case> {};
 
 TEST_P(KernelReference, ViscousTermMatchesItsDefinition) {
   for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
-    if (GetParam().dim == 2) check_viscous<2>(GetParam().order, strain);
-    else check_viscous<3>(GetParam().order, strain);
+    if (GetParam().dim == 2)
+      check_viscous<2>(GetParam().order, strain);
+    else
+      check_viscous<3>(GetParam().order, strain);
   }
 }
 
 TEST_P(KernelReference, VolumetricPenaltyMatchesItsDefinition) {
   for (const int n_points : {1, 2, 3}) {
-    if (GetParam().dim == 2) check_volumetric<2>(GetParam().order, n_points);
-    else check_volumetric<3>(GetParam().order, n_points);
+    if (GetParam().dim == 2)
+      check_volumetric<2>(GetParam().order, n_points);
+    else
+      check_volumetric<3>(GetParam().order, n_points);
   }
 }
 
 TEST_P(KernelReference, ViscousTangentMatchesItsDefinition) {
-  if (GetParam().dim == 2) check_tangent<2>(GetParam().order);
-  else check_tangent<3>(GetParam().order);
+  if (GetParam().dim == 2)
+    check_tangent<2>(GetParam().order);
+  else
+    check_tangent<3>(GetParam().order);
 }
 
 INSTANTIATE_TEST_SUITE_P(Assembly, KernelReference,
                          ::testing::Values(Case{2, 1}, Case{2, 2}, Case{3, 1}, Case{3, 2}));
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -25,7 +25,7 @@ using Nodes3 = fem::CellValues<3>::Gradients;
 /// Non-affine quadrilateral, lexicographic corners (counter-clockwise 0, 1, 3, 2).
 Nodes2 distorted_q1() {
   Nodes2 nodes(2, 4);
-  nodes << 0.0, 2.0, 0.3, 2.4,  //
+  nodes << 0.0, 2.0, 0.3, 2.4, //
       0.0, 0.2, 1.5, 1.9;
   return nodes;
 }
@@ -49,14 +49,16 @@ Nodes2 distorted_q2() {
   for (int a = 0; a < 9; ++a) {
     const Point<2> xi = fem::reference_node<2>(2, a);
     const double s = 0.5 * (1 + xi.x()), t = 0.5 * (1 + xi.y());
-    nodes.col(a) = (1 - s) * (1 - t) * q1.col(0) + s * (1 - t) * q1.col(1) + (1 - s) * t * q1.col(2) +
-                   s * t * q1.col(3);
+    nodes.col(a) = (1 - s) * (1 - t) * q1.col(0) + s * (1 - t) * q1.col(1) +
+                   (1 - s) * t * q1.col(2) + s * t * q1.col(3);
   }
   nodes.col(4) += Point<2>(0.12, -0.07);
   return nodes;
 }
 
-Nodes2 distorted(int order) { return order == 1 ? distorted_q1() : distorted_q2(); }
+Nodes2 distorted(int order) {
+  return order == 1 ? distorted_q1() : distorted_q2();
+}
 
 /// Nodal vector (node-major, component fastest) of u(x) = G x + c.
 template <int dim>
@@ -76,7 +78,8 @@ VectorX eigenvalues(const MatrixX& matrix) {
 int n_small_eigenvalues(const MatrixX& matrix, double relative) {
   const VectorX lambda = eigenvalues(matrix);
   int count = 0;
-  for (Index k = 0; k < lambda.size(); ++k) count += std::abs(lambda[k]) < relative * lambda.maxCoeff();
+  for (Index k = 0; k < lambda.size(); ++k)
+    count += std::abs(lambda[k]) < relative * lambda.maxCoeff();
   return count;
 }
 
@@ -109,7 +112,7 @@ void PrintTo(const KernelCase& c, std::ostream* os) {
 }
 
 class ViscousKernel : public ::testing::TestWithParam<KernelCase> {
- protected:
+protected:
   int order() const { return GetParam().order; }
   ViscousStrain strain() const { return GetParam().strain; }
   fem::CellValues<2> values() const {
@@ -130,10 +133,11 @@ TEST_P(ViscousKernel, RigidBodyModesAreExactlyTheNullSpace) {
   const fem::CellValues<2> v = values();
   const MatrixX k = viscous_matrix(v, varying_viscosity(v.n_points()), strain());
   Tensor2<2> rotation;
-  rotation << 0, -1, 1, 0;  // u = (−y, x)
-  const std::array<VectorX, 3> modes = {nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(1.0, 0.0)),
-                                        nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(0.0, 1.0)),
-                                        nodal_field<2>(distorted(order()), rotation)};
+  rotation << 0, -1, 1, 0; // u = (−y, x)
+  const std::array<VectorX, 3> modes = {
+      nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(1.0, 0.0)),
+      nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(0.0, 1.0)),
+      nodal_field<2>(distorted(order()), rotation)};
   for (const VectorX& mode : modes)
     EXPECT_TRUE(approx((k * mode).norm(), 0.0, 0.0, roundoff * k.norm() * mode.norm()));
   // Full integration (2×2 for Q1, 3×3 for Q2) leaves no spurious zero-energy
@@ -167,7 +171,8 @@ TEST_P(ViscousKernel, MatchesTheVoigtBMatrixForm) {
   const MatrixX k = viscous_matrix(v, viscosity, strain());
   const int n = v.n_nodes();
   Eigen::Matrix3d d = Eigen::Vector3d(1.0, 1.0, 0.5).asDiagonal();
-  if (strain() == ViscousStrain::Deviatoric) d -= Eigen::Vector3d(1, 1, 0) * Eigen::Vector3d(1, 1, 0).transpose() / 3.0;
+  if (strain() == ViscousStrain::Deviatoric)
+    d -= Eigen::Vector3d(1, 1, 0) * Eigen::Vector3d(1, 1, 0).transpose() / 3.0;
   MatrixX reference = MatrixX::Zero(2 * n, 2 * n);
   for (int q = 0; q < v.n_points(); ++q) {
     MatrixX b = MatrixX::Zero(3, 2 * n);
@@ -183,27 +188,26 @@ TEST_P(ViscousKernel, MatchesTheVoigtBMatrixForm) {
   EXPECT_TRUE(approx((k - reference).norm(), 0.0, 0.0, roundoff * reference.norm()));
 }
 
-INSTANTIATE_TEST_SUITE_P(Kernels, ViscousKernel,
-                         ::testing::Values(KernelCase{1, ViscousStrain::Full},
-                                           KernelCase{1, ViscousStrain::Deviatoric},
-                                           KernelCase{2, ViscousStrain::Full},
-                                           KernelCase{2, ViscousStrain::Deviatoric}),
-                         [](const auto& info) {
-                           return std::string(info.param.order == 1 ? "Q1" : "Q2") +
-                                  (info.param.strain == ViscousStrain::Full ? "Full" : "Deviatoric");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Kernels, ViscousKernel,
+    ::testing::Values(KernelCase{1, ViscousStrain::Full}, KernelCase{1, ViscousStrain::Deviatoric},
+                      KernelCase{2, ViscousStrain::Full}, KernelCase{2, ViscousStrain::Deviatoric}),
+    [](const auto& info) {
+      return std::string(info.param.order == 1 ? "Q1" : "Q2") +
+             (info.param.strain == ViscousStrain::Full ? "Full" : "Deviatoric");
+    });
 
 TEST(ViscousKernel3D, SixRigidModesOnADistortedHexahedron) {
   // Unit square base, top z = 1 + 0.5x + 0.3xy.
   Nodes3 nodes(3, 8);
-  nodes << 0, 1, 0, 1, 0, 1, 0, 1,  //
-      0, 0, 1, 1, 0, 0, 1, 1,       //
+  nodes << 0, 1, 0, 1, 0, 1, 0, 1, //
+      0, 0, 1, 1, 0, 0, 1, 1,      //
       0, 0, 0, 0, 1, 1.5, 1, 1.8;
   fem::CellValues<3> v(1, fem::gauss_rule<3>(2));
   ASSERT_TRUE(v.reinit(nodes));
   MatrixX k = MatrixX::Zero(24, 24);
   assembly::add_viscous_term<3>(v, std::vector<Real>(v.n_points(), 1.0), ViscousStrain::Full, k);
-  EXPECT_EQ(n_small_eigenvalues(k, 1e-10), 6);  // 3 translations + 3 rotations
+  EXPECT_EQ(n_small_eigenvalues(k, 1e-10), 6); // 3 translations + 3 rotations
   Tensor2<3> spin;
   spin << 0, -0.3, 0.5, 0.3, 0, -0.2, -0.5, 0.2, 0;
   const VectorX u = nodal_field<3>(nodes, spin, Point<3>(0.1, 0.2, 0.3));
@@ -227,12 +231,13 @@ MatrixX volumetric_matrix(int order, int n_points, double d) {
 
 TEST(VolumetricPenalty, DivergenceFreeLinearFieldHasNoPenalty) {
   Tensor2<2> g;
-  g << 0.4, 0.7, -0.3, -0.4;  // tr G = 0
+  g << 0.4, 0.7, -0.3, -0.4; // tr G = 0
   for (int order : {1, 2})
     for (int n = 1; n <= order + 1; ++n) {
       const MatrixX k = volumetric_matrix(order, n, 1e-3);
       const VectorX u = nodal_field<2>(distorted(order), g, Point<2>(1.0, 2.0));
-      EXPECT_TRUE(approx((k * u).norm(), 0.0, 0.0, roundoff * k.norm() * u.norm())) << order << "/" << n;
+      EXPECT_TRUE(approx((k * u).norm(), 0.0, 0.0, roundoff * k.norm() * u.norm()))
+          << order << "/" << n;
     }
 }
 
@@ -261,7 +266,7 @@ TEST(VolumetricPenalty, ReducedOnePointRuleOnQ1HasRankOne) {
 
 struct Face {
   int local_face;
-  Point<2> normal;   // outward unit normal of the straight face (hand)
+  Point<2> normal; // outward unit normal of the straight face (hand)
   double length;
 };
 
@@ -284,11 +289,14 @@ TEST(ContactPenalty, NormalVelocityIsPenalisedWithOneOverDn) {
       MatrixX k = MatrixX::Zero(2 * (order + 1) * (order + 1), 2 * (order + 1) * (order + 1));
       assembly::add_contact_penalty<2>(values, d_n, k);
       const Point<2> tangent(-face.normal.y(), face.normal.x());
-      const VectorX normal_field = nodal_field<2>(distorted(order), Tensor2<2>::Zero(), face.normal);
+      const VectorX normal_field =
+          nodal_field<2>(distorted(order), Tensor2<2>::Zero(), face.normal);
       const VectorX tangent_field = nodal_field<2>(distorted(order), Tensor2<2>::Zero(), tangent);
       // u = n: u_N = 1 along the face → (1/d_N)·L; u = t: u_N = 0.
-      EXPECT_TRUE(approx(normal_field.dot(k * normal_field), face.length / d_n, roundoff)) << face.local_face;
-      EXPECT_TRUE(approx(tangent_field.dot(k * tangent_field), 0.0, 0.0, roundoff * face.length / d_n));
+      EXPECT_TRUE(approx(normal_field.dot(k * normal_field), face.length / d_n, roundoff))
+          << face.local_face;
+      EXPECT_TRUE(
+          approx(tangent_field.dot(k * tangent_field), 0.0, 0.0, roundoff * face.length / d_n));
       EXPECT_TRUE(approx((k - k.transpose()).norm(), 0.0, 0.0, roundoff * k.norm()));
     }
   }
@@ -300,7 +308,8 @@ TEST(ContactPenalty, OnlyTheFaceNodesAreCoupled) {
   values.reinit(distorted_q2(), 3);
   MatrixX k = MatrixX::Zero(18, 18);
   assembly::add_contact_penalty<2>(values, 1.0, k);
-  for (int a = 0; a < 6; ++a) EXPECT_TRUE(approx(k.middleRows(2 * a, 2).norm(), 0.0, 0.0, 1e-15)) << a;
+  for (int a = 0; a < 6; ++a)
+    EXPECT_TRUE(approx(k.middleRows(2 * a, 2).norm(), 0.0, 0.0, 1e-15)) << a;
   EXPECT_GT(k.bottomRows(6).norm(), 0.1);
 }
 
@@ -314,12 +323,15 @@ TEST(FrictionTerm, TangentialSlipIsWeightedAndNormalMotionIsFree) {
       MatrixX k = MatrixX::Zero(n_local, n_local);
       assembly::add_friction_term<2>(values, std::vector<Real>(values.n_points(), kappa), k);
       const Point<2> tangent(-face.normal.y(), face.normal.x());
-      const VectorX normal_field = nodal_field<2>(distorted(order), Tensor2<2>::Zero(), face.normal);
+      const VectorX normal_field =
+          nodal_field<2>(distorted(order), Tensor2<2>::Zero(), face.normal);
       // u = 0.6 n + 2 t: only the tangential part counts, |u_T|² = 4.
-      const VectorX mixed_field =
-          nodal_field<2>(distorted(order), Tensor2<2>::Zero(), Point<2>(0.6 * face.normal + 2.0 * tangent));
-      EXPECT_TRUE(approx(normal_field.dot(k * normal_field), 0.0, 0.0, roundoff * kappa * face.length));
-      EXPECT_TRUE(approx(mixed_field.dot(k * mixed_field), 4.0 * kappa * face.length, roundoff)) << face.local_face;
+      const VectorX mixed_field = nodal_field<2>(distorted(order), Tensor2<2>::Zero(),
+                                                 Point<2>(0.6 * face.normal + 2.0 * tangent));
+      EXPECT_TRUE(
+          approx(normal_field.dot(k * normal_field), 0.0, 0.0, roundoff * kappa * face.length));
+      EXPECT_TRUE(approx(mixed_field.dot(k * mixed_field), 4.0 * kappa * face.length, roundoff))
+          << face.local_face;
       EXPECT_GE(eigenvalues(k).minCoeff(), -roundoff * k.norm());
     }
   }
@@ -366,5 +378,5 @@ TEST(Kernels, AddToTheExistingLocalMatrix) {
   EXPECT_TRUE(approx((summed - start - alone).norm(), 0.0, 0.0, roundoff * alone.norm()));
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

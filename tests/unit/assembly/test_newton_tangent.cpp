@@ -29,7 +29,7 @@ using Nodes2 = fem::CellValues<2>::Gradients;
 /// A Q2 cell with curved map: straight outline, displaced centre node.
 Nodes2 distorted_q2() {
   Nodes2 corners(2, 4);
-  corners << 0.0, 2.0, 0.3, 2.4,  //
+  corners << 0.0, 2.0, 0.3, 2.4, //
       0.0, 0.2, 1.5, 1.9;
   Nodes2 nodes(2, 9);
   for (int a = 0; a < 9; ++a) {
@@ -45,7 +45,8 @@ Nodes2 distorted_q2() {
 /// r(u) = K_s(u) u of the a-form alone: the local viscous residual.
 VectorX viscous_residual(const fem::CellValues<2>& values, const physics::FlowLaw& law,
                          physics::ViscousStrain strain, const VectorX& u) {
-  const Eigen::Map<const Eigen::Matrix<Real, 2, Eigen::Dynamic>> velocities(u.data(), 2, values.n_nodes());
+  const Eigen::Map<const Eigen::Matrix<Real, 2, Eigen::Dynamic>> velocities(u.data(), 2,
+                                                                            values.n_nodes());
   std::vector<Real> viscosity;
   for (int q = 0; q < values.n_points(); ++q)
     viscosity.push_back(law.secant_viscosity(physics::equivalent_strain_rate(
@@ -58,7 +59,8 @@ VectorX viscous_residual(const fem::CellValues<2>& values, const physics::FlowLa
 /// Secant matrix plus the tangent correction at u, as assembly/newton_system.cpp builds it.
 MatrixX viscous_tangent(const fem::CellValues<2>& values, const physics::FlowLaw& law,
                         physics::ViscousStrain strain, const VectorX& u) {
-  const Eigen::Map<const Eigen::Matrix<Real, 2, Eigen::Dynamic>> velocities(u.data(), 2, values.n_nodes());
+  const Eigen::Map<const Eigen::Matrix<Real, 2, Eigen::Dynamic>> velocities(u.data(), 2,
+                                                                            values.n_nodes());
   std::vector<Real> viscosity, a, b;
   std::vector<Tensor3> deviators, duals;
   for (int q = 0; q < values.n_points(); ++q) {
@@ -67,7 +69,7 @@ MatrixX viscous_tangent(const fem::CellValues<2>& values, const physics::FlowLaw
     const Real eps = physics::equivalent_strain_rate(rate);
     viscosity.push_back(law.secant_viscosity(eps));
     deviators.push_back(physics::deviator(rate));
-    duals.push_back(viscosity.back() * deviators.back());  // the primal dual w = ν ė
+    duals.push_back(viscosity.back() * deviators.back()); // the primal dual w = ν ė
     a.push_back(4.0 / 9.0 * law.yield_stress_derivative(eps) / (eps * eps));
     b.push_back(-4.0 / 9.0 / (eps * eps));
   }
@@ -102,7 +104,7 @@ TEST(ViscousTangent, MatchesFiniteDifferencesForTheDeviatoricForm) {
 TEST(ViscousTangent, IsSymmetricPositiveDefiniteModuloRigidModesForAMonotoneLaw) {
   fem::CellValues<2> values(2, fem::gauss_rule<2>(3));
   ASSERT_TRUE(values.reinit(distorted_q2()));
-  physics::FlowLaw law;  // the paper's α = 1e-3: σ_p′ is a thousandth of σ_p/ε̄̇
+  physics::FlowLaw law; // the paper's α = 1e-3: σ_p′ is a thousandth of σ_p/ε̄̇
   law.rate1 = 1e-8;
   for (auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
     const MatrixX k = viscous_tangent(values, law, strain, random_vector(18, 11));
@@ -143,7 +145,8 @@ TEST(ViscousTangent, PrimalDualFormIsPositiveSemiDefiniteForCappedDuals) {
   MatrixX k = MatrixX::Zero(18, 18);
   assembly::add_viscous_term<2>(values, viscosity, physics::ViscousStrain::Deviatoric, k);
   assembly::add_viscous_tangent<2>(values, deviators, duals, a, b, k);
-  const VectorX lambda = Eigen::SelfAdjointEigenSolver<MatrixX>(k, Eigen::EigenvaluesOnly).eigenvalues();
+  const VectorX lambda =
+      Eigen::SelfAdjointEigenSolver<MatrixX>(k, Eigen::EigenvaluesOnly).eigenvalues();
   EXPECT_GE(lambda.minCoeff(), -1e-10 * lambda.maxCoeff());
 }
 
@@ -214,9 +217,10 @@ TEST(FrictionTangent, MatchesFiniteDifferencesAtFixedThreshold) {
 
 /// The regularised-friction extrusion: friction on Γ3 (μ = 0.2) with d_T and the
 /// penalties raised so that the residual is smooth on the finite-difference scale.
-assembly::ProblemSettings regularised_extrusion(
-    physics::ViscousStrain strain, physics::Symmetry symmetry = physics::Symmetry::Plane,
-    assembly::ContactNormals normals = assembly::ContactNormals::Faces) {
+assembly::ProblemSettings
+regularised_extrusion(physics::ViscousStrain strain,
+                      physics::Symmetry symmetry = physics::Symmetry::Plane,
+                      assembly::ContactNormals normals = assembly::ContactNormals::Faces) {
   assembly::ProblemSettings settings;
   settings.law = sensitive_law();
   settings.viscous_strain = strain;
@@ -279,8 +283,8 @@ TEST(NewtonSystem, AxisymmetricJacobianMatchesFiniteDifferences) {
 TEST(NewtonSystem, JacobianWithNodalContactNormalsMatchesFiniteDifferences) {
   // contact.normals = "nodes": Γ3 evaluated at the face nodes with averaged normals,
   // in the residual, the friction tangent and dτ_f alike.
-  const SmallExtrusion extrusion(regularised_extrusion(physics::ViscousStrain::Full, physics::Symmetry::Plane,
-                                 assembly::ContactNormals::Nodes));
+  const SmallExtrusion extrusion(regularised_extrusion(
+      physics::ViscousStrain::Full, physics::Symmetry::Plane, assembly::ContactNormals::Nodes));
   const std::vector<Real> thresholds = extrusion.problem->friction_thresholds(extrusion.u);
   ASSERT_GT(*std::max_element(thresholds.begin(), thresholds.end()), 0.0);
   const MatrixX exact = extrusion.jacobian(thresholds);
@@ -293,7 +297,8 @@ TEST(NewtonSystem, JacobianWithNodalContactNormalsMatchesFiniteDifferences) {
   extrusion.problem->assemble(&extrusion.u, secant);
   const VectorX free_u = extrusion.free_part(extrusion.u);
   const VectorX expected = secant.matrix.selfadjointView<Eigen::Lower>() * free_u - secant.rhs;
-  EXPECT_LE((extrusion.free_residual(free_u, &thresholds) - expected).norm(), 1e-12 * expected.norm());
+  EXPECT_LE((extrusion.free_residual(free_u, &thresholds) - expected).norm(),
+            1e-12 * expected.norm());
 }
 
 TEST(NewtonSystem, MixedCondensedPressureJacobianAndResidualMatchTheSecantSystem) {
@@ -318,11 +323,13 @@ TEST(NewtonSystem, MixedCondensedPressureJacobianAndResidualMatchTheSecantSystem
     VectorX with_tangent;
     assembly::LinearSystem tangent = problem.plan().make_system();
     problem.assemble_newton(extrusion.u, thresholds, {}, with_tangent, &tangent);
-    EXPECT_LE((extrusion.free_residual(free_u, &thresholds) - expected).norm(), 1e-12 * expected.norm());
+    EXPECT_LE((extrusion.free_residual(free_u, &thresholds) - expected).norm(),
+              1e-12 * expected.norm());
     EXPECT_LE((extrusion.free_part(with_tangent) - expected).norm(), 1e-12 * expected.norm());
     // Against the penalty problem's residual: the pressure term really changed.
     const SmallExtrusion penalty(regularised_extrusion(physics::ViscousStrain::Full));
-    EXPECT_GT((penalty.free_residual(free_u, &thresholds) - expected).norm(), 1e-3 * expected.norm());
+    EXPECT_GT((penalty.free_residual(free_u, &thresholds) - expected).norm(),
+              1e-3 * expected.norm());
   }
 }
 
@@ -331,26 +338,26 @@ TEST(NewtonSystem, ResidualOnlyAssemblyEqualsTheSecantSystemAppliedToTheVelocity
   // matrix-free residual, and its residual from the local secant matrices. The
   // prescribed rows give the reaction, so the driven force must agree too.
   for (const auto symmetry : {physics::Symmetry::Plane, physics::Symmetry::Axisymmetric})
-  for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
-    const SmallExtrusion extrusion(regularised_extrusion(strain, symmetry));
-    const assembly::FormingProblem<2>& problem = *extrusion.problem;
-    const std::vector<Real> thresholds = problem.friction_thresholds(extrusion.u);
-    assembly::LinearSystem secant = problem.plan().make_system();
-    problem.assemble(&extrusion.u, secant);
-    const VectorX free_u = extrusion.free_part(extrusion.u);
-    const VectorX expected = secant.matrix.selfadjointView<Eigen::Lower>() * free_u - secant.rhs;
+    for (const auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
+      const SmallExtrusion extrusion(regularised_extrusion(strain, symmetry));
+      const assembly::FormingProblem<2>& problem = *extrusion.problem;
+      const std::vector<Real> thresholds = problem.friction_thresholds(extrusion.u);
+      assembly::LinearSystem secant = problem.plan().make_system();
+      problem.assemble(&extrusion.u, secant);
+      const VectorX free_u = extrusion.free_part(extrusion.u);
+      const VectorX expected = secant.matrix.selfadjointView<Eigen::Lower>() * free_u - secant.rhs;
 
-    VectorX vector_only, with_tangent;
-    problem.assemble_newton(extrusion.u, thresholds, {}, vector_only);
-    assembly::LinearSystem tangent = problem.plan().make_system();
-    problem.assemble_newton(extrusion.u, thresholds, {}, with_tangent, &tangent);
-    EXPECT_LE((extrusion.free_part(vector_only) - expected).norm(), 1e-12 * expected.norm());
-    EXPECT_LE((vector_only - with_tangent).norm(), 1e-12 * vector_only.norm());
-    const Real reaction = problem.driven_force(secant, extrusion.u);
-    EXPECT_NEAR(problem.driven_force(vector_only), reaction, 1e-12 * std::abs(reaction));
-    EXPECT_GT(std::abs(reaction), 0.0);
-  }
+      VectorX vector_only, with_tangent;
+      problem.assemble_newton(extrusion.u, thresholds, {}, vector_only);
+      assembly::LinearSystem tangent = problem.plan().make_system();
+      problem.assemble_newton(extrusion.u, thresholds, {}, with_tangent, &tangent);
+      EXPECT_LE((extrusion.free_part(vector_only) - expected).norm(), 1e-12 * expected.norm());
+      EXPECT_LE((vector_only - with_tangent).norm(), 1e-12 * vector_only.norm());
+      const Real reaction = problem.driven_force(secant, extrusion.u);
+      EXPECT_NEAR(problem.driven_force(vector_only), reaction, 1e-12 * std::abs(reaction));
+      EXPECT_GT(std::abs(reaction), 0.0);
+    }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -23,7 +23,9 @@ using assembly::ScatterPlan;
 constexpr double roundoff = 1e-13;
 
 /// The tiny channel: container 2×2, exit 2×1, unit cells.
-mesh::Mesh<2> tiny_mesh(int order) { return mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, order); }
+mesh::Mesh<2> tiny_mesh(int order) {
+  return mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, order);
+}
 
 /// Cell blocks plus, to exercise unequal block sizes, one block per boundary facet.
 BlockDofs blocks_of(const mesh::Mesh<2>& m) {
@@ -54,7 +56,7 @@ MatrixX random_symmetric(int n, std::mt19937& generator) {
 }
 
 class ScatterPlanTest : public ::testing::TestWithParam<int> {
- protected:
+protected:
   void SetUp() override {
     mesh_ = tiny_mesh(GetParam());
     n_dofs_ = mesh_.n_nodes() * 2;
@@ -65,7 +67,8 @@ class ScatterPlanTest : public ::testing::TestWithParam<int> {
     values_ = VectorX::Zero(n_dofs_);
     for (Index dof = 0; dof < n_dofs_; ++dof)
       if (prescribed_[dof]) values_[dof] = uniform(generator);
-    for (Index b = 0; b < blocks_.n_blocks(); ++b) locals_.push_back(random_symmetric(blocks_.block_size(b), generator));
+    for (Index b = 0; b < blocks_.n_blocks(); ++b)
+      locals_.push_back(random_symmetric(blocks_.block_size(b), generator));
     // The dense reference: K = Σ_blocks Pᵀ K_e P, written out entry by entry.
     full_ = MatrixX::Zero(n_dofs_, n_dofs_);
     for (Index b = 0; b < blocks_.n_blocks(); ++b) {
@@ -133,8 +136,9 @@ TEST_P(ScatterPlanTest, FreeBlockIsTheLowerTriangleOfTheDenseReference) {
   ASSERT_EQ(stored.cols(), plan.n_free());
   for (Index i = 0; i < plan.n_free(); ++i)
     for (Index j = 0; j < plan.n_free(); ++j) {
-      const double expected = i >= j ? full_(free[i], free[j]) : 0.0;  // upper triangle not stored
-      EXPECT_TRUE(approx(stored(i, j), expected, 0.0, roundoff)) << "K_ff(" << i << ", " << j << ")";
+      const double expected = i >= j ? full_(free[i], free[j]) : 0.0; // upper triangle not stored
+      EXPECT_TRUE(approx(stored(i, j), expected, 0.0, roundoff))
+          << "K_ff(" << i << ", " << j << ")";
     }
 }
 
@@ -159,7 +163,8 @@ TEST_P(ScatterPlanTest, ReactionRowsAreThePrescribedRowsOfTheFullMatrix) {
   ASSERT_EQ(rows.cols(), n_dofs_);
   for (Index r = 0; r < plan.n_prescribed(); ++r)
     for (Index dof = 0; dof < n_dofs_; ++dof)
-      EXPECT_TRUE(approx(rows(r, dof), full_(prescribed[r], dof), 0.0, roundoff)) << r << ", " << dof;
+      EXPECT_TRUE(approx(rows(r, dof), full_(prescribed[r], dof), 0.0, roundoff))
+          << r << ", " << dof;
 }
 
 TEST_P(ScatterPlanTest, EliminatedSystemReproducesTheFullProduct) {
@@ -177,7 +182,8 @@ TEST_P(ScatterPlanTest, EliminatedSystemReproducesTheFullProduct) {
   const VectorX lhs = system.matrix.selfadjointView<Eigen::Lower>() * free_values - system.rhs;
   const VectorX reactions = system.reaction_rows * u;
   for (Index dof = 0; dof < n_dofs_; ++dof) {
-    const double actual = prescribed_[dof] ? reactions[plan.prescribed_index(dof)] : lhs[plan.free_index(dof)];
+    const double actual =
+        prescribed_[dof] ? reactions[plan.prescribed_index(dof)] : lhs[plan.free_index(dof)];
     EXPECT_TRUE(approx(actual, k_u[dof], 0.0, roundoff)) << dof;
   }
 }
@@ -188,7 +194,8 @@ TEST_P(ScatterPlanTest, ScatterAccumulatesAndClearKeepsThePattern) {
   scatter_all(plan, once);
   scatter_all(plan, twice);
   scatter_all(plan, twice);
-  EXPECT_TRUE(approx((MatrixX(twice.matrix) - 2 * MatrixX(once.matrix)).norm(), 0.0, 0.0, roundoff));
+  EXPECT_TRUE(
+      approx((MatrixX(twice.matrix) - 2 * MatrixX(once.matrix)).norm(), 0.0, 0.0, roundoff));
   EXPECT_TRUE(approx((twice.rhs - 2 * once.rhs).norm(), 0.0, 0.0, roundoff));
   const Index non_zeros = twice.matrix.nonZeros();
   ScatterPlan::clear(twice);
@@ -226,7 +233,8 @@ TEST_P(ScatterPlanTest, ExpandRoundTrips) {
   VectorX full(n_dofs_);
   for (Index dof = 0; dof < n_dofs_; ++dof) full[dof] = uniform(generator);
   VectorX free_part(plan.n_free());
-  VectorX prescribed_part = VectorX::Constant(n_dofs_, 99.0);  // junk where free: must be overwritten
+  VectorX prescribed_part =
+      VectorX::Constant(n_dofs_, 99.0); // junk where free: must be overwritten
   for (Index dof = 0; dof < n_dofs_; ++dof)
     (prescribed_[dof] ? prescribed_part[dof] : free_part[plan.free_index(dof)]) = full[dof];
   EXPECT_EQ(plan.expand(free_part, prescribed_part), full);
@@ -264,5 +272,5 @@ TEST(ScatterPlan, NothingPrescribedGivesTheWholeLowerTriangleAndNoReactions) {
   EXPECT_EQ(system.rhs.norm(), 0.0);
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

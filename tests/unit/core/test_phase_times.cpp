@@ -20,14 +20,14 @@ TEST(PhaseTimes, EventsCountWithoutTimeAndAbsentOnesAreZero) {
   PhaseTimes times;
   times.count("krylov iterations", 4);
   times.count("krylov iterations", 2);
-  times.add("mesh", 0.5);  // seconds only: no entry counted
+  times.add("mesh", 0.5); // seconds only: no entry counted
   EXPECT_EQ(times.counted("krylov iterations"), 6);
   EXPECT_EQ(times.counted("mesh"), 0);
   EXPECT_EQ(times.counted("never"), 0);
-  EXPECT_EQ(times.all().count("krylov iterations"), 0u);  // a count is no phase
+  EXPECT_EQ(times.all().count("krylov iterations"), 0u); // a count is no phase
   EXPECT_DOUBLE_EQ(times.get("mesh"), 0.5);
   EXPECT_EQ(times.get("never"), 0.0);
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

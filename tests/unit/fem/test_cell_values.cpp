@@ -23,7 +23,7 @@ constexpr double roundoff = 1e-13;
 /// A non-affine quadrilateral (x3 ≠ x1 + x2 − x0), lexicographic corners.
 Nodes2 distorted_q1() {
   Nodes2 nodes(2, 4);
-  nodes << 0.0, 2.0, 0.3, 2.4,  //
+  nodes << 0.0, 2.0, 0.3, 2.4, //
       0.0, 0.2, 1.5, 1.9;
   return nodes;
 }
@@ -36,7 +36,8 @@ std::array<Point<2>, 4> ccw_corners(const Nodes2& q1) {
 /// Shoelace area of a counter-clockwise polygon.
 double shoelace(const std::array<Point<2>, 4>& p) {
   double twice = 0.0;
-  for (int k = 0; k < 4; ++k) twice += p[k].x() * p[(k + 1) % 4].y() - p[(k + 1) % 4].x() * p[k].y();
+  for (int k = 0; k < 4; ++k)
+    twice += p[k].x() * p[(k + 1) % 4].y() - p[(k + 1) % 4].x() * p[k].y();
   return 0.5 * twice;
 }
 
@@ -73,10 +74,12 @@ Nodes2 distorted_q2() {
 
 /// Bottom edge of the Q1 corners: length and outward unit normal.
 constexpr double bulge = 0.15;
-double bottom_length() { return (distorted_q1().col(1) - distorted_q1().col(0)).norm(); }
+double bottom_length() {
+  return (distorted_q1().col(1) - distorted_q1().col(0)).norm();
+}
 Point<2> bottom_outward_normal() {
   const Point<2> edge = distorted_q1().col(1) - distorted_q1().col(0);
-  return Point<2>(edge.y(), -edge.x()) / edge.norm();  // right of a counter-clockwise edge
+  return Point<2>(edge.y(), -edge.x()) / edge.norm(); // right of a counter-clockwise edge
 }
 
 /// Q2 whose bottom edge bulges outward: its mid-edge node moves by `bulge`
@@ -105,17 +108,20 @@ double measure(int order, int n, const typename fem::CellValues<dim>::Gradients&
 TEST(CellValues, Q1AreaIsTheShoelaceAreaForEveryRule) {
   // det J of a bilinear map is affine in each of ξ, η: even one point integrates it.
   const double exact = shoelace(ccw_corners(distorted_q1()));
-  for (int n = 1; n <= 3; ++n) EXPECT_TRUE(approx(measure<2>(1, n, distorted_q1()), exact, roundoff)) << n;
+  for (int n = 1; n <= 3; ++n)
+    EXPECT_TRUE(approx(measure<2>(1, n, distorted_q1()), exact, roundoff)) << n;
 }
 
 TEST(CellValues, Q2AreaWithDisplacedCentreNodeIsUnchanged) {
   // det J has degree ≤ 3 per variable here, so 2×2 and 3×3 are exact.
   const double exact = shoelace(ccw_corners(distorted_q1()));
-  for (int n = 2; n <= 3; ++n) EXPECT_TRUE(approx(measure<2>(2, n, distorted_q2()), exact, roundoff)) << n;
+  for (int n = 2; n <= 3; ++n)
+    EXPECT_TRUE(approx(measure<2>(2, n, distorted_q2()), exact, roundoff)) << n;
 }
 
 TEST(CellValues, Q2AreaWithCurvedEdgeAddsTheParabolicSegment) {
-  for (int n = 2; n <= 3; ++n) EXPECT_TRUE(approx(measure<2>(2, n, curved_q2()), curved_q2_area(), roundoff)) << n;
+  for (int n = 2; n <= 3; ++n)
+    EXPECT_TRUE(approx(measure<2>(2, n, curved_q2()), curved_q2_area(), roundoff)) << n;
 }
 
 TEST(CellValues, Q1QuadraturePointsReproduceThePolygonCentroid) {
@@ -134,7 +140,8 @@ TEST(CellValues, Q1QuadraturePointsReproduceThePolygonCentroid) {
 }
 
 template <int dim>
-void check_linear_field_gradient(int order, int n, const typename fem::CellValues<dim>::Gradients& nodes) {
+void check_linear_field_gradient(int order, int n,
+                                 const typename fem::CellValues<dim>::Gradients& nodes) {
   // f = 0.3 + c·x is in the span of every isoparametric element, so its
   // interpolant's gradient is c exactly at every point (round-off only).
   Point<dim> c;
@@ -147,7 +154,8 @@ void check_linear_field_gradient(int order, int n, const typename fem::CellValue
     const Point<dim> gradient = values.gradients(q) * nodal;
     for (int d = 0; d < dim; ++d) EXPECT_TRUE(approx(gradient[d], c[d], 1e-12, 1e-12)) << "q " << q;
     // Shape values and gradients are consistent: Σ ∇N_a = 0 on the physical cell too.
-    for (int d = 0; d < dim; ++d) EXPECT_TRUE(approx(values.gradients(q).row(d).sum(), 0.0, 0.0, 1e-12));
+    for (int d = 0; d < dim; ++d)
+      EXPECT_TRUE(approx(values.gradients(q).row(d).sum(), 0.0, 0.0, 1e-12));
     EXPECT_TRUE(approx(values.shape(q).sum(), 1.0, 0.0, 1e-14));
   }
 }
@@ -160,7 +168,7 @@ TEST(CellValues, GradientOfALinearFieldIsExactOnDistortedCells) {
 
 TEST(CellValues, ClockwiseNodeOrderIsReportedAsInverted) {
   Nodes2 mirrored = distorted_q1();
-  mirrored.col(0).swap(mirrored.col(1));  // reflecting the lexicographic order flips det J
+  mirrored.col(0).swap(mirrored.col(1)); // reflecting the lexicographic order flips det J
   mirrored.col(2).swap(mirrored.col(3));
   fem::CellValues<2> values(1, fem::gauss_rule<2>(2));
   EXPECT_FALSE(values.reinit(mirrored));
@@ -170,8 +178,8 @@ TEST(CellValues, ClockwiseNodeOrderIsReportedAsInverted) {
 /// Unit square base, top surface z = 1 + 0.5x + 0.3xy (non-affine, lexicographic a + 2b + 4c).
 Nodes3 sheared_hex() {
   Nodes3 nodes(3, 8);
-  nodes << 0, 1, 0, 1, 0, 1, 0, 1,  //
-      0, 0, 1, 1, 0, 0, 1, 1,       //
+  nodes << 0, 1, 0, 1, 0, 1, 0, 1, //
+      0, 0, 1, 1, 0, 0, 1, 1,      //
       0, 0, 0, 0, 1, 1.5, 1, 1.8;
   return nodes;
 }
@@ -182,11 +190,12 @@ constexpr double sheared_hex_volume = 1.325;
 /// (its shape function vanishes on the boundary): volume 8 det A.
 Nodes3 distorted_q2_hex() {
   Tensor2<3> a;
-  a << 1.0, 0.2, 0.1,  //
-      0.1, 0.9, 0.2,   //
+  a << 1.0, 0.2, 0.1, //
+      0.1, 0.9, 0.2,  //
       0.0, 0.3, 1.1;
   Nodes3 nodes(3, 27);
-  for (int k = 0; k < 27; ++k) nodes.col(k) = a * fem::reference_node<3>(2, k) + Point<3>(0.5, -0.2, 1.0);
+  for (int k = 0; k < 27; ++k)
+    nodes.col(k) = a * fem::reference_node<3>(2, k) + Point<3>(0.5, -0.2, 1.0);
   nodes.col(13) += Point<3>(0.05, -0.04, 0.06);
   return nodes;
 }
@@ -212,7 +221,7 @@ Point<2> outward(const Point<2>& p, const Point<2>& q) {
 }
 
 struct Edge {
-  int face, from, to;  // local face, and its end corners in counter-clockwise order
+  int face, from, to; // local face, and its end corners in counter-clockwise order
 };
 // Q1 corners 0 (bottom-left), 1, 2, 3 (top-right); counter-clockwise 0→1→3→2→0.
 constexpr std::array<Edge, 4> q1_edges = {{{2, 0, 1}, {1, 1, 3}, {3, 3, 2}, {0, 2, 0}}};
@@ -344,5 +353,5 @@ TEST(FacetValues, FaceShapeFunctionsVanishOffTheFace) {
   }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -19,16 +19,14 @@ namespace {
 // ~1.2 on the cell; sums over ≤ 27 of them are exact to a few ulps.
 constexpr double roundoff = 1e-14;
 
-template <int dim>
-int n_nodes(int order) {
+template <int dim> int n_nodes(int order) {
   int n = 1;
   for (int d = 0; d < dim; ++d) n *= order + 1;
   return n;
 }
 
 /// Reproducible sample points in the reference cell, including its corner (1,…,1).
-template <int dim>
-std::vector<Point<dim>> sample_points() {
+template <int dim> std::vector<Point<dim>> sample_points() {
   std::mt19937 generator(20240611);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   std::vector<Point<dim>> points;
@@ -63,8 +61,7 @@ double test_polynomial(int order, const Point<dim>& x, Point<dim>* gradient = nu
   return value;
 }
 
-template <int dim>
-void check_partition_of_unity(int order) {
+template <int dim> void check_partition_of_unity(int order) {
   VectorX values;
   Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
   for (const Point<dim>& xi : sample_points<dim>()) {
@@ -84,8 +81,7 @@ TEST(Lagrange, PartitionOfUnityAndZeroGradientSum) {
   check_partition_of_unity<3>(2);
 }
 
-template <int dim>
-void check_kronecker_delta(int order) {
+template <int dim> void check_kronecker_delta(int order) {
   VectorX values;
   Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
   for (int a = 0; a < n_nodes<dim>(order); ++a) {
@@ -93,7 +89,8 @@ void check_kronecker_delta(int order) {
     for (int b = 0; b < n_nodes<dim>(order); ++b)
       // The node coordinates −1, 0, 1 are exact, so N_b(ξ_a) is exactly 0 or 1
       // up to the last bit.
-      EXPECT_TRUE(approx(values[b], a == b ? 1.0 : 0.0, 0.0, 1e-15)) << "N_" << b << " at node " << a;
+      EXPECT_TRUE(approx(values[b], a == b ? 1.0 : 0.0, 0.0, 1e-15))
+          << "N_" << b << " at node " << a;
   }
 }
 
@@ -115,18 +112,17 @@ TEST(Lagrange, ReferenceNodesAreLexicographicWithXFastest) {
   EXPECT_EQ(fem::reference_node<2>(2, 4), Point<2>(0.0, 0.0));
   EXPECT_EQ(fem::reference_node<2>(2, 5), Point<2>(1.0, 0.0));
   EXPECT_EQ(fem::reference_node<2>(2, 7), Point<2>(0.0, 1.0));
-  EXPECT_EQ(fem::reference_node<3>(1, 5), Point<3>(1.0, -1.0, 1.0));  // 5 = 1 + 0·2 + 1·4
-  EXPECT_EQ(fem::reference_node<3>(2, 13), Point<3>(0.0, 0.0, 0.0));  // 13 = 1 + 1·3 + 1·9
+  EXPECT_EQ(fem::reference_node<3>(1, 5), Point<3>(1.0, -1.0, 1.0)); // 5 = 1 + 0·2 + 1·4
+  EXPECT_EQ(fem::reference_node<3>(2, 13), Point<3>(0.0, 0.0, 0.0)); // 13 = 1 + 1·3 + 1·9
   EXPECT_EQ(fem::reference_node<3>(2, 26), Point<3>(1.0, 1.0, 1.0));
-  EXPECT_EQ(fem::reference_node<3>(2, 11), Point<3>(1.0, -1.0, 0.0));  // 11 = 2 + 0·3 + 1·9
+  EXPECT_EQ(fem::reference_node<3>(2, 11), Point<3>(1.0, -1.0, 0.0)); // 11 = 2 + 0·3 + 1·9
   EXPECT_EQ(fem::lattice_coordinate(2, 1), 0.0);
   EXPECT_EQ(fem::element_order(fem::ElementKind::Q1), 1);
   EXPECT_EQ(fem::element_order(fem::ElementKind::Q2), 2);
   EXPECT_EQ(fem::element_name(fem::ElementKind::Q2), "Q2");
 }
 
-template <int dim>
-void check_gradients_against_finite_differences(int order) {
+template <int dim> void check_gradients_against_finite_differences(int order) {
   // Each N_a is a polynomial of degree ≤ 2 in every single variable, so the
   // central difference has no truncation error; what is left is round-off
   // ≈ ε·|N|/h ≈ 1e-16·1.2/1e-6 ≈ 1e-10. 1e-8 absolute leaves margin and is
@@ -156,13 +152,13 @@ TEST(Lagrange, GradientsMatchCentralFiniteDifferences) {
   check_gradients_against_finite_differences<3>(2);
 }
 
-template <int dim>
-void check_polynomial_reproduction(int order) {
+template <int dim> void check_polynomial_reproduction(int order) {
   // Interpolating a polynomial of degree `order` per variable through the
   // nodes reproduces it and its gradient everywhere (Q_order completeness).
   const int n = n_nodes<dim>(order);
   VectorX nodal(n);
-  for (int a = 0; a < n; ++a) nodal[a] = test_polynomial<dim>(order, fem::reference_node<dim>(order, a));
+  for (int a = 0; a < n; ++a)
+    nodal[a] = test_polynomial<dim>(order, fem::reference_node<dim>(order, a));
   VectorX values;
   Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
   for (const Point<dim>& xi : sample_points<dim>()) {
@@ -189,12 +185,12 @@ TEST(Lagrange, Q1DoesNotReproduceAQuadratic) {
   Eigen::Matrix<Real, 2, Eigen::Dynamic> gradients;
   fem::tabulate_shape<2>(1, Point<2>(0.0, 0.0), values, gradients);
   double interpolated = 0.0;
-  for (int a = 0; a < 4; ++a) interpolated += values[a] * std::pow(fem::reference_node<2>(1, a).x(), 2);
-  EXPECT_TRUE(approx(interpolated, 1.0, 0.0, 1e-15));  // the chord, not x²(0) = 0
+  for (int a = 0; a < 4; ++a)
+    interpolated += values[a] * std::pow(fem::reference_node<2>(1, a).x(), 2);
+  EXPECT_TRUE(approx(interpolated, 1.0, 0.0, 1e-15)); // the chord, not x²(0) = 0
 }
 
-template <int dim>
-void check_gauss_to_nodes(int order, int n_points) {
+template <int dim> void check_gauss_to_nodes(int order, int n_points) {
   // A polynomial of degree ≤ n−1 per direction is determined by its values at
   // the n^dim Gauss points, so the extrapolation must return its nodal values.
   const fem::QuadratureRule<dim> rule = fem::gauss_rule<dim>(n_points);
@@ -205,7 +201,7 @@ void check_gauss_to_nodes(int order, int n_points) {
   auto f = [&](const Point<dim>& x) {
     double value = 1.0;
     for (int d = 0; d < dim; ++d) {
-      double factor = 0.0, power = 1.0;  // Σ_k c_{k+d} x^k, k ≤ n−1
+      double factor = 0.0, power = 1.0; // Σ_k c_{k+d} x^k, k ≤ n−1
       for (int k = 0; k < n_points; ++k, power *= x[d]) factor += c[(k + d) % 5] * power;
       value *= factor;
     }
@@ -247,5 +243,5 @@ TEST(GaussToNodes, TwoPointsExtrapolateLinearlyToTheEnds) {
   EXPECT_TRUE(approx(extrapolation(0, 0), (1 + s3) / 2, 1e-14));
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

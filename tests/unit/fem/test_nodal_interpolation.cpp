@@ -38,14 +38,16 @@ TEST(NodalInterpolation, NonNestedMeshesReproduceTheFieldToInterpolationError) {
   const Point<2> lower(0.0, 0.0), upper(3.0, 2.0);
   const mesh::Mesh<2> coarse = mesh::make_box_mesh(lower, upper, 3, 2, 2);
   const mesh::Mesh<2> other = mesh::make_box_mesh(lower, upper, 5, 3, 2);
-  const VectorX exact = fem::interpolate_nodal_field(coarse, nodal_values(coarse, quadratic_field), 2, other);
+  const VectorX exact =
+      fem::interpolate_nodal_field(coarse, nodal_values(coarse, quadratic_field), 2, other);
   EXPECT_LT((exact - nodal_values(other, quadratic_field)).lpNorm<Eigen::Infinity>(), 1e-12);
 
   auto smooth = [](const Point<2>& x) { return Point<2>(std::sin(x[0]), std::cos(x[1])); };
-  const VectorX interpolated = fem::interpolate_nodal_field(coarse, nodal_values(coarse, +smooth), 2, other);
+  const VectorX interpolated =
+      fem::interpolate_nodal_field(coarse, nodal_values(coarse, +smooth), 2, other);
   const Real error = (interpolated - nodal_values(other, +smooth)).lpNorm<Eigen::Infinity>();
-  EXPECT_GT(error, 1e-6);  // not nested: the fine nodes are not coarse nodes
-  EXPECT_LT(error, 0.01);  // Q2 on cells of size 1: h³/… ≈ 1e-2 at most
+  EXPECT_GT(error, 1e-6); // not nested: the fine nodes are not coarse nodes
+  EXPECT_LT(error, 0.01); // Q2 on cells of size 1: h³/… ≈ 1e-2 at most
 }
 
 TEST(NodalInterpolation, NodesOutsideTheSourceTakeTheNearestBoundaryValue) {
@@ -62,5 +64,5 @@ TEST(NodalInterpolation, NodesOutsideTheSourceTakeTheNearestBoundaryValue) {
   }
 }
 
-}  // namespace
-}  // namespace formflow
+} // namespace
+} // namespace formflow

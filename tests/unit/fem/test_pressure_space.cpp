@@ -36,8 +36,7 @@ TEST(PressureSpace, ContinuousQ1IsAPartitionOfUnityAndInterpolatesAtTheVertices)
   for (int k = 0; k < 4; ++k) {
     const Point<2> vertex((k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0);
     const VectorX values = tabulate_pressure<2>(PressureSpace::Q1, vertex);
-    for (int j = 0; j < 4; ++j)
-      EXPECT_NEAR(values[j], j == k ? 1.0 : 0.0, 1e-15);
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(values[j], j == k ? 1.0 : 0.0, 1e-15);
   }
 }
 

@@ -14,7 +14,9 @@ namespace formflow::testing {
 namespace {
 
 /// ∫_{−1}^{1} x^k dx, by hand: 0 for odd k, 2/(k+1) for even k.
-double monomial_integral(int k) { return k % 2 == 1 ? 0.0 : 2.0 / (k + 1); }
+double monomial_integral(int k) {
+  return k % 2 == 1 ? 0.0 : 2.0 / (k + 1);
+}
 
 // A rule of ≤ 125 points with positive weights summing to 2^dim applied to
 // monomials bounded by 1 on the cube: the accumulated round-off is a few
@@ -106,7 +108,8 @@ TEST_P(GaussRule, TensorPointsAreLexicographicWithXFastest) {
       }
 }
 
-INSTANTIATE_TEST_SUITE_P(PointsPerDirection, GaussRule, ::testing::Range(1, fem::max_gauss_points + 1));
+INSTANTIATE_TEST_SUITE_P(PointsPerDirection, GaussRule,
+                         ::testing::Range(1, fem::max_gauss_points + 1));
 
 TEST(GaussRule3D, ExactForMixedMonomialsUpToTwoNMinusOne) {
   for (int n : {2, 3}) {
@@ -131,7 +134,7 @@ TEST(NodalRule, PointsAreTheFaceLatticeAndTheRulesIntegrateLikeTrapezoidAndSimps
   for (int n : {2, 3}) {
     const auto rule = fem::nodal_rule<2>(n);
     ASSERT_EQ(rule.size(), n * n);
-    for (int q = 0; q < rule.size(); ++q) {  // lexicographic, x fastest, like the nodes
+    for (int q = 0; q < rule.size(); ++q) { // lexicographic, x fastest, like the nodes
       EXPECT_EQ(rule.points[q].x(), -1.0 + 2.0 * (q % n) / (n - 1));
       EXPECT_EQ(rule.points[q].y(), -1.0 + 2.0 * (q / n) / (n - 1));
     }
@@ -140,11 +143,12 @@ TEST(NodalRule, PointsAreTheFaceLatticeAndTheRulesIntegrateLikeTrapezoidAndSimps
       for (int b = 0; b <= degree; ++b) {
         double sum = 0.0;
         for (int q = 0; q < rule.size(); ++q)
-          sum += rule.weights[q] * std::pow(rule.points[q].x(), a) * std::pow(rule.points[q].y(), b);
+          sum +=
+              rule.weights[q] * std::pow(rule.points[q].x(), a) * std::pow(rule.points[q].y(), b);
         const double exact = monomial_integral(a) * monomial_integral(b);
         if (a <= degree)
           EXPECT_NEAR(sum, exact, 1e-14) << n << ": " << a << b;
-        else if (a % 2 == 0 && b % 2 == 0)  // odd powers integrate to 0 with any symmetric rule
+        else if (a % 2 == 0 && b % 2 == 0) // odd powers integrate to 0 with any symmetric rule
           EXPECT_GT(std::abs(sum - exact), 0.1 * std::abs(exact)) << n << ": " << a << b;
       }
   }
@@ -168,5 +172,5 @@ TEST(GaussRule1D, UnsupportedPointCountsAreRejected) {
 #endif
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -20,7 +20,8 @@ Nodes2 curved_q2(int cell) {
   for (int a = 0; a < 9; ++a) {
     const Point<2> xi = fem::reference_node<2>(2, a);
     const double s = 0.5 * (1.0 + xi.x()), t = 0.5 * (1.0 + xi.y());
-    nodes.col(a) = Point<2>(cell + 1.3 * s + 0.2 * t + 0.1 * t * t, 0.4 + 0.9 * t + 0.15 * s * s * (cell + 1));
+    nodes.col(a) =
+        Point<2>(cell + 1.3 * s + 0.2 * t + 0.1 * t * t, 0.4 + 0.9 * t + 0.15 * s * s * (cell + 1));
   }
   return nodes;
 }
@@ -58,7 +59,7 @@ TEST(CellValuesCache, LoadRestoresTheMappedValuesOfEachCell) {
 
 TEST(FacetValuesCache, LoadRestoresFacesWithReplacedNormals) {
   const fem::QuadratureRule<1> rule = fem::gauss_rule<1>(3);
-  const int n_faces = 4;  // face k of cell k: every local face once
+  const int n_faces = 4; // face k of cell k: every local face once
   const auto map = [](Index k, fem::FacetValues<2>& values) {
     values.reinit(curved_q2(static_cast<int>(k)), static_cast<int>(k));
     values.weight_by_radius();
@@ -79,8 +80,8 @@ TEST(FacetValuesCache, LoadRestoresFacesWithReplacedNormals) {
   }
   cache.load(0, loaded);
   cache.load(1, fresh);
-  EXPECT_NE(loaded.shape(0), fresh.shape(0));  // faces 0 and 1 are opposite sides
+  EXPECT_NE(loaded.shape(0), fresh.shape(0)); // faces 0 and 1 are opposite sides
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

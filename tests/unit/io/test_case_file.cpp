@@ -33,7 +33,7 @@ InputError load_error(const std::string& path, const std::vector<Override>& over
 }
 
 class CaseFile : public ::testing::Test {
- protected:
+protected:
   /// Writes `text` to a fresh case file and returns its path.
   std::string write(const std::string& text) {
     const fs::path path = directory_ / ("case" + std::to_string(++n_files_) + ".toml");
@@ -301,71 +301,72 @@ TEST_F(CaseFile, JsonUsesCaseFileNamesAndDefaults) {
 
 TEST_F(CaseFile, JsonRoundTripsEveryKey) {
   // A non-default value for every key, written as it would be on the command line.
-  const std::vector<Override> values = {{"process.type", "\"drawing\""},
-                                        {"process.speed", "2.5"},
-                                        {"process.ram", "\"sticking\""},
-                                        {"geometry.container_length", "12.0"},
-                                        {"geometry.entry_half_height", "8.0"},
-                                        {"geometry.exit_half_height", "4.0"},
-                                        {"geometry.exit_length", "6.0"},
-                                        {"geometry.die", "\"polyline\""},
-                                        {"geometry.die_angle", "20.0"},
-                                        {"geometry.die_radius", "6.0"},
-                                        {"geometry.die_profile", "[[0.0, 8.0], [2.0, 6.0], [5.0, 4.0]]"},
-                                        {"geometry.land_length", "1.0"},
-                                        {"geometry.symmetry", "\"axisymmetric\""},
-                                        {"mesh.element", "\"Q1\""},
-                                        {"mesh.size", "0.5"},
-                                        {"mesh.source", "\"file\""},
-                                        {"mesh.file", "\"meshes/die.msh\""},
-                                        {"mesh.boundaries", "{ram = \"rear\", wall = \"container\"}"},
-                                        {"integration.volumetric", "1"},
-                                        {"material.A", "2.0"},
-                                        {"material.alpha", "0.2"},
-                                        {"material.rate1", "0.01"},
-                                        {"material.rate2", "100.0"},
-                                        {"material.law", "\"hensel_spittel\""},
-                                        {"material.K", "0.7"},
-                                        {"material.m", "0.3"},
-                                        {"material.sigma0", "2.2"},
-                                        {"material.hs_A", "250.0"},
-                                        {"material.hs_m1", "-0.003"},
-                                        {"material.hs_m2", "0.12"},
-                                        {"material.hs_m3", "0.1"},
-                                        {"material.hs_m4", "-0.02"},
-                                        {"material.hs_m8", "0.0001"},
-                                        {"material.temperature", "650.0"},
-                                        {"material.strain", "0.4"},
-                                        {"formulation.viscous_strain", "\"deviatoric\""},
-                                        // default: "mixed" is refused with axisymmetric
-                                        // (its JSON is checked in test_formulation_keys.cpp)
-                                        {"formulation.type", "\"penalty\""},
-                                        {"formulation.pressure", "\"P0\""},
-                                        {"formulation.augmentation", "100.0"},
-                                        {"formulation.contact_augmentation", "1000.0"},
-                                        {"formulation.uzawa_tolerance", "1e-06"},
-                                        {"formulation.uzawa_max_steps", "7"},
-                                        {"contact.normals", "\"nodes\""},
-                                        {"contact.corner_angle", "30.0"},
-                                        {"friction.mu", "0.15"},
-                                        {"friction.radius", "0.5"},
-                                        {"friction.on", "[\"die\"]"},
-                                        {"friction.regularization", "\"none\""},
-                                        {"friction.augmentation", "10.0"},
-                                        {"friction.newton_augmentation", "1000.0"},
-                                        {"penalty.d", "0.01"},
-                                        {"penalty.dN", "1e-05"},
-                                        {"penalty.dT", "1e-07"},
-                                        {"solver.tolerance", "1e-06"},
-                                        {"solver.max_iterations", "42"},
-                                        {"solver.initial_rate", "0.5"},
-                                        {"solver.method", "\"secant\""},
-                                        {"solver.newton_start", "0.2"},
-                                        {"solver.coarse_levels", "2"},
-                                        {"verification.solution", "\"smooth\""},
-                                        {"verification.distortion", "\"random\""},
-                                        {"verification.amplitude", "0.2"},
-                                        {"verification.seed", "7"}};
+  const std::vector<Override> values = {
+      {"process.type", "\"drawing\""},
+      {"process.speed", "2.5"},
+      {"process.ram", "\"sticking\""},
+      {"geometry.container_length", "12.0"},
+      {"geometry.entry_half_height", "8.0"},
+      {"geometry.exit_half_height", "4.0"},
+      {"geometry.exit_length", "6.0"},
+      {"geometry.die", "\"polyline\""},
+      {"geometry.die_angle", "20.0"},
+      {"geometry.die_radius", "6.0"},
+      {"geometry.die_profile", "[[0.0, 8.0], [2.0, 6.0], [5.0, 4.0]]"},
+      {"geometry.land_length", "1.0"},
+      {"geometry.symmetry", "\"axisymmetric\""},
+      {"mesh.element", "\"Q1\""},
+      {"mesh.size", "0.5"},
+      {"mesh.source", "\"file\""},
+      {"mesh.file", "\"meshes/die.msh\""},
+      {"mesh.boundaries", "{ram = \"rear\", wall = \"container\"}"},
+      {"integration.volumetric", "1"},
+      {"material.A", "2.0"},
+      {"material.alpha", "0.2"},
+      {"material.rate1", "0.01"},
+      {"material.rate2", "100.0"},
+      {"material.law", "\"hensel_spittel\""},
+      {"material.K", "0.7"},
+      {"material.m", "0.3"},
+      {"material.sigma0", "2.2"},
+      {"material.hs_A", "250.0"},
+      {"material.hs_m1", "-0.003"},
+      {"material.hs_m2", "0.12"},
+      {"material.hs_m3", "0.1"},
+      {"material.hs_m4", "-0.02"},
+      {"material.hs_m8", "0.0001"},
+      {"material.temperature", "650.0"},
+      {"material.strain", "0.4"},
+      {"formulation.viscous_strain", "\"deviatoric\""},
+      // default: "mixed" is refused with axisymmetric
+      // (its JSON is checked in test_formulation_keys.cpp)
+      {"formulation.type", "\"penalty\""},
+      {"formulation.pressure", "\"P0\""},
+      {"formulation.augmentation", "100.0"},
+      {"formulation.contact_augmentation", "1000.0"},
+      {"formulation.uzawa_tolerance", "1e-06"},
+      {"formulation.uzawa_max_steps", "7"},
+      {"contact.normals", "\"nodes\""},
+      {"contact.corner_angle", "30.0"},
+      {"friction.mu", "0.15"},
+      {"friction.radius", "0.5"},
+      {"friction.on", "[\"die\"]"},
+      {"friction.regularization", "\"none\""},
+      {"friction.augmentation", "10.0"},
+      {"friction.newton_augmentation", "1000.0"},
+      {"penalty.d", "0.01"},
+      {"penalty.dN", "1e-05"},
+      {"penalty.dT", "1e-07"},
+      {"solver.tolerance", "1e-06"},
+      {"solver.max_iterations", "42"},
+      {"solver.initial_rate", "0.5"},
+      {"solver.method", "\"secant\""},
+      {"solver.newton_start", "0.2"},
+      {"solver.coarse_levels", "2"},
+      {"verification.solution", "\"smooth\""},
+      {"verification.distortion", "\"random\""},
+      {"verification.amplitude", "0.2"},
+      {"verification.seed", "7"}};
   ASSERT_EQ(values.size(), case_keys().size()) << "a key was added: give it a value here";
   const nlohmann::json json = case_to_json(load_case("", values));
   std::size_t n_keys = 0;
@@ -379,7 +380,8 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
     ASSERT_TRUE(json.contains(section) && json[section].contains(leaf)) << name;
     if (json[section][leaf].is_object()) {
       // A table key: a JSON object, given back as a TOML inline table.
-      EXPECT_EQ(json[section][leaf], nlohmann::json::parse(R"({"ram": "rear", "wall": "container"})"));
+      EXPECT_EQ(json[section][leaf],
+                nlohmann::json::parse(R"({"ram": "rear", "wall": "container"})"));
       std::string table;
       for (const auto& [entry, value] : json[section][leaf].items())
         table += (table.empty() ? "{" : ", ") + entry + " = " + value.dump();
@@ -392,5 +394,5 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
   EXPECT_EQ(nlohmann::json(case_to_json(load_case("", from_json))), json);
 }
 
-}  // namespace
-}  // namespace formflow::io
+} // namespace
+} // namespace formflow::io

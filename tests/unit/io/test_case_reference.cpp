@@ -151,5 +151,5 @@ TEST(ExampleCases, NamedCasesHaveTheirSettings) {
   EXPECT_EQ(load("sticking-ram-q2").process.ram, physics::RamCondition::Sticking);
 }
 
-}  // namespace
-}  // namespace formflow::io
+} // namespace
+} // namespace formflow::io

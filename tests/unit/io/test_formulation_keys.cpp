@@ -17,8 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 ::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos)
-    return ::testing::AssertionSuccess();
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
 }
 
@@ -93,8 +92,8 @@ TEST(FormulationKeys, UnstableOrUnimplementedPairsAreRefused) {
 }
 
 TEST(FormulationKeys, CombinationsNotYetSupportedAreRefused) {
-  const InputError axisymmetric = refusal(
-      "", {{"formulation.type", "mixed"}, {"geometry.symmetry", "axisymmetric"}});
+  const InputError axisymmetric =
+      refusal("", {{"formulation.type", "mixed"}, {"geometry.symmetry", "axisymmetric"}});
   EXPECT_EQ(axisymmetric.key, "geometry.symmetry");
   const InputError exact_friction =
       refusal("", {{"friction.regularization", "none"}, {"penalty.dN", "0"}});

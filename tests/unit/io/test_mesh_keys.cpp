@@ -16,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class MeshKeys : public ::testing::Test {
- protected:
+protected:
   std::string write(const std::string& text) {
     const fs::path path = directory_ / "case.toml";
     std::ofstream(path) << text;
@@ -60,7 +60,8 @@ TEST_F(MeshKeys, FileSourceReadsTheMapAndRemembersEachEntrysLine) {
 }
 
 TEST_F(MeshKeys, FileSourceNeedsAFile) {
-  const InputError error = error_in("[mesh]\nelement = \"Q1\"\nsource = \"file\"\n", "mesh.source", 3);
+  const InputError error =
+      error_in("[mesh]\nelement = \"Q1\"\nsource = \"file\"\n", "mesh.source", 3);
   EXPECT_NE(std::string(error.what()).find("needs mesh.file"), std::string::npos);
 }
 
@@ -107,12 +108,12 @@ TEST_F(MeshKeys, GmshSourceTakesAnySizeButTheStructuredGridDoesNot) {
 }
 
 TEST_F(MeshKeys, MapCanBeSetOnTheCommandLine) {
-  const Case case_ = load_case("", {{"mesh.source", "file"},
-                                    {"mesh.file", "x.msh"},
-                                    {"mesh.boundaries", "{ram = \"rear\"}"}});
+  const Case case_ = load_case(
+      "",
+      {{"mesh.source", "file"}, {"mesh.file", "x.msh"}, {"mesh.boundaries", "{ram = \"rear\"}"}});
   EXPECT_EQ(case_.mesh_boundaries, (NameMap{{"ram", "rear"}}));
   EXPECT_EQ(case_.key_locations.at("mesh.boundaries.ram").file, "--set");
 }
 
-}  // namespace
-}  // namespace formflow::io
+} // namespace
+} // namespace formflow::io

@@ -120,8 +120,7 @@ TEST(MeshMemory, GmshAndManufacturedSuggestTheirOwnValidSizes) {
   const std::string gmsh_size = suggested_size(gmsh_problem->hint);
   EXPECT_LE(gmsh_size.size(), 6u) << "two significant digits: " << gmsh_problem->hint;
   EXPECT_FALSE(mesh_memory_problem(
-      mesh_case(std::stod(gmsh_size), fem::ElementKind::Q2, mesh::MeshSource::Gmsh),
-      8 * gibibyte));
+      mesh_case(std::stod(gmsh_size), fem::ElementKind::Q2, mesh::MeshSource::Gmsh), 8 * gibibyte));
 
   Case box = mesh_case(1e-4);
   box.manufactured = physics::ManufacturedSolution::Smooth;
@@ -147,5 +146,5 @@ TEST(MeshMemory, LoadCaseRefusesAMeshNoMachineHolds) {
   }
 }
 
-}  // namespace
-}  // namespace formflow::io
+} // namespace
+} // namespace formflow::io

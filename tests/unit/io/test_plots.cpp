@@ -85,8 +85,7 @@ protected:
     io::write_results(directory_.string(), case_, mesh_, results_);
   }
   void TearDown() override {
-    if (!keep_)
-      std::filesystem::remove_all(directory_);
+    if (!keep_) std::filesystem::remove_all(directory_);
   }
   /// The PNG pixel showing data point (x, y) in a field picture.
   plot::Rgb field_pixel(cairo_surface_t* surface, double x, double y) const {

@@ -31,8 +31,7 @@ namespace {
 /// the exit, shrinking smoothly along the dead-metal boundary x ∈ [5, 10].
 double channel_height(double x, double* slope) {
   const double t = std::clamp((x - 5.0) / 5.0, 0.0, 1.0);
-  if (slope)
-    *slope = (x > 5.0 && x < 10.0) ? -5.0 * (6.0 * t - 6.0 * t * t) / 5.0 : 0.0;
+  if (slope) *slope = (x > 5.0 && x < 10.0) ? -5.0 * (6.0 * t - 6.0 * t * t) / 5.0 : 0.0;
   return 10.0 - 5.0 * (3.0 * t * t - 2.0 * t * t * t);
 }
 
@@ -164,8 +163,7 @@ std::vector<std::vector<std::string>> read_csv(const std::string& text) {
   for (std::string line; std::getline(lines, line);) {
     std::vector<std::string> cells;
     std::istringstream fields(line);
-    for (std::string cell; std::getline(fields, cell, ',');)
-      cells.push_back(cell);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
     rows.push_back(cells);
   }
   return rows;
@@ -225,7 +223,7 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   EXPECT_EQ(mesh.at("element"), "Q2");
   EXPECT_EQ(mesh.at("size"), 1.0);
   EXPECT_EQ(mesh.at("source"), "structured");
-  EXPECT_EQ(mesh.at("min_cell_diameter"), std::sqrt(2.0));  // unit squares
+  EXPECT_EQ(mesh.at("min_cell_diameter"), std::sqrt(2.0)); // unit squares
   EXPECT_EQ(mesh.at("max_cell_diameter"), std::sqrt(2.0));
   // JSON doubles are written with round-trip precision: exact comparisons.
   const auto& pressure = summary.at("pressure");
@@ -259,7 +257,7 @@ TEST_F(ResultsFiles, SummaryHasEveryKeyWithItsValue) {
   EXPECT_EQ(linear_algebra.at("krylov_iterations"), 12);
   // Phases added as seconds only (no timer) ran 0 counted times; every timed phase is listed.
   EXPECT_EQ(summary.at("timing_calls").at("assembly"), 0);
-  EXPECT_EQ(summary.at("timing_calls").size(), 3u);  // total, assembly, mesh
+  EXPECT_EQ(summary.at("timing_calls").size(), 3u); // total, assembly, mesh
   EXPECT_EQ(summary.at("case"), nlohmann::json(io::case_to_json(case_)));
   // Read in file order, the case block keeps the key table's order.
   const auto ordered = nlohmann::ordered_json::parse(io::summary_json(case_, results_));
@@ -277,7 +275,7 @@ TEST_F(ResultsFiles, SummaryReportsStickAndSlipPerContactPart) {
   EXPECT_EQ(contact.at("die").at("slip_length"), 3.0);
   EXPECT_EQ(contact.at("die").at("stick_fraction"), 0.4);
   EXPECT_EQ(contact.at("container").at("stick_fraction"), 0.0);
-  EXPECT_FALSE(contact.contains("augmented_lagrangian"));  // only for exact friction
+  EXPECT_FALSE(contact.contains("augmented_lagrangian")); // only for exact friction
 
   case_.friction.regularization = physics::FrictionRegularization::None;
   results_.augmentation = {12, 3e-5};

@@ -48,8 +48,7 @@ nlohmann::json read_with_vtk(const std::string& vtu, const std::string& name) {
   std::filesystem::remove(file);
   std::filesystem::remove(errors);
   EXPECT_EQ(status, 0) << command << "\n" << stderr_text;
-  if (status != 0)
-    return nlohmann::json::object();
+  if (status != 0) return nlohmann::json::object();
   return nlohmann::json::parse(output);
 }
 
@@ -86,8 +85,7 @@ TEST_P(VtuReadBack, PointsCellsAndTypes) {
   ASSERT_EQ(seen_["n_points"], mesh_.n_nodes());
   ASSERT_EQ(seen_["n_cells"], mesh_.n_cells());
   const int expected_type = GetParam() == 2 ? 28 : 9;
-  for (const auto& type : seen_["cell_types"])
-    EXPECT_EQ(type, expected_type);
+  for (const auto& type : seen_["cell_types"]) EXPECT_EQ(type, expected_type);
   for (Index n = 0; n < mesh_.n_nodes(); ++n) {
     EXPECT_EQ(coordinate(seen_["points"], n, 0), mesh_.nodes(0, n));
     EXPECT_EQ(coordinate(seen_["points"], n, 1), mesh_.nodes(1, n));
@@ -103,8 +101,7 @@ TEST_P(VtuReadBack, CellNodeOrderIsVtks) {
     EXPECT_GT(twice_signed_area(points, ids, 4), 0.0) << "cell " << c << " corners not ccw";
     // Corner 0 is the lower-left one: VTK's first corner is our lexicographic node 0.
     EXPECT_EQ(ids[0], mesh_.cells(0, c));
-    if (GetParam() != 2)
-      continue;
+    if (GetParam() != 2) continue;
     for (int axis = 0; axis < 2; ++axis) {
       // Points 4..7 are the mid-points of edges 0-1, 1-2, 2-3, 3-0; point 8 the centre.
       for (int edge = 0; edge < 4; ++edge) {

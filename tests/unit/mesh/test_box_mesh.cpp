@@ -18,7 +18,8 @@ Real area_of(const Mesh<2>& mesh, bool& all_positive) {
   all_positive = true;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     fem::CellValues<2>::Gradients nodes(2, mesh.nodes_per_cell());
-    for (int a = 0; a < mesh.nodes_per_cell(); ++a) nodes.col(a) = mesh.nodes.col(mesh.cells(a, cell));
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+      nodes.col(a) = mesh.nodes.col(mesh.cells(a, cell));
     all_positive &= values.reinit(nodes);
     for (int q = 0; q < values.n_points(); ++q) area += values.JxW(q);
   }
@@ -42,8 +43,8 @@ TEST(BoxMesh, DistortedMeshesKeepTheBoxAndPositiveJacobians) {
 
 TEST(BoxMesh, RandomDistortionMovesInteriorNodesOffTheLattice) {
   const Mesh<2> uniform = make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), 4, 4, 1);
-  const Mesh<2> random = make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), 4, 4, 1,
-                                       {Distortion::Random, 0.2, 3});
+  const Mesh<2> random =
+      make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), 4, 4, 1, {Distortion::Random, 0.2, 3});
   const Real moved = (random.nodes - uniform.nodes).colwise().norm().maxCoeff();
   EXPECT_GT(moved, 0.01);
   EXPECT_LE(moved, 0.2 * 0.25 * std::sqrt(2.0) + 1e-12);
@@ -66,5 +67,5 @@ TEST(MeshTransform, MirroringKeepsOrientationAndArea) {
   EXPECT_NEAR(moved.nodes(0, 0) - channel.nodes(0, 0), 3.5, 1e-15);
 }
 
-}  // namespace
-}  // namespace formflow::mesh
+} // namespace
+} // namespace formflow::mesh

@@ -24,12 +24,12 @@ TEST(CellDiameter, RectanglesOfTwoSizes) {
   Mesh<2> mesh;
   mesh.order = 1;
   mesh.nodes.resize(2, 6);
-  mesh.nodes << 0.0, 3.0, 4.0, 0.0, 3.0, 4.0,  //
+  mesh.nodes << 0.0, 3.0, 4.0, 0.0, 3.0, 4.0, //
       0.0, 0.0, 0.0, 4.0, 4.0, 4.0;
   mesh.cells.resize(4, 2);
-  mesh.cells << 0, 1,  //
-      1, 2,            //
-      3, 4,            //
+  mesh.cells << 0, 1, //
+      1, 2,           //
+      3, 4,           //
       4, 5;
   const CellDiameterRange range = cell_diameter_range(mesh);
   EXPECT_DOUBLE_EQ(range.smallest, std::sqrt(17.0));
@@ -55,5 +55,5 @@ TEST(CellDiameter, NoCellsNoDiameter) {
   EXPECT_EQ(range.largest, 0.0);
 }
 
-}  // namespace
-}  // namespace formflow::mesh
+} // namespace
+} // namespace formflow::mesh

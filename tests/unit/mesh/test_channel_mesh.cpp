@@ -28,7 +28,9 @@ constexpr double coordinate_tol = 1e-12;
 
 /// Local index of the lattice node (a, b) of a cell with `n_side` nodes per
 /// direction: lexicographic, x fastest (fem/lagrange.hpp drawing).
-int local_index(int n_side, int a, int b) { return b * n_side + a; }
+int local_index(int n_side, int a, int b) {
+  return b * n_side + a;
+}
 
 Point<2> node_of(const mesh::Mesh<2>& m, Index cell, int local) {
   return m.nodes.col(m.cells(local, cell));
@@ -70,10 +72,12 @@ const std::array<MeshCase, 4> benchmark_meshes = {{
     {"mesh_II_Q2", 1.0, 2, 150, 661},
 }};
 
-void PrintTo(const MeshCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const MeshCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class BenchmarkMesh : public ::testing::TestWithParam<MeshCase> {
- protected:
+protected:
   mesh::Mesh<2> make() const {
     return mesh::make_channel_mesh(mesh::ChannelGeometry{}, GetParam().size, GetParam().order);
   }
@@ -143,13 +147,13 @@ bool lies_on(BoundaryLabel label, const Point<2>& p) {
     return v >= lo - coordinate_tol && v <= hi + coordinate_tol;
   };
   switch (label) {
-    case BoundaryLabel::Rear: return near(p.x(), 0.0) && within(p.y(), 0.0, 10.0);
-    case BoundaryLabel::Container: return near(p.y(), 10.0) && within(p.x(), 0.0, 10.0);
-    case BoundaryLabel::Die: return near(p.x(), 10.0) && within(p.y(), 5.0, 10.0);
-    case BoundaryLabel::FreeExit: return near(p.y(), 5.0) && within(p.x(), 10.0, 20.0);
-    case BoundaryLabel::Front: return near(p.x(), 20.0) && within(p.y(), 0.0, 5.0);
-    case BoundaryLabel::Symmetry: return near(p.y(), 0.0) && within(p.x(), 0.0, 20.0);
-    case BoundaryLabel::FreeEntry: return false;  // the benchmark channel has no Γ2
+  case BoundaryLabel::Rear: return near(p.x(), 0.0) && within(p.y(), 0.0, 10.0);
+  case BoundaryLabel::Container: return near(p.y(), 10.0) && within(p.x(), 0.0, 10.0);
+  case BoundaryLabel::Die: return near(p.x(), 10.0) && within(p.y(), 5.0, 10.0);
+  case BoundaryLabel::FreeExit: return near(p.y(), 5.0) && within(p.x(), 10.0, 20.0);
+  case BoundaryLabel::Front: return near(p.x(), 20.0) && within(p.y(), 0.0, 5.0);
+  case BoundaryLabel::Symmetry: return near(p.y(), 0.0) && within(p.x(), 0.0, 20.0);
+  case BoundaryLabel::FreeEntry: return false; // the benchmark channel has no Γ2
   }
   return false;
 }
@@ -172,9 +176,9 @@ TEST_P(BenchmarkMesh, BoundaryLabelsHaveTheBenchmarkLengthsAndLieOnTheirLines) {
   }
   // SPEC §4 geometry; the sums have ≤ 20 terms of round-off each.
   const std::map<BoundaryLabel, double> expected = {
-      {BoundaryLabel::Rear, 10.0},     {BoundaryLabel::Container, 10.0},
-      {BoundaryLabel::Die, 5.0},       {BoundaryLabel::FreeExit, 10.0},
-      {BoundaryLabel::Front, 5.0},     {BoundaryLabel::Symmetry, 20.0},
+      {BoundaryLabel::Rear, 10.0}, {BoundaryLabel::Container, 10.0},
+      {BoundaryLabel::Die, 5.0},   {BoundaryLabel::FreeExit, 10.0},
+      {BoundaryLabel::Front, 5.0}, {BoundaryLabel::Symmetry, 20.0},
   };
   for (const auto& [label, value] : expected)
     EXPECT_TRUE(approx(length[label], value, 1e-12)) << mesh::label_name(label);
@@ -190,12 +194,13 @@ TEST(ChannelMesh, UnequalGeometryPlacesTheDieAtTheContainerEnd) {
   // Container 3 long and 4 high, exit 2 long and 1 high: labels follow the geometry.
   const mesh::ChannelGeometry geometry{3.0, 4.0, 1.0, 2.0};
   const mesh::Mesh<2> m = mesh::make_channel_mesh(geometry, 0.5, 1);
-  EXPECT_EQ(m.n_cells(), 6 * 8 + 4 * 2);        // container 6×8, exit 4×2
-  EXPECT_EQ(m.n_nodes(), 7 * 9 + 4 * 3);        // container lattice 7×9, exit 4 columns of 3
+  EXPECT_EQ(m.n_cells(), 6 * 8 + 4 * 2); // container 6×8, exit 4×2
+  EXPECT_EQ(m.n_nodes(), 7 * 9 + 4 * 3); // container lattice 7×9, exit 4 columns of 3
   std::map<BoundaryLabel, double> length;
   for (const mesh::BoundaryFacet& facet : m.facets) {
     const auto local = mesh::face_local_nodes<2>(2, facet.local_face);
-    const Point<2> p = node_of(m, facet.cell, local.front()), q = node_of(m, facet.cell, local.back());
+    const Point<2> p = node_of(m, facet.cell, local.front()),
+                   q = node_of(m, facet.cell, local.back());
     length[facet.label] += (q - p).norm();
     if (facet.label == BoundaryLabel::Die) {
       EXPECT_TRUE(approx(p.x(), 3.0, 0.0, coordinate_tol));
@@ -212,12 +217,12 @@ TEST(ChannelMesh, UnequalGeometryPlacesTheDieAtTheContainerEnd) {
 }
 
 TEST(CellsAlong, AcceptsSizesThatFitAndRefusesOthers) {
-  EXPECT_EQ(mesh::cells_along(10.0, 10.0 / 6.0), 6);  // mesh I: 10/6 is inexact in binary
+  EXPECT_EQ(mesh::cells_along(10.0, 10.0 / 6.0), 6); // mesh I: 10/6 is inexact in binary
   EXPECT_EQ(mesh::cells_along(5.0, 10.0 / 6.0), 3);
   EXPECT_EQ(mesh::cells_along(10.0, 1.0), 10);
   EXPECT_EQ(mesh::cells_along(10.0, 10.0), 1);
   EXPECT_EQ(mesh::cells_along(10.0, 0.3), -1);  // 33.3… cells
-  EXPECT_EQ(mesh::cells_along(10.0, 20.0), -1);  // half a cell
+  EXPECT_EQ(mesh::cells_along(10.0, 20.0), -1); // half a cell
   EXPECT_EQ(mesh::cells_along(10.0, 0.0), -1);
   EXPECT_EQ(mesh::cells_along(10.0, -1.0), -1);
   EXPECT_EQ(mesh::cells_along(0.0, 1.0), -1);
@@ -276,5 +281,5 @@ TEST(BoundaryLabel, NamesAndContactParts) {
   EXPECT_FALSE(mesh::is_contact(BoundaryLabel::Symmetry));
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

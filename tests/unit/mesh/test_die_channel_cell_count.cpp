@@ -36,5 +36,5 @@ TEST(DieChannelCellCount, GrowsAsOneOverSizeSquaredWithoutOverflow) {
   EXPECT_NEAR(die_channel_cell_count(benchmark, 1e-5), 1.5e12, 1e-3 * 1.5e12);
 }
 
-}  // namespace
-}  // namespace formflow::mesh
+} // namespace
+} // namespace formflow::mesh

@@ -78,7 +78,8 @@ TEST(DieChannelMesh, LabelsCoverTheBoundaryOnce) {
   std::map<BoundaryLabel, int> count;
   for (const auto& facet : m.facets) ++count[facet.label];
   const int rows = 4, container = 8, exit = 8;
-  const int die = static_cast<int>(std::ceil(0.25 / std::tan(15.0 * std::numbers::pi / 180.0) / 0.25));
+  const int die =
+      static_cast<int>(std::ceil(0.25 / std::tan(15.0 * std::numbers::pi / 180.0) / 0.25));
   EXPECT_EQ(count[BoundaryLabel::Rear], rows);
   EXPECT_EQ(count[BoundaryLabel::Front], rows);
   EXPECT_EQ(count[BoundaryLabel::Symmetry], container + die + exit);
@@ -106,7 +107,7 @@ TEST(DieChannelMesh, LandIsDieContactAndDrawingFreesTheContainer) {
   mesh::free_container_wall(m);
   for (const auto& facet : m.facets) EXPECT_NE(facet.label, BoundaryLabel::Container);
 
-  mesh::ChannelGeometry square;  // the benchmark with a land of 2
+  mesh::ChannelGeometry square; // the benchmark with a land of 2
   square.land_length = 2.0;
   const mesh::Mesh<2> benchmark = mesh::make_die_channel_mesh(square, 1.0, 2);
   int square_land = 0;
@@ -170,5 +171,5 @@ TEST(DieChannelMesh, FaceNormalsOnTheSlopedDieAreTheConeNormal) {
   }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

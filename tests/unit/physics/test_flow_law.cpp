@@ -115,7 +115,7 @@ TEST(PowerLaw, DerivativeMatchesCentralDifferences) {
   // viscosity as absolute scale: still 1000× below the derivative itself.
   for (const PowerLaw& law : laws()) {
     std::vector<double> rates = {law.rate1 * 3, std::sqrt(law.rate1 * law.rate2), law.rate2 / 3};
-    rates.push_back(law.rate1 / 10);  // linear branches: the slope is the secant viscosity
+    rates.push_back(law.rate1 / 10); // linear branches: the slope is the secant viscosity
     rates.push_back(law.rate2 * 10);
     for (double rate : rates) {
       const double h = 1e-6 * rate;
@@ -129,7 +129,8 @@ TEST(PowerLaw, DerivativeMatchesCentralDifferences) {
 
 TEST(PowerLaw, DissipationIsStressTimesRate) {
   for (const PowerLaw& law : laws())
-    for (double rate : sweep()) EXPECT_TRUE(approx(law.dissipation(rate), law.yield_stress(rate) * rate, 1e-15));
+    for (double rate : sweep())
+      EXPECT_TRUE(approx(law.dissipation(rate), law.yield_stress(rate) * rate, 1e-15));
 }
 
 TEST(PowerLaw, AlphaOneIsNewtonianEverywhere) {
@@ -144,5 +145,5 @@ TEST(PowerLaw, AlphaOneIsNewtonianEverywhere) {
   EXPECT_TRUE(approx(law.secant_viscosity(0.0), 2.5, 1e-15));
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -26,8 +26,8 @@ std::vector<FlowLaw> all_laws() {
 TEST(FlowLaws, NortonHoffIsRootThreeKTimesRootThreeRateToTheM) {
   const FlowLaw law = norton_hoff(0.8, 0.2);
   for (double rate : {0.01, 1.0, 50.0})
-    EXPECT_TRUE(approx(law.yield_stress(rate), std::sqrt(3.0) * 0.8 * std::pow(std::sqrt(3.0) * rate, 0.2),
-                       1e-14));
+    EXPECT_TRUE(approx(law.yield_stress(rate),
+                       std::sqrt(3.0) * 0.8 * std::pow(std::sqrt(3.0) * rate, 0.2), 1e-14));
 }
 
 TEST(FlowLaws, NortonHoffWithMOneIsLinearViscousEverywhere) {
@@ -94,20 +94,20 @@ TEST(FlowLaws, EveryDefaultAndExampleLawPassesCondition211) {
 
 TEST(FlowLaws, LawsViolatingCondition211AreRefused) {
   FlowLaw steep = hensel_spittel();
-  steep.hs_m8 = 3e-3;  // m3 + m8 T = 2.15: σ_p′ > σ_p/ε̄̇
+  steep.hs_m8 = 3e-3; // m3 + m8 T = 2.15: σ_p′ > σ_p/ε̄̇
   ASSERT_TRUE(physics::check_flow_law(steep).has_value());
   EXPECT_NE(physics::check_flow_law(steep)->find("outside [0, 1]"), std::string::npos);
   FlowLaw softening = hensel_spittel();
-  softening.hs_m3 = -0.2;  // σ_p decreasing in ε̄̇
+  softening.hs_m3 = -0.2; // σ_p decreasing in ε̄̇
   EXPECT_TRUE(physics::check_flow_law(softening).has_value());
   FlowLaw flat = hensel_spittel();
   flat.hs_m3 = 0.0;
-  flat.hs_m8 = 0.0;  // rate-independent through the Hensel–Spittel door: η1 = 0, refused
+  flat.hs_m8 = 0.0; // rate-independent through the Hensel–Spittel door: η1 = 0, refused
   EXPECT_TRUE(physics::check_flow_law(flat).has_value());
   FlowLaw overflow = hensel_spittel();
-  overflow.hs_m1 = 5.0;  // e^(3500): not a number
+  overflow.hs_m1 = 5.0; // e^(3500): not a number
   EXPECT_TRUE(physics::check_flow_law(overflow).has_value());
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

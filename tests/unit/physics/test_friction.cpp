@@ -36,7 +36,7 @@ TEST(NonlocalAverage, RadiusZeroIsTheIdentity) {
 
 TEST(NonlocalAverage, ConstantFieldIsPreservedForAnyRadius) {
   MatrixX points(2, 5);
-  points << 0.0, 0.3, 1.1, 1.2, 4.0,  //
+  points << 0.0, 0.3, 1.1, 1.2, 4.0, //
       0.0, 0.4, -0.2, 0.9, 1.0;
   const std::vector<Real> weights = {0.5, 1.5, 0.25, 2.0, 1.0};
   for (double radius : {0.0, 0.5, 1.0, 3.0, 100.0}) {
@@ -67,14 +67,14 @@ TEST(NonlocalAverage, UsesEuclideanDistanceInThePlane) {
   // (0,0), (3,4)/10 at distance 0.5, (0.6,0) at 0.6 from the first and
   // |(0.3,−0.4)| = 0.5 from the second. Radius 0.55 pairs 0–1 and 1–2 only.
   MatrixX points(2, 3);
-  points << 0.0, 0.3, 0.6,  //
+  points << 0.0, 0.3, 0.6, //
       0.0, 0.4, 0.0;
   const physics::NonlocalAverage average(points, {1.0, 1.0, 2.0}, 0.55);
   std::vector<Real> averaged;
   average.apply({0.0, 3.0, 6.0}, averaged);
-  EXPECT_TRUE(approx(averaged[0], 1.5, roundoff));                   // (0 + 3)/2
-  EXPECT_TRUE(approx(averaged[1], (0.0 + 3.0 + 12.0) / 4.0, roundoff));  // all three
-  EXPECT_TRUE(approx(averaged[2], (3.0 + 12.0) / 3.0, roundoff));    // {1, 2}
+  EXPECT_TRUE(approx(averaged[0], 1.5, roundoff));                      // (0 + 3)/2
+  EXPECT_TRUE(approx(averaged[1], (0.0 + 3.0 + 12.0) / 4.0, roundoff)); // all three
+  EXPECT_TRUE(approx(averaged[2], (3.0 + 12.0) / 3.0, roundoff));       // {1, 2}
 }
 
 TEST(NonlocalAverage, NeighbourExactlyAtTheRadiusIsExcluded) {
@@ -89,7 +89,7 @@ TEST(NonlocalAverage, NeighbourExactlyAtTheRadiusIsExcluded) {
 TEST(FrictionThreshold, IsMuTimesMeanPressureAndZeroUnderTension) {
   EXPECT_TRUE(approx(physics::friction_threshold(0.2, 3.5), 0.7, roundoff));
   EXPECT_EQ(physics::friction_threshold(0.2, 0.0), 0.0);
-  EXPECT_EQ(physics::friction_threshold(0.2, -4.0), 0.0);  // tensile: no contact, no friction
+  EXPECT_EQ(physics::friction_threshold(0.2, -4.0), 0.0); // tensile: no contact, no friction
   EXPECT_EQ(physics::friction_threshold(0.0, 5.0), 0.0);
 }
 
@@ -113,9 +113,10 @@ TEST(FrictionWeight, TangentialStressIsTheDerivativeOfTheRegularisedPotential) {
   auto potential = [&](double s) { return tau * std::sqrt(s * s + d_t * d_t); };
   for (double slip : {0.0, 0.01, 0.05, 0.3, 2.0}) {
     const double difference = (potential(slip + h) - potential(slip - h)) / (2 * h);
-    EXPECT_TRUE(approx(physics::friction_weight(tau, slip, d_t) * slip, difference, 1e-7, 1e-8)) << slip;
+    EXPECT_TRUE(approx(physics::friction_weight(tau, slip, d_t) * slip, difference, 1e-7, 1e-8))
+        << slip;
   }
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

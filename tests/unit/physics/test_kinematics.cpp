@@ -17,8 +17,7 @@ namespace {
 // relative (with 1e-15 absolute for zeros) is round-off.
 constexpr double rel = 1e-14, abs_zero = 1e-15;
 
-template <int dim>
-Tensor2<dim> random_gradient(unsigned seed) {
+template <int dim> Tensor2<dim> random_gradient(unsigned seed) {
   std::mt19937 generator(seed);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   Tensor2<dim> gradient;
@@ -61,7 +60,7 @@ TEST(Kinematics, PlaneStrainCompressionByHand) {
 TEST(Kinematics, PlaneStrainKeepsZzZeroAndTheDeviatorCarriesMinusOneThirdOfTheVolumetricRate) {
   // SPEC §1: ε̇_zz = 0 in plane strain, so ė_zz = −⅓ ε̇_V.
   Tensor2<2> gradient;
-  gradient << 0.6, 0.2, -0.4, 0.3;  // ε̇_V = 0.9
+  gradient << 0.6, 0.2, -0.4, 0.3; // ε̇_V = 0.9
   const Tensor3 rate = physics::strain_rate<2>(gradient);
   EXPECT_EQ(rate(2, 2), 0.0);
   EXPECT_EQ(rate(0, 2), 0.0);
@@ -84,7 +83,8 @@ TEST(Kinematics, DeviatorIsTracelessAndSymmetric) {
       const Tensor3 dev = physics::deviator(rate);
       EXPECT_TRUE(approx(dev.trace(), 0.0, 0.0, 1e-15));
       EXPECT_TRUE(approx((dev - dev.transpose()).norm(), 0.0, 0.0, abs_zero));
-      EXPECT_TRUE(approx((rate - dev).norm(), std::abs(rate.trace()) / std::sqrt(3.0), rel, abs_zero));
+      EXPECT_TRUE(
+          approx((rate - dev).norm(), std::abs(rate.trace()) / std::sqrt(3.0), rel, abs_zero));
     }
   }
 }
@@ -96,13 +96,15 @@ TEST(Kinematics, EquivalentRateIgnoresDilatationAndRotation) {
   Tensor2<3> spin;
   spin << 0, 0.3, -0.2, -0.3, 0, 0.5, 0.2, -0.5, 0;
   const Tensor2<3> perturbed = gradient + 0.7 * Tensor2<3>::Identity() + spin;
-  EXPECT_TRUE(approx(physics::equivalent_strain_rate(physics::strain_rate<3>(perturbed)), reference, rel));
+  EXPECT_TRUE(
+      approx(physics::equivalent_strain_rate(physics::strain_rate<3>(perturbed)), reference, rel));
   // Objectivity: R ∇u Rᵀ has the same ε̄̇.
   const double angle = 0.4;
   Tensor2<3> rotation;
   rotation << std::cos(angle), -std::sin(angle), 0, std::sin(angle), std::cos(angle), 0, 0, 0, 1;
   const Tensor2<3> rotated = rotation * gradient * rotation.transpose();
-  EXPECT_TRUE(approx(physics::equivalent_strain_rate(physics::strain_rate<3>(rotated)), reference, 1e-13));
+  EXPECT_TRUE(
+      approx(physics::equivalent_strain_rate(physics::strain_rate<3>(rotated)), reference, 1e-13));
 }
 
 TEST(Kinematics, VelocityGradientFromNodalValuesOfALinearField) {
@@ -120,5 +122,5 @@ TEST(Kinematics, VelocityGradientFromNodalValuesOfALinearField) {
     for (int j = 0; j < 2; ++j) EXPECT_TRUE(approx(result(i, j), g(i, j), rel, abs_zero)) << i << j;
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The CHOLMOD wrapper (residuals, failure by return value) and the SPD systems FormingProblem assembles.
+// The CHOLMOD wrapper (residuals, failure by return value) and the SPD systems FormingProblem
+// assembles.
 #include "formflow/solvers/linear_solver.hpp"
 
 #include "formflow/assembly/forming_problem.hpp"
@@ -83,7 +84,7 @@ TEST(Cholmod, ReadsOnlyTheLowerTriangle) {
   // The interface takes the lower triangle; junk above the diagonal must not matter.
   const SparseMatrix lower = spd_test_matrix(6);
   MatrixX with_junk = MatrixX(lower);
-  for (Index c = 1; c < with_junk.cols(); ++c) with_junk(c - 1, c) = 123.0;  // superdiagonal junk
+  for (Index c = 1; c < with_junk.cols(); ++c) with_junk(c - 1, c) = 123.0; // superdiagonal junk
   const SparseMatrix junk_sparse = with_junk.sparseView();
   const VectorX rhs = random_vector(lower.rows(), 3);
   VectorX clean, dirty;
@@ -98,7 +99,7 @@ TEST(Cholmod, RefactorisesWithTheAnalysedPattern) {
   // Analyse once, factorise twice with different values (as the secant loop does).
   const SparseMatrix first = spd_test_matrix(8);
   SparseMatrix second = first;
-  second.diagonal().array() += 3.0;  // same pattern, different values
+  second.diagonal().array() += 3.0; // same pattern, different values
   const VectorX rhs = random_vector(first.rows(), 9);
   auto solver = solvers::make_cholmod_solver();
   ASSERT_TRUE(solver->analyze(first));
@@ -107,7 +108,7 @@ TEST(Cholmod, RefactorisesWithTheAnalysedPattern) {
   ASSERT_TRUE(solver->factorize(second));
   ASSERT_TRUE(solver->solve(rhs, x));
   const VectorX residual = second.selfadjointView<Eigen::Lower>() * x - rhs;
-  EXPECT_LT(residual.norm() / rhs.norm(), 1e-10);  // as above
+  EXPECT_LT(residual.norm() / rhs.norm(), 1e-10); // as above
 }
 
 TEST(Cholmod, NonPositiveDefiniteMatricesAreReportedNotThrown) {
@@ -154,7 +155,9 @@ TEST(Cholmod, SolveAfterAFailedFactorisationReportsFailure) {
   EXPECT_FALSE(solver->solve(VectorX::Ones(2), x));
 }
 
-TEST(Cholmod, HasAName) { EXPECT_EQ(solvers::make_cholmod_solver()->name(), "cholmod-supernodal"); }
+TEST(Cholmod, HasAName) {
+  EXPECT_EQ(solvers::make_cholmod_solver()->name(), "cholmod-supernodal");
+}
 
 // ---- FormingProblem: the assembled secant systems are SPD --------------------------
 
@@ -173,11 +176,12 @@ class FormingSystem : public ::testing::TestWithParam<SystemCase> {};
 
 TEST_P(FormingSystem, AssembledMatrixIsPositiveDefinite) {
   const SystemCase& param = GetParam();
-  const mesh::Mesh<2> m = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, param.order);
+  const mesh::Mesh<2> m =
+      mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, param.order);
   assembly::ProblemSettings settings;
   settings.volumetric_points = param.volumetric_points;
   settings.viscous_strain = param.strain;
-  settings.friction.mu = 0.1;  // exercised in the second assembly below
+  settings.friction.mu = 0.1; // exercised in the second assembly below
   const assembly::FormingProblem<2> problem(m, settings);
   assembly::LinearSystem system = problem.plan().make_system();
 
@@ -186,7 +190,8 @@ TEST_P(FormingSystem, AssembledMatrixIsPositiveDefinite) {
   // against viscosities ≈ 1e-3 of the linear branch keep cond below ~1e12).
   auto check = [&](const char* what) {
     const MatrixX dense = MatrixX(SparseMatrix(system.matrix.selfadjointView<Eigen::Lower>()));
-    const VectorX lambda = Eigen::SelfAdjointEigenSolver<MatrixX>(dense, Eigen::EigenvaluesOnly).eigenvalues();
+    const VectorX lambda =
+        Eigen::SelfAdjointEigenSolver<MatrixX>(dense, Eigen::EigenvaluesOnly).eigenvalues();
     EXPECT_GT(lambda.minCoeff(), 1e-14 * lambda.maxCoeff()) << what;
     auto solver = solvers::make_cholmod_solver();
     VectorX x;
@@ -215,7 +220,8 @@ INSTANTIATE_TEST_SUITE_P(ElementKinds, FormingSystem,
                          [](const auto& info) {
                            return std::string(info.param.order == 1 ? "Q1" : "Q2") + "_vol" +
                                   std::to_string(info.param.volumetric_points) +
-                                  (info.param.strain == physics::ViscousStrain::Full ? "_full" : "_dev");
+                                  (info.param.strain == physics::ViscousStrain::Full ? "_full"
+                                                                                     : "_dev");
                          });
 
 TEST(FormingProblem, DrivenHeightIsTheRamOrTheExitHeight) {
@@ -235,14 +241,14 @@ TEST(FormingProblem, ContactStateOfAUniformVelocityByHand) {
   assembly::ProblemSettings settings;
   settings.penalty.d_n = 1e-2;
   settings.friction.mu = 0.3;
-  settings.friction.radius = 100.0;  // every Γ3 point averages over all of Γ3
+  settings.friction.radius = 100.0; // every Γ3 point averages over all of Γ3
   settings.friction.on_die = false;
   settings.friction.d_t = 0.1;
   const assembly::FormingProblem<2> problem(m, settings);
   VectorX u(problem.n_dofs());
   for (Index node = 0; node < m.n_nodes(); ++node) u.segment<2>(2 * node) = Point<2>(0.5, 0.2);
   const auto state = problem.contact_state(u);
-  ASSERT_EQ(state.size(), 3u * 3u);  // 2 container + 1 die faces, 3 points each
+  ASSERT_EQ(state.size(), 3u * 3u); // 2 container + 1 die faces, 3 points each
   double container_length = 0.0, die_length = 0.0;
   // Mean pressure over Γ3: (2·0.2 + 1·0.5)/3 / d_N = 30.
   const double mean = (2 * 0.2 + 1 * 0.5) / 3.0 / 1e-2;
@@ -285,7 +291,8 @@ TEST(FormingProblem, StartingViscosityIsTheSecantViscosityAtTheInitialRate) {
   const assembly::FormingProblem<2> problem(m, settings);
   VectorX w(problem.n_dofs());
   const double gamma = std::sqrt(3.0) * settings.initial_rate;
-  for (Index node = 0; node < m.n_nodes(); ++node) w.segment<2>(2 * node) = Point<2>(gamma * m.nodes(1, node), 0.0);
+  for (Index node = 0; node < m.n_nodes(); ++node)
+    w.segment<2>(2 * node) = Point<2>(gamma * m.nodes(1, node), 0.0);
   assembly::LinearSystem start = problem.plan().make_system(), shear = problem.plan().make_system();
   problem.assemble(nullptr, start);
   problem.assemble(&w, shear);
@@ -295,7 +302,8 @@ TEST(FormingProblem, StartingViscosityIsTheSecantViscosityAtTheInitialRate) {
   // And a different rate does change the matrix (the check above can fail).
   w *= 3.0;
   problem.assemble(&w, shear);
-  EXPECT_GT((MatrixX(start.matrix) - MatrixX(shear.matrix)).norm(), 1e-6 * MatrixX(start.matrix).norm());
+  EXPECT_GT((MatrixX(start.matrix) - MatrixX(shear.matrix)).norm(),
+            1e-6 * MatrixX(start.matrix).norm());
 }
 
 TEST(FormingProblem, FrictionAddsItsPointwiseSecantTermToTheSystem) {
@@ -342,7 +350,8 @@ TEST(FormingProblem, FrictionAddsItsPointwiseSecantTermToTheSystem) {
       // Find the state entry of this face point by facet and position.
       const assembly::ContactPoint<2>* point = nullptr;
       for (const auto& candidate : state)
-        if (candidate.facet == f && (candidate.position - values.point(q)).norm() < 1e-12) point = &candidate;
+        if (candidate.facet == f && (candidate.position - values.point(q)).norm() < 1e-12)
+          point = &candidate;
       ASSERT_NE(point, nullptr) << "facet " << f << " point " << q;
       ++matched;
       const Point<2> v_q = velocities * values.shape(q);
@@ -359,5 +368,5 @@ TEST(FormingProblem, FrictionAddsItsPointwiseSecantTermToTheSystem) {
   EXPECT_GT(expected, 0.0);
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

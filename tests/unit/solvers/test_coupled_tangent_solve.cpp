@@ -35,9 +35,9 @@ TEST(CoupledTangentSolve, SolvesTheUnsymmetricSystemPreconditionedByTheSymmetric
   std::mt19937 generator(7);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   VectorX c(n), d(n), e(n), f(n), b(n);
-  for (Index k = 0; k < n; ++k) c[k] = uniform(generator), d[k] = uniform(generator),
-                                e[k] = uniform(generator), f[k] = uniform(generator),
-                                b[k] = uniform(generator);
+  for (Index k = 0; k < n; ++k)
+    c[k] = uniform(generator), d[k] = uniform(generator), e[k] = uniform(generator),
+    f[k] = uniform(generator), b[k] = uniform(generator);
   c *= 0.3 / c.norm(), e *= 0.3 / e.norm(), d /= d.norm(), f /= f.norm();
   const solvers::CouplingProduct coupling = [&](const VectorX& x, VectorX& y) {
     y += c * d.dot(x) + e * f.dot(x);
@@ -68,5 +68,5 @@ TEST(CoupledTangentSolve, SolvesTheUnsymmetricSystemPreconditionedByTheSymmetric
   EXPECT_LT((delta - symmetric_step).norm(), 1e-12 * symmetric_step.norm());
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

@@ -47,7 +47,7 @@ TEST(NewtonIteration, ConvergesToTheSecantSolutionInFewerIterations) {
     ASSERT_EQ(newton.stop_reason, StopReason::Converged);
     EXPECT_EQ(callbacks, static_cast<int>(newton.history.size()));
     EXPECT_GT(times.get("line search"), 0.0) << "no Newton step was taken";
-    control.tolerance = 1e-9;  // the referee: secant driven far below δ
+    control.tolerance = 1e-9; // the referee: secant driven far below δ
     const solvers::SecantOutcome secant = run(problem, control, false);
     ASSERT_EQ(secant.stop_reason, StopReason::Converged);
     EXPECT_LT(newton.history.size() * 4, secant.history.size());
@@ -78,5 +78,5 @@ TEST(NewtonIteration, IterationLimitIsAStopReason) {
   EXPECT_TRUE(outcome.velocity.allFinite());
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

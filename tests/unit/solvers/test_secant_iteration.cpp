@@ -25,8 +25,9 @@ const mesh::Mesh<2>& small_mesh() {
   return m;
 }
 
-solvers::SecantOutcome run(const assembly::FormingProblem<2>& problem, const solvers::IterationControl& control,
-                           int* callbacks = nullptr, PhaseTimes* phase_times = nullptr) {
+solvers::SecantOutcome run(const assembly::FormingProblem<2>& problem,
+                           const solvers::IterationControl& control, int* callbacks = nullptr,
+                           PhaseTimes* phase_times = nullptr) {
   auto solver = solvers::make_cholmod_solver();
   PhaseTimes local_times;
   return solvers::secant_iteration<2>(
@@ -39,10 +40,12 @@ solvers::SecantOutcome run(const assembly::FormingProblem<2>& problem, const sol
 
 /// The default case, solved once and shared (it is the slowest piece of the unit suite).
 class SecantIteration : public ::testing::Test {
- protected:
+protected:
   static void SetUpTestSuite() {
-    problem_ = std::make_unique<assembly::FormingProblem<2>>(small_mesh(), assembly::ProblemSettings{});
-    outcome_ = std::make_unique<solvers::SecantOutcome>(run(*problem_, solvers::IterationControl{}));
+    problem_ =
+        std::make_unique<assembly::FormingProblem<2>>(small_mesh(), assembly::ProblemSettings{});
+    outcome_ =
+        std::make_unique<solvers::SecantOutcome>(run(*problem_, solvers::IterationControl{}));
   }
   static void TearDownTestSuite() {
     outcome_.reset();
@@ -140,7 +143,8 @@ TEST_F(SecantIteration, IterationLimitDoesNotChangeTheIterates) {
   const solvers::SecantOutcome enough = run(*problem_, exact);
   EXPECT_EQ(enough.stop_reason, StopReason::Converged);
   ASSERT_EQ(enough.history.size(), full.size());
-  EXPECT_TRUE(approx((enough.velocity - outcome_->velocity).norm(), 0.0, 0.0, 1e-12 * outcome_->velocity.norm()));
+  EXPECT_TRUE(approx((enough.velocity - outcome_->velocity).norm(), 0.0, 0.0,
+                     1e-12 * outcome_->velocity.norm()));
 }
 
 TEST_F(SecantIteration, ZeroIterationsReturnsTheConstantViscositySolution) {
@@ -189,10 +193,11 @@ TEST(SecantIterationNewtonian, RamReactionEqualsTheDiscretePower) {
   ASSERT_EQ(outcome.stop_reason, StopReason::Converged);
   const VectorX& u = outcome.velocity;
 
-  fem::CellValues<2> full(2, fem::gauss_rule<2>(3)), volumetric(2, fem::gauss_rule<2>(settings.volumetric_points));
+  fem::CellValues<2> full(2, fem::gauss_rule<2>(3)),
+      volumetric(2, fem::gauss_rule<2>(settings.volumetric_points));
   fem::FacetValues<2> facet(2, fem::gauss_rule<1>(3));
   typename fem::CellValues<2>::Gradients coordinates, velocities;
-  const std::vector<Real> viscosity(full.n_points(), settings.law.A);  // Newtonian: ν = A
+  const std::vector<Real> viscosity(full.n_points(), settings.law.A); // Newtonian: ν = A
   double power = 0.0;
   for (Index cell = 0; cell < m.n_cells(); ++cell) {
     problem.gather(cell, &u, coordinates, velocities);
@@ -217,5 +222,5 @@ TEST(SecantIterationNewtonian, RamReactionEqualsTheDiscretePower) {
   EXPECT_GT(power, 0.0);
 }
 
-}  // namespace
-}  // namespace formflow::testing
+} // namespace
+} // namespace formflow::testing

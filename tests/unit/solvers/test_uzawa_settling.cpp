@@ -21,7 +21,7 @@ TEST(UzawaSettling, AStallBelowTheSquareRootOfTheToleranceIsTheRoundOffFloor) {
   UzawaSettling settling(1e-8);
   EXPECT_FALSE(settling.settled(1e-3));
   EXPECT_FALSE(settling.settled(3e-8));
-  EXPECT_TRUE(settling.settled(4e-8));  // no longer falls, and 4e-8 < 1e-4
+  EXPECT_TRUE(settling.settled(4e-8)); // no longer falls, and 4e-8 < 1e-4
   EXPECT_TRUE(settling.converged());
 }
 
@@ -29,9 +29,9 @@ TEST(UzawaSettling, AStallAboveTheSquareRootOfTheToleranceIsNotConvergence) {
   UzawaSettling settling(1e-8);
   EXPECT_FALSE(settling.settled(1e-2));
   EXPECT_FALSE(settling.settled(1e-3));
-  EXPECT_FALSE(settling.settled(2e-3));  // stalled, but far from any round-off floor
+  EXPECT_FALSE(settling.settled(2e-3)); // stalled, but far from any round-off floor
   EXPECT_FALSE(settling.converged());
 }
 
-}  // namespace
-}  // namespace formflow::solvers
+} // namespace
+} // namespace formflow::solvers

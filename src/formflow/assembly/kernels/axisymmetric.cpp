@@ -13,14 +13,16 @@ void add_hoop_viscous_term(const fem::CellValues<2>& values, std::span<const Rea
   const Real share = strain == physics::ViscousStrain::Deviatoric ? 1.0 / 3.0 : 0.0;
   for (int q = 0; q < values.n_points(); ++q) {
     const auto& grad = values.gradients(q);
-    const CellVector hoop = values.shape(q) / values.point(q)[1];  // φ_a/r
+    const CellVector hoop = values.shape(q) / values.point(q)[1]; // φ_a/r
     const Real factor = 2.0 / 3.0 * viscosity[q] * values.JxW(q);
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b) {
         local_matrix(a * 2 + 1, b * 2 + 1) += factor * (1.0 - share) * hoop[a] * hoop[b];
         if (share == 0.0) continue;
-        for (int j = 0; j < 2; ++j) local_matrix(a * 2 + 1, b * 2 + j) -= factor * share * hoop[a] * grad(j, b);
-        for (int i = 0; i < 2; ++i) local_matrix(a * 2 + i, b * 2 + 1) -= factor * share * grad(i, a) * hoop[b];
+        for (int j = 0; j < 2; ++j)
+          local_matrix(a * 2 + 1, b * 2 + j) -= factor * share * hoop[a] * grad(j, b);
+        for (int i = 0; i < 2; ++i)
+          local_matrix(a * 2 + i, b * 2 + 1) -= factor * share * grad(i, a) * hoop[b];
       }
   }
 }
@@ -40,4 +42,4 @@ void add_volumetric_penalty_axisymmetric(const fem::CellValues<2>& values, Real 
   }
 }
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -11,12 +11,14 @@ void add_contact_penalty(const fem::FacetValues<dim>& values, Real d_n, MatrixX&
   for (int q = 0; q < values.n_points(); ++q) {
     // u_N of the basis function φ_a e_i is φ_a n_i.
     for (int a = 0; a < n; ++a)
-      for (int i = 0; i < dim; ++i) normal_row[a * dim + i] = values.shape(q)[a] * values.normal(q)[i];
-    local_matrix.noalias() += (values.JxW(q) / d_n) * normal_row * normal_row.transpose();  // (1/d_N) dΓ
+      for (int i = 0; i < dim; ++i)
+        normal_row[a * dim + i] = values.shape(q)[a] * values.normal(q)[i];
+    local_matrix.noalias() +=
+        (values.JxW(q) / d_n) * normal_row * normal_row.transpose(); // (1/d_N) dΓ
   }
 }
 
 template void add_contact_penalty<2>(const fem::FacetValues<2>&, Real, MatrixX&);
 template void add_contact_penalty<3>(const fem::FacetValues<3>&, Real, MatrixX&);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -15,7 +15,7 @@ void add_friction_tangent(const fem::FacetValues<dim>& values, std::span<const P
     // u_T and λ are tangential, so u_T·v_T = u_T·v: no projector needed.
     const Tensor2<dim> outer =
         0.5 * (dual_slip[q] * slip[q].transpose() + slip[q] * dual_slip[q].transpose());
-    const Real factor = -coefficient[q] * values.JxW(q);  // −τ_f/s³ dΓ
+    const Real factor = -coefficient[q] * values.JxW(q); // −τ_f/s³ dΓ
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b)
         local_matrix.template block<dim, dim>(a * dim, b * dim) += factor * phi[a] * phi[b] * outer;
@@ -27,4 +27,4 @@ template void add_friction_tangent<2>(const fem::FacetValues<2>&, std::span<cons
 template void add_friction_tangent<3>(const fem::FacetValues<3>&, std::span<const Point<3>>,
                                       std::span<const Point<3>>, std::span<const Real>, MatrixX&);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -38,4 +38,4 @@ void add_hoop_viscous_term(const fem::CellValues<2>& values, std::span<const Rea
 void add_volumetric_penalty_axisymmetric(const fem::CellValues<2>& values, Real d,
                                          MatrixX& local_matrix);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -14,7 +14,7 @@ Eigen::Map<Eigen::Matrix<Real, dim, Eigen::Dynamic>> by_node(CellVector& local_f
   return {local_force.data(), dim, local_force.size() / dim};
 }
 
-}  // namespace
+} // namespace
 
 // Σ_b K_ab u_b of add_viscous_term is ⅔ ν (Σ_j ε̇_ij ∂_j φ_a − share ε̇_V ∂_i φ_a):
 // with share = ⅓ for the deviatoric form this is ė ∇φ_a (ė_zz meets ε̇_zz(φ) = 0).
@@ -36,7 +36,7 @@ void add_viscous_force_sized(const fem::CellValues<dim>& values, std::span<const
   by_node<dim>(local_force) += force;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 void add_viscous_force(const fem::CellValues<dim>& values, std::span<const Real> viscosity,
@@ -44,8 +44,8 @@ void add_viscous_force(const fem::CellValues<dim>& values, std::span<const Real>
                        CellVector& local_force) {
   const Real volumetric_share = strain == physics::ViscousStrain::Deviatoric ? 1.0 / 3.0 : 0.0;
   with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) {
-    add_viscous_force_sized<dim, decltype(n_nodes)::value>(values, viscosity, rates, volumetric_share,
-                                                           local_force);
+    add_viscous_force_sized<dim, decltype(n_nodes)::value>(values, viscosity, rates,
+                                                           volumetric_share, local_force);
   });
 }
 
@@ -61,13 +61,13 @@ void add_volumetric_force_sized(const fem::CellValues<dim>& values, Real d,
   NodeValues force = NodeValues::Zero(dim, n);
   for (int q = 0; q < values.n_points(); ++q) {
     const Eigen::Map<const NodeValues> grad(values.gradients(q).data(), dim, n);
-    const Real divergence = u.cwiseProduct(grad).sum();  // Σ_a u_a·∇φ_a
+    const Real divergence = u.cwiseProduct(grad).sum(); // Σ_a u_a·∇φ_a
     force.noalias() += (values.JxW(q) / d * divergence) * grad;
   }
   by_node<dim>(local_force) += force;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 void add_volumetric_force(const fem::CellValues<dim>& values, Real d,
@@ -113,7 +113,8 @@ void add_volumetric_force_axisymmetric(const fem::CellValues<2>& values, Real d,
   for (int q = 0; q < values.n_points(); ++q) {
     const auto& grad = values.gradients(q);
     const Real radius = values.point(q)[1];
-    const Real volumetric = velocities.cwiseProduct(grad).sum() + velocities.row(1).dot(values.shape(q)) / radius;
+    const Real volumetric =
+        velocities.cwiseProduct(grad).sum() + velocities.row(1).dot(values.shape(q)) / radius;
     const Real factor = values.JxW(q) / d * volumetric;
     force.noalias() += factor * grad;
     force.row(1) += (factor / radius) * values.shape(q).transpose();
@@ -128,9 +129,11 @@ template void add_volumetric_force<2>(const fem::CellValues<2>&, Real,
                                       const fem::CellValues<2>::Gradients&, CellVector&);
 template void add_volumetric_force<3>(const fem::CellValues<3>&, Real,
                                       const fem::CellValues<3>::Gradients&, CellVector&);
-template void add_contact_force<2>(const fem::FacetValues<2>&, Real, const fem::CellValues<2>::Gradients&,
-                                   std::span<const Real>, CellVector&);
-template void add_contact_force<3>(const fem::FacetValues<3>&, Real, const fem::CellValues<3>::Gradients&,
-                                   std::span<const Real>, CellVector&);
+template void add_contact_force<2>(const fem::FacetValues<2>&, Real,
+                                   const fem::CellValues<2>::Gradients&, std::span<const Real>,
+                                   CellVector&);
+template void add_contact_force<3>(const fem::FacetValues<3>&, Real,
+                                   const fem::CellValues<3>::Gradients&, std::span<const Real>,
+                                   CellVector&);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -33,7 +33,7 @@ void add_contact_force(const fem::FacetValues<dim>& values, Real d_n,
                        const typename fem::CellValues<dim>::Gradients& velocities,
                        std::span<const Real> friction_weight, CellVector& local_force);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly
 
 namespace formflow::assembly {
 
@@ -50,4 +50,4 @@ void add_volumetric_force_axisymmetric(const fem::CellValues<2>& values, Real d,
                                        const fem::CellValues<2>::Gradients& velocities,
                                        CellVector& local_force);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -41,4 +41,4 @@ void add_friction_tangent(const fem::FacetValues<dim>& values, std::span<const P
                           std::span<const Point<dim>> dual_slip, std::span<const Real> coefficient,
                           MatrixX& local_matrix);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

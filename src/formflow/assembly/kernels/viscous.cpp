@@ -22,7 +22,8 @@ void add_viscous_term_sized(const fem::CellValues<dim>& values, std::span<const 
   for (int q = 0; q < values.n_points(); ++q) {
     const Eigen::Map<const LocalVector<dim, n_nodes>> flat(values.gradients(q).data(), size);
     // P is symmetric: update its lower triangle only, then mirror it once.
-    products.template selfadjointView<Eigen::Lower>().rankUpdate(flat, 2.0 / 3.0 * viscosity[q] * values.JxW(q));  // ⅔ ν dx
+    products.template selfadjointView<Eigen::Lower>().rankUpdate(flat, 2.0 / 3.0 * viscosity[q] *
+                                                                           values.JxW(q)); // ⅔ ν dx
   }
   products.template triangularView<Eigen::StrictlyUpper>() = products.transpose();
   for (int b = 0; b < n; ++b)
@@ -31,21 +32,23 @@ void add_viscous_term_sized(const fem::CellValues<dim>& values, std::span<const 
       for (int k = 0; k < dim; ++k) dot += products(a * dim + k, b * dim + k);
       for (int j = 0; j < dim; ++j)
         for (int i = 0; i < dim; ++i) {
-          Real term = 0.5 * products(a * dim + j, b * dim + i) - volumetric_share * products(a * dim + i, b * dim + j);
+          Real term = 0.5 * products(a * dim + j, b * dim + i) -
+                      volumetric_share * products(a * dim + i, b * dim + j);
           if (i == j) term += 0.5 * dot;
           local_matrix(a * dim + i, b * dim + j) += term;
         }
     }
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 void add_viscous_term(const fem::CellValues<dim>& values, std::span<const Real> viscosity,
                       physics::ViscousStrain strain, MatrixX& local_matrix) {
   const Real volumetric_share = strain == physics::ViscousStrain::Deviatoric ? 1.0 / 3.0 : 0.0;
   with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) {
-    add_viscous_term_sized<dim, decltype(n_nodes)::value>(values, viscosity, volumetric_share, local_matrix);
+    add_viscous_term_sized<dim, decltype(n_nodes)::value>(values, viscosity, volumetric_share,
+                                                          local_matrix);
   });
 }
 
@@ -54,4 +57,4 @@ template void add_viscous_term<2>(const fem::CellValues<2>&, std::span<const Rea
 template void add_viscous_term<3>(const fem::CellValues<3>&, std::span<const Real>,
                                   physics::ViscousStrain, MatrixX&);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -11,9 +11,10 @@ namespace {
 // volumetric part of ε̇(v)), so the row over local dofs is ė·∇φ_a per node: the
 // dim × n matrix ė ∇φ read column by column.
 template <int dim, int n_nodes>
-void add_viscous_tangent_sized(const fem::CellValues<dim>& values, std::span<const Tensor3> deviators,
-                               std::span<const Tensor3> duals, std::span<const Real> a,
-                               std::span<const Real> b, MatrixX& local_matrix) {
+void add_viscous_tangent_sized(const fem::CellValues<dim>& values,
+                               std::span<const Tensor3> deviators, std::span<const Tensor3> duals,
+                               std::span<const Real> a, std::span<const Real> b,
+                               MatrixX& local_matrix) {
   using NodeGradients = Eigen::Matrix<Real, dim, n_nodes>;
   const int n = values.n_nodes(), size = n * dim;
   LocalMatrix<dim, n_nodes> tangent = LocalMatrix<dim, n_nodes>::Zero(size, size);
@@ -28,20 +29,21 @@ void add_viscous_tangent_sized(const fem::CellValues<dim>& values, std::span<con
     // a g⊗g + b sym(h⊗g) = ½ (v⊗g + g⊗v) with v = a g + b h: one symmetric rank-2
     // update of the lower triangle, mirrored once at the end.
     const LocalVector<dim, n_nodes> v = a[q] * g_row + b[q] * h_row;
-    tangent.template selfadjointView<Eigen::Lower>().rankUpdate(v, g_row, 0.5 * jxw);  // dx
+    tangent.template selfadjointView<Eigen::Lower>().rankUpdate(v, g_row, 0.5 * jxw); // dx
   }
   tangent.template triangularView<Eigen::StrictlyUpper>() = tangent.transpose();
   local_matrix += tangent;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 void add_viscous_tangent(const fem::CellValues<dim>& values, std::span<const Tensor3> deviators,
                          std::span<const Tensor3> duals, std::span<const Real> a,
                          std::span<const Real> b, MatrixX& local_matrix) {
   with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) {
-    add_viscous_tangent_sized<dim, decltype(n_nodes)::value>(values, deviators, duals, a, b, local_matrix);
+    add_viscous_tangent_sized<dim, decltype(n_nodes)::value>(values, deviators, duals, a, b,
+                                                             local_matrix);
   });
 }
 
@@ -77,4 +79,4 @@ template void add_viscous_tangent<3>(const fem::CellValues<3>&, std::span<const 
                                      std::span<const Tensor3>, std::span<const Real>,
                                      std::span<const Real>, MatrixX&);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -8,19 +8,23 @@ namespace formflow::assembly {
 namespace {
 
 template <int dim, int n_nodes>
-void add_volumetric_penalty_sized(const fem::CellValues<dim>& values, Real d, MatrixX& local_matrix) {
+void add_volumetric_penalty_sized(const fem::CellValues<dim>& values, Real d,
+                                  MatrixX& local_matrix) {
   const int n_local = values.n_nodes() * dim;
   LocalMatrix<dim, n_nodes> penalty = LocalMatrix<dim, n_nodes>::Zero(n_local, n_local);
   for (int q = 0; q < values.n_points(); ++q) {
     // ε̇_V(φ_a e_i) = ∂_i φ_a: the flattened gradient is the divergence row.
-    const Eigen::Map<const LocalVector<dim, n_nodes>> divergence(values.gradients(q).data(), n_local);
-    penalty.template selfadjointView<Eigen::Lower>().rankUpdate(divergence, values.JxW(q) / d);  // (1/d) dx
+    const Eigen::Map<const LocalVector<dim, n_nodes>> divergence(values.gradients(q).data(),
+                                                                 n_local);
+    penalty.template selfadjointView<Eigen::Lower>().rankUpdate(divergence,
+                                                                values.JxW(q) / d); // (1/d) dx
   }
-  penalty.template triangularView<Eigen::StrictlyUpper>() = penalty.transpose();  // symmetric: mirror once
+  penalty.template triangularView<Eigen::StrictlyUpper>() =
+      penalty.transpose(); // symmetric: mirror once
   local_matrix += penalty;
 }
 
-}  // namespace
+} // namespace
 
 template <int dim>
 void add_volumetric_penalty(const fem::CellValues<dim>& values, Real d, MatrixX& local_matrix) {
@@ -32,4 +36,4 @@ void add_volumetric_penalty(const fem::CellValues<dim>& values, Real d, MatrixX&
 template void add_volumetric_penalty<2>(const fem::CellValues<2>&, Real, MatrixX&);
 template void add_volumetric_penalty<3>(const fem::CellValues<3>&, Real, MatrixX&);
 
-}  // namespace formflow::assembly
+} // namespace formflow::assembly

@@ -18,17 +18,14 @@ const Stroke grid_stroke{1.0, {0.85, 0.85, 0.85}};
 
 void complete(Axis& axis) {
   if (axis.log) {
-    if (!(axis.lo > 0))
-      axis.lo = axis.hi > 0 ? axis.hi * 1e-3 : 1e-3;
-    if (!(axis.hi > axis.lo))
-      axis.hi = axis.lo * 10.0;
+    if (!(axis.lo > 0)) axis.lo = axis.hi > 0 ? axis.hi * 1e-3 : 1e-3;
+    if (!(axis.hi > axis.lo)) axis.hi = axis.lo * 10.0;
   } else if (!(axis.hi > axis.lo)) {
     const double half = std::max(std::abs(axis.lo) * 0.1, 1.0);
     axis.lo -= half;
     axis.hi += half;
   }
-  if (!axis.ticks.empty())
-    return;
+  if (!axis.ticks.empty()) return;
   if (!axis.log) {
     axis.ticks = linear_ticks(axis.lo, axis.hi, 6);
     return;
@@ -57,8 +54,7 @@ double fraction(const Axis& axis, double value) {
 }
 
 std::string label_of(const Axis& axis, double value) {
-  if (axis.log)
-    return log_tick_label(value, log_labels_as_powers(axis.lo, axis.hi));
+  if (axis.log) return log_tick_label(value, log_labels_as_powers(axis.lo, axis.hi));
   const double step = axis.ticks.size() > 1 ? axis.ticks[1] - axis.ticks[0] : std::abs(value);
   return tick_label(value, step > 0 ? step : 1.0);
 }
@@ -70,8 +66,7 @@ std::vector<double> minor_log_ticks(const Axis& axis) {
        k <= static_cast<int>(std::ceil(std::log10(axis.hi))); ++k)
     for (int m = 2; m <= 9; ++m) {
       const double value = m * std::pow(10.0, k);
-      if (value > axis.lo && value < axis.hi)
-        ticks.push_back(value);
+      if (value > axis.lo && value < axis.hi) ticks.push_back(value);
     }
   return ticks;
 }
@@ -168,8 +163,7 @@ Axes equal_aspect_axes(const Rect& area, double x0, double x1, double y0, double
 
 void draw_legend(const Canvas& canvas, Pixel corner, std::span<const LegendEntry> entries,
                  HAlign side) {
-  if (entries.empty())
-    return;
+  if (entries.empty()) return;
   const double row = 20.0, sample = 30.0, pad = 8.0;
   double widest = 0.0;
   for (const auto& entry : entries)

@@ -29,18 +29,14 @@ constexpr char32_t combining_dot_above = 0x0307;
 
 /// Length of the UTF-8 sequence starting with `lead` (1 for stray bytes).
 std::size_t utf8_length(unsigned char lead) {
-  if (lead >= 0xF0)
-    return 4;
-  if (lead >= 0xE0)
-    return 3;
-  if (lead >= 0xC0)
-    return 2;
+  if (lead >= 0xF0) return 4;
+  if (lead >= 0xE0) return 3;
+  if (lead >= 0xC0) return 2;
   return 1;
 }
 
 char32_t decode_two_or_three(std::string_view bytes) {
-  if (bytes.size() == 2)
-    return ((bytes[0] & 0x1F) << 6) | (bytes[1] & 0x3F);
+  if (bytes.size() == 2) return ((bytes[0] & 0x1F) << 6) | (bytes[1] & 0x3F);
   if (bytes.size() == 3)
     return ((bytes[0] & 0x0F) << 12) | ((bytes[1] & 0x3F) << 6) | (bytes[2] & 0x3F);
   return 0;
@@ -71,8 +67,7 @@ std::vector<Run> parse_markup(std::string_view markup) {
       // Split the mark's base character off the end of its run.
       if (!base.macron && !base.dot && base.text.size() > 1) {
         std::size_t start = base.text.size() - 1;
-        while (start > 0 && (static_cast<unsigned char>(base.text[start]) & 0xC0) == 0x80)
-          --start;
+        while (start > 0 && (static_cast<unsigned char>(base.text[start]) & 0xC0) == 0x80) --start;
         runs.push_back({base.text.substr(start), base.level});
         runs[runs.size() - 2].text.resize(start);
       }
@@ -187,8 +182,7 @@ void Canvas::text(Pixel at, std::string_view markup, const Font& font, HAlign h,
     select_font(cairo_, font, size);
     cairo_move_to(cairo_, x, baseline + shift);
     cairo_show_text(cairo_, run.text.c_str());
-    if (run.macron || run.dot)
-      draw_marks(cairo_, run, x, baseline + shift, size);
+    if (run.macron || run.dot) draw_marks(cairo_, run, x, baseline + shift, size);
     cairo_text_extents_t extents;
     cairo_text_extents(cairo_, run.text.c_str(), &extents);
     x += extents.x_advance;
@@ -211,22 +205,18 @@ void Canvas::line(Pixel from, Pixel to, const Stroke& stroke) const {
 }
 
 void Canvas::polyline(std::span<const Pixel> points, const Stroke& stroke, bool closed) const {
-  if (points.size() < 2)
-    return;
+  if (points.size() < 2) return;
   cairo_new_path(cairo_);
   cairo_move_to(cairo_, points[0][0], points[0][1]);
-  for (std::size_t i = 1; i < points.size(); ++i)
-    cairo_line_to(cairo_, points[i][0], points[i][1]);
-  if (closed)
-    cairo_close_path(cairo_);
+  for (std::size_t i = 1; i < points.size(); ++i) cairo_line_to(cairo_, points[i][0], points[i][1]);
+  if (closed) cairo_close_path(cairo_);
   apply(stroke);
   cairo_stroke(cairo_);
 }
 
 void Canvas::fill(std::span<const Pixel> polygon, const Rgb& colour, double alpha,
                   bool seal) const {
-  if (polygon.size() < 3)
-    return;
+  if (polygon.size() < 3) return;
   cairo_new_path(cairo_);
   cairo_move_to(cairo_, polygon[0][0], polygon[0][1]);
   for (std::size_t i = 1; i < polygon.size(); ++i)
@@ -246,8 +236,7 @@ void Canvas::fill_polygons(std::span<const std::vector<Pixel>> polygons, const R
                            bool seal) const {
   cairo_new_path(cairo_);
   for (const auto& polygon : polygons) {
-    if (polygon.size() < 3)
-      continue;
+    if (polygon.size() < 3) continue;
     cairo_move_to(cairo_, polygon[0][0], polygon[0][1]);
     for (std::size_t i = 1; i < polygon.size(); ++i)
       cairo_line_to(cairo_, polygon[i][0], polygon[i][1]);

@@ -17,20 +17,16 @@ std::vector<double> colour_bar_ticks(const ColourScale& scale) {
   const std::vector<double>& bounds = scale.boundaries();
   if (scale.is_log()) {
     std::vector<double> decades = decade_ticks(bounds.front(), bounds.back());
-    if (decades.size() >= 2)
-      return decades;
+    if (decades.size() >= 2) return decades;
     return bounds;
   }
-  if (bounds.size() <= 12)
-    return bounds;
+  if (bounds.size() <= 12) return bounds;
   // Keep the parity that contains zero, so the white centre of a diverging bar is labelled.
   std::size_t parity = 0;
   for (std::size_t i = 0; i < bounds.size(); ++i)
-    if (bounds[i] == 0.0)
-      parity = i % 2;
+    if (bounds[i] == 0.0) parity = i % 2;
   std::vector<double> ticks;
-  for (std::size_t i = parity; i < bounds.size(); i += 2)
-    ticks.push_back(bounds[i]);
+  for (std::size_t i = parity; i < bounds.size(); i += 2) ticks.push_back(bounds[i]);
   return ticks;
 }
 
@@ -68,8 +64,7 @@ void draw_colour_bar(const Canvas& canvas, const Rect& bar, const ColourScale& s
   canvas.stroke_rect({std::floor(bar.x) + 0.5, std::floor(bar.y) + 0.5, std::round(bar.width),
                       std::round(bar.height)},
                      {1.0, {0.15, 0.15, 0.15}});
-  if (scale.extends_below)
-    draw_extension(canvas, bar, false, scale.band_colour(0));
+  if (scale.extends_below) draw_extension(canvas, bar, false, scale.band_colour(0));
   if (scale.extends_above)
     draw_extension(canvas, bar, true, scale.band_colour(scale.n_bands() - 1));
 

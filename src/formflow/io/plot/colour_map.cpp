@@ -82,10 +82,8 @@ ColourScale ColourScale::linear(double lo, double hi, int target_bands, Palette 
   const double step = nice_step(hi - lo, target_bands);
   for (double level = std::floor(lo / step) * step; level < hi + 0.5 * step; level += step)
     scale.boundaries_.push_back(std::abs(level) < 1e-9 * step ? 0.0 : level);
-  if (scale.boundaries_.back() < hi)
-    scale.boundaries_.push_back(scale.boundaries_.back() + step);
-  if (scale.boundaries_.size() < 2)
-    scale.boundaries_.push_back(scale.boundaries_.back() + step);
+  if (scale.boundaries_.back() < hi) scale.boundaries_.push_back(scale.boundaries_.back() + step);
+  if (scale.boundaries_.size() < 2) scale.boundaries_.push_back(scale.boundaries_.back() + step);
   return scale;
 }
 

@@ -24,8 +24,7 @@ std::optional<double> junction_arc_length(const PictureData& data) {
   const auto& contact = data.results.contact;
   const auto die = std::find_if(contact.begin(), contact.end(),
                                 [](const post::ContactSample& s) { return s.part == 1; });
-  if (die == contact.begin() || die == contact.end())
-    return std::nullopt;
+  if (die == contact.begin() || die == contact.end()) return std::nullopt;
   const post::ContactSample& last_container = *(die - 1);
   const mesh::Mesh<2>& mesh = data.mesh;
   std::vector<Index> container_nodes, die_nodes;
@@ -47,8 +46,7 @@ std::optional<double> junction_arc_length(const PictureData& data) {
 void shade_sticking(const Canvas& canvas, const Axes& axes,
                     const std::vector<post::ContactSample>& contact) {
   for (std::size_t i = 0; i < contact.size(); ++i) {
-    if (!contact[i].sticking)
-      continue;
+    if (!contact[i].sticking) continue;
     const double left =
         i == 0 ? contact[i].arc_length : 0.5 * (contact[i - 1].arc_length + contact[i].arc_length);
     const double right = i + 1 == contact.size()
@@ -83,8 +81,7 @@ double robust_high(const std::vector<post::ContactSample>& contact) {
   const double p90 = values[static_cast<std::size_t>(0.9 * static_cast<double>(values.size() - 1))];
   double high = 0.0;
   for (const double value : values)
-    if (p90 <= 0 || value <= 2.0 * p90)
-      high = std::max(high, value);
+    if (p90 <= 0 || value <= 2.0 * p90) high = std::max(high, value);
   return high;
 }
 
@@ -96,8 +93,7 @@ void label_off_scale(const Canvas& canvas, const Axes& axes,
   for (const auto& sample : contact) {
     const double value = std::max(sample.contact_pressure, sample.friction_stress);
     const double x = axes.px(sample.arc_length);
-    if (value <= axes.y_axis().hi || x - last_x < 40.0)
-      continue;
+    if (value <= axes.y_axis().hi || x - last_x < 40.0) continue;
     canvas.text({x, axes.area().y - 3}, fmt::format("▲ {:.3g}", value),
                 Font{11.5, true, pressure_colour}, HAlign::Centre, VAlign::Bottom);
     last_x = x;

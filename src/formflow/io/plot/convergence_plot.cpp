@@ -54,10 +54,8 @@ Axis pressure_axis(const std::vector<solvers::IterationRecord>& history) {
 
 void draw_markers(const Canvas& canvas, const std::vector<Pixel>& points, const Rgb& colour) {
   // Markers only while they stay apart; on long histories they would merge into a band.
-  if (points.size() > 80)
-    return;
-  for (const Pixel& point : points)
-    canvas.circle(point, 2.6, colour);
+  if (points.size() > 80) return;
+  for (const Pixel& point : points) canvas.circle(point, 2.6, colour);
 }
 
 } // namespace

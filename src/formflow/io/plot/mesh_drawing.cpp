@@ -28,8 +28,7 @@ std::vector<Vertex> clip(const std::vector<Vertex>& polygon, double level, bool 
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const Vertex& a = polygon[i];
     const Vertex& b = polygon[(i + 1) % polygon.size()];
-    if (inside(a))
-      out.push_back(a);
+    if (inside(a)) out.push_back(a);
     if (inside(a) != inside(b)) {
       const double w = (level - a.value) / (b.value - a.value);
       out.push_back(
@@ -64,15 +63,12 @@ void split_into_bands(const std::vector<Vertex>& polygon, const Bands& bands, Ba
   for (std::size_t band = first; band <= last; ++band) {
     std::vector<Vertex> piece = polygon;
     // The end bands are open so values beyond the scale take the end colours.
-    if (band > 0)
-      piece = clip(piece, bands.levels[band], true);
+    if (band > 0) piece = clip(piece, bands.levels[band], true);
     if (band + 1 < out.size() && piece.size() >= 3)
       piece = clip(piece, bands.levels[band + 1], false);
-    if (piece.size() < 3)
-      continue;
+    if (piece.size() < 3) continue;
     std::vector<Pixel> pixels;
-    for (const Vertex& v : piece)
-      pixels.push_back(v.at);
+    for (const Vertex& v : piece) pixels.push_back(v.at);
     out[band].push_back(std::move(pixels));
   }
 }
@@ -81,14 +77,10 @@ void split_into_bands(const std::vector<Vertex>& polygon, const Bands& bands, Ba
 std::vector<Pixel> cell_ring(const std::vector<Pixel>& points, int s) {
   std::vector<Pixel> ring;
   const int side = s + 1;
-  for (int i = 0; i < s; ++i)
-    ring.push_back(points[i]);
-  for (int j = 0; j < s; ++j)
-    ring.push_back(points[j * side + s]);
-  for (int i = s; i > 0; --i)
-    ring.push_back(points[s * side + i]);
-  for (int j = s; j > 0; --j)
-    ring.push_back(points[j * side]);
+  for (int i = 0; i < s; ++i) ring.push_back(points[i]);
+  for (int j = 0; j < s; ++j) ring.push_back(points[j * side + s]);
+  for (int i = s; i > 0; --i) ring.push_back(points[s * side + i]);
+  for (int j = s; j > 0; --j) ring.push_back(points[j * side]);
   return ring;
 }
 
@@ -116,8 +108,7 @@ double cell_pixels(const Axes& axes, const mesh::Mesh<2>& mesh) {
 }
 
 Box bounding_box(const mesh::Mesh<2>& mesh) {
-  if (mesh.n_nodes() == 0)
-    return {};
+  if (mesh.n_nodes() == 0) return {};
   return {mesh.nodes.row(0).minCoeff(), mesh.nodes.row(0).maxCoeff(), mesh.nodes.row(1).minCoeff(),
           mesh.nodes.row(1).maxCoeff()};
 }
@@ -159,8 +150,7 @@ void CellSampler::sample(const mesh::Mesh<2>& mesh, Index cell, const VectorX& n
 void fill_field_bands(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh,
                       const VectorX& nodal, const ColourScale& scale) {
   Bands bands;
-  for (const double boundary : scale.boundaries())
-    bands.levels.push_back(scale.display(boundary));
+  for (const double boundary : scale.boundaries()) bands.levels.push_back(scale.display(boundary));
   const CellSampler sampler(mesh.order, subdivisions_for(axes, mesh));
   const int s = sampler.subdivisions(), side = s + 1;
   BandPolygons polygons(scale.n_bands());
@@ -168,8 +158,7 @@ void fill_field_bands(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2
   std::vector<double> values;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     sampler.sample(mesh, cell, nodal, axes, points, values);
-    for (double& value : values)
-      value = scale.display(value);
+    for (double& value : values) value = scale.display(value);
     const auto [low, high] = std::minmax_element(values.begin(), values.end());
     // Most cells lie inside one band: one polygon instead of s² keeps the SVG small.
     if (bands.band_of(*low) == bands.band_of(*high)) {
@@ -192,8 +181,7 @@ void fill_field_bands(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2
 
 void draw_cell_edges(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh,
                      const Stroke& stroke) {
-  if (cell_pixels(axes, mesh) < 6.0)
-    return;
+  if (cell_pixels(axes, mesh) < 6.0) return;
   const CellSampler sampler(mesh.order, mesh.order == 2 ? 4 : 1);
   const VectorX zeros = VectorX::Zero(mesh.n_nodes());
   std::vector<Pixel> points;
@@ -212,8 +200,7 @@ void draw_boundary(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& 
   // Die last, so its thick line covers the thin outline where they meet.
   for (const bool die_pass : {false, true})
     for (const mesh::BoundaryFacet& facet : mesh.facets) {
-      if (mesh::is_contact(facet.label) != die_pass)
-        continue;
+      if (mesh::is_contact(facet.label) != die_pass) continue;
       std::vector<Pixel> points;
       for (const int local : mesh::face_local_nodes<2>(n_side, facet.local_face)) {
         const Index node = mesh.cells(local, facet.cell);
@@ -231,8 +218,7 @@ void label_contact_parts(const Canvas& canvas, const Axes& axes, const mesh::Mes
     Point<2> middle = Point<2>::Zero(), normal = Point<2>::Zero();
     Real length = 0.0;
     for (const mesh::BoundaryFacet& facet : mesh.facets) {
-      if (facet.label != label)
-        continue;
+      if (facet.label != label) continue;
       const std::vector<int> nodes = mesh::face_local_nodes<2>(n_side, facet.local_face);
       const Point<2> first = mesh.nodes.col(mesh.cells(nodes.front(), facet.cell));
       const Point<2> last = mesh.nodes.col(mesh.cells(nodes.back(), facet.cell));
@@ -241,14 +227,12 @@ void label_contact_parts(const Canvas& canvas, const Axes& axes, const mesh::Mes
         centre += mesh.nodes.col(mesh.cells(local, facet.cell)) / mesh.nodes_per_cell();
       const Point<2> tangent = last - first;
       Point<2> outward(tangent.y(), -tangent.x());
-      if (outward.dot(0.5 * (first + last) - centre) < 0)
-        outward = -outward;
+      if (outward.dot(0.5 * (first + last) - centre) < 0) outward = -outward;
       middle += 0.5 * (first + last) * tangent.norm();
       normal += outward; // |outward| = facet length: a length-weighted mean direction
       length += tangent.norm();
     }
-    if (!(length > 0))
-      continue;
+    if (!(length > 0)) continue;
     middle /= length;
     normal.normalize();
     // Screen y points down.

@@ -34,7 +34,7 @@ std::string manufactured_description(const Case& case_, const std::string& outco
                      case_.mesh_size, distortion, outcome);
 }
 
-}  // namespace
+} // namespace
 
 std::string run_description(const Case& case_, const post::Results& results) {
   const bool drawing = case_.process.type == physics::ProcessType::Drawing;
@@ -52,9 +52,9 @@ std::string run_description(const Case& case_, const post::Results& results) {
                         std::filesystem::path(case_.mesh_file).filename().string())
           : fmt::format("h = {:g}", case_.mesh_size);
   return fmt::format("{} · {}, {} · μ_{{f}} = {:g} · {} · {} {:.4g}",
-                     drawing ? "drawing" : "extrusion", fem::element_name(case_.element),
-                     cells, case_.friction.mu, outcome,
-                     drawing ? "drawing stress" : "ram pressure", results.pressure.ram_reaction);
+                     drawing ? "drawing" : "extrusion", fem::element_name(case_.element), cells,
+                     case_.friction.mu, outcome, drawing ? "drawing stress" : "ram pressure",
+                     results.pressure.ram_reaction);
 }
 
 FieldLayout field_layout(const mesh::Mesh<2>& mesh) {

@@ -39,8 +39,8 @@ void draw_velocity(const Canvas& canvas, const PictureData& data);
 void draw_pressure(const Canvas& canvas, const PictureData& data);
 /// A cell-wise pressure (one value per cell, compression positive) with no
 /// smoothing between cells, so that checkerboard modes stay visible (docs/mixed.md).
-void draw_cell_pressure(const Canvas& canvas, const PictureData& data,
-                        const VectorX& cell_pressure, const std::string& title);
+void draw_cell_pressure(const Canvas& canvas, const PictureData& data, const VectorX& cell_pressure,
+                        const std::string& title);
 /// Contact pressure and friction stress against arc length along Γ3.
 void draw_contact(const Canvas& canvas, const PictureData& data);
 /// Relative change per iteration (log) with the tolerance, and the pressure history.

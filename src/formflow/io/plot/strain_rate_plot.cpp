@@ -22,10 +22,8 @@ ColourScale strain_rate_scale(const VectorX& rate) {
   const double high = rate.maxCoeff();
   double low_positive = high;
   for (Index i = 0; i < rate.size(); ++i)
-    if (rate[i] > 0)
-      low_positive = std::min(low_positive, rate[i]);
-  if (!(high > 0))
-    return ColourScale::logarithmic(1e-4, 1.0); // a rigid body: all "low"
+    if (rate[i] > 0) low_positive = std::min(low_positive, rate[i]);
+  if (!(high > 0)) return ColourScale::logarithmic(1e-4, 1.0); // a rigid body: all "low"
   const double low = std::max(low_positive, high * std::pow(10.0, -decades_shown));
   ColourScale scale = ColourScale::logarithmic(low < high ? low : high / 10.0, high);
   scale.extends_below = rate.minCoeff() < scale.boundaries().front();

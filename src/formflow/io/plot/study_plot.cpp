@@ -47,20 +47,31 @@ std::vector<Series> norm_series(const post::StudyTable& table, bool* log_y) {
   std::vector<Series> all;
   *log_y = true;
   if (table.has_errors()) {
-    add_series(all, table, "‖u − u_{h}‖_{V}", [](const auto& r) -> std::optional<double> {
-      return r.error ? std::optional<double>(r.error->v_norm) : std::nullopt;
-    }, SeriesKind::V);
-    add_series(all, table, "‖u − u_{h}‖_{L2}", [](const auto& r) -> std::optional<double> {
-      return r.error ? std::optional<double>(r.error->l2) : std::nullopt;
-    }, SeriesKind::L2);
+    add_series(
+        all, table, "‖u − u_{h}‖_{V}",
+        [](const auto& r) -> std::optional<double> {
+          return r.error ? std::optional<double>(r.error->v_norm) : std::nullopt;
+        },
+        SeriesKind::V);
+    add_series(
+        all, table, "‖u − u_{h}‖_{L2}",
+        [](const auto& r) -> std::optional<double> {
+          return r.error ? std::optional<double>(r.error->l2) : std::nullopt;
+        },
+        SeriesKind::L2);
   } else if (table.has_differences()) {
-    add_series(all, table, "‖u − u_{ref}‖_{V} (u_{ref}: last rung)",
-               [](const auto& r) -> std::optional<double> {
-                 return r.difference ? std::optional<double>(r.difference->v_norm) : std::nullopt;
-               }, SeriesKind::V);
-    add_series(all, table, "‖u − u_{ref}‖_{L2}", [](const auto& r) -> std::optional<double> {
-      return r.difference ? std::optional<double>(r.difference->l2) : std::nullopt;
-    }, SeriesKind::L2);
+    add_series(
+        all, table, "‖u − u_{ref}‖_{V} (u_{ref}: last rung)",
+        [](const auto& r) -> std::optional<double> {
+          return r.difference ? std::optional<double>(r.difference->v_norm) : std::nullopt;
+        },
+        SeriesKind::V);
+    add_series(
+        all, table, "‖u − u_{ref}‖_{L2}",
+        [](const auto& r) -> std::optional<double> {
+          return r.difference ? std::optional<double>(r.difference->l2) : std::nullopt;
+        },
+        SeriesKind::L2);
   }
   add_series(all, table, "rcond of K (CHOLMOD)",
              [](const auto& r) { return r.reciprocal_condition; });
@@ -76,7 +87,7 @@ std::vector<Series> norm_series(const post::StudyTable& table, bool* log_y) {
 /// A reference slope and the point it passes through.
 struct Slope {
   double order = 0.0;
-  std::size_t anchor = 0;  ///< index into the series
+  std::size_t anchor = 0; ///< index into the series
   bool from_theory = false;
 };
 
@@ -90,7 +101,8 @@ std::optional<Slope> reference_slope(const Series& series, std::optional<double>
   if (theory) return Slope{*theory, n - 1, true};
   std::vector<double> rounded(n, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t k = 1; k < n; ++k) {
-    const double order = std::log(series.y[k] / series.y[k - 1]) / std::log(series.x[k] / series.x[k - 1]);
+    const double order =
+        std::log(series.y[k] / series.y[k - 1]) / std::log(series.x[k] / series.x[k - 1]);
     if (std::isfinite(order) && std::abs(order) >= 0.25) rounded[k] = std::round(order * 2.0) / 2.0;
   }
   std::optional<Slope> best;
@@ -110,7 +122,10 @@ Axis range_axis(const std::vector<Series>& all, bool x, bool log, std::string la
   if (log) {
     // Whole decades with a margin, so the end points never sit on the frame.
     return Axis{std::pow(10.0, std::floor(std::log10(lo) - 0.15)),
-                std::pow(10.0, std::ceil(std::log10(hi) + 0.15)), true, {}, std::move(label)};
+                std::pow(10.0, std::ceil(std::log10(hi) + 0.15)),
+                true,
+                {},
+                std::move(label)};
   }
   const double span = std::max(hi - lo, 1e-3 * std::abs(hi));
   return Axis{lo - 0.1 * span, hi + 0.1 * span, false, {}, std::move(label)};
@@ -123,18 +138,21 @@ std::string fitted_subtitle(const Canvas& canvas, std::string text) {
   if (canvas.text_width(text, font) <= room) return text;
   while (!text.empty() && canvas.text_width(text + "…", font) > room) {
     text.pop_back();
-    while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80) text.pop_back();
+    while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80)
+      text.pop_back();
     if (!text.empty() && static_cast<unsigned char>(text.back()) >= 0xC0) text.pop_back();
   }
   return text + "…";
 }
 
-}  // namespace
+} // namespace
 
 void draw_study(const Canvas& canvas, const post::StudyTable& table) {
   const bool all_converged = table.all_converged();
-  draw_title(canvas, fmt::format("Study of {}{}", table.key, all_converged ? "" : " (NOT all rungs converged)"),
-             fitted_subtitle(canvas, table.description));
+  draw_title(
+      canvas,
+      fmt::format("Study of {}{}", table.key, all_converged ? "" : " (NOT all rungs converged)"),
+      fitted_subtitle(canvas, table.description));
   bool log_y = true;
   const std::vector<Series> all = norm_series(table, &log_y);
   if (all.empty()) {
@@ -150,16 +168,17 @@ void draw_study(const Canvas& canvas, const post::StudyTable& table) {
   canvas.clip(area);
   for (const Series& series : all) {
     std::vector<Pixel> points;
-    for (std::size_t k = 0; k < series.x.size(); ++k) points.push_back(axes.at(series.x[k], series.y[k]));
+    for (std::size_t k = 0; k < series.x.size(); ++k)
+      points.push_back(axes.at(series.x[k], series.y[k]));
     canvas.polyline(points, {2.0, series.colour});
     for (std::size_t k = 0; k < points.size(); ++k)
       canvas.circle(points[k], series.converged[k] ? 3.2 : 5.0,
                     series.converged[k] ? series.colour : failed_colour);
     legend.push_back({series.label, {2.0, series.colour}});
     if (!log_y) continue;
-    const std::optional<double> theory =
-        series.kind == SeriesKind::V ? table.theory_order_v
-        : series.kind == SeriesKind::L2 ? table.theory_order_l2 : std::nullopt;
+    const std::optional<double> theory = series.kind == SeriesKind::V    ? table.theory_order_v
+                                         : series.kind == SeriesKind::L2 ? table.theory_order_l2
+                                                                         : std::nullopt;
     if (const std::optional<Slope> slope = reference_slope(series, theory)) {
       // y = y_a (x/x_a)^order across the whole x range, dashed.
       const double x_a = series.x[slope->anchor], y_a = series.y[slope->anchor];
@@ -167,23 +186,24 @@ void draw_study(const Canvas& canvas, const post::StudyTable& table) {
       canvas.line(axes.at(x0, y_a * std::pow(x0 / x_a, slope->order)),
                   axes.at(x1, y_a * std::pow(x1 / x_a, slope->order)),
                   {1.2, series.colour, 0.6, 7.0});
-      legend.push_back({fmt::format("{} slope {:g}", slope->from_theory ? "theory" : "observed",
-                                    slope->order),
-                        {1.2, series.colour, 0.6, 7.0}});
+      legend.push_back(
+          {fmt::format("{} slope {:g}", slope->from_theory ? "theory" : "observed", slope->order),
+           {1.2, series.colour, 0.6, 7.0}});
     }
   }
   if (!log_y && !table.rungs.empty() && table.rungs.back().pressure_extrapolated) {
     const double limit = *table.rungs.back().pressure_extrapolated;
     const double y = axes.py(limit);
     canvas.line({area.x, y}, {area.right(), y}, {1.4, slope_colour, 1.0, 8.0});
-    legend.push_back({fmt::format("Richardson limit {:.4f}", limit), {1.4, slope_colour, 1.0, 8.0}});
+    legend.push_back(
+        {fmt::format("Richardson limit {:.4f}", limit), {1.4, slope_colour, 1.0, 8.0}});
   }
   canvas.unclip();
   if (!all_converged) legend.push_back({"large red dot: rung not converged", {2.0, failed_colour}});
   // Rising data leave the top-left corner free, falling data the top-right one.
   const Series& first = all.front();
-  const bool rising = first.y.size() >= 2 && (first.y.back() - first.y.front()) *
-                                                     (first.x.back() - first.x.front()) > 0;
+  const bool rising = first.y.size() >= 2 &&
+                      (first.y.back() - first.y.front()) * (first.x.back() - first.x.front()) > 0;
   if (rising)
     draw_legend(canvas, {area.x + 10, area.y + 10}, legend, HAlign::Left);
   else
@@ -196,7 +216,12 @@ void draw_corner(const Canvas& canvas, const post::StudyTable& table) {
   std::vector<Series> all;
   for (const post::StudyRung& rung : table.rungs) {
     if (!rung.corner || rung.corner->radius.empty()) continue;
-    Series series{fmt::format("{} = {}", table.key, rung.value_text), palette[all.size() % 4], {}, {}, {}, SeriesKind::Other};
+    Series series{fmt::format("{} = {}", table.key, rung.value_text),
+                  palette[all.size() % 4],
+                  {},
+                  {},
+                  {},
+                  SeriesKind::Other};
     series.x = rung.corner->radius;
     series.y = rung.corner->mean_rate;
     series.converged.assign(series.x.size(), rung.converged());
@@ -214,7 +239,8 @@ void draw_corner(const Canvas& canvas, const post::StudyTable& table) {
   canvas.clip(axes.area());
   for (const Series& series : all) {
     std::vector<Pixel> points;
-    for (std::size_t k = 0; k < series.x.size(); ++k) points.push_back(axes.at(series.x[k], series.y[k]));
+    for (std::size_t k = 0; k < series.x.size(); ++k)
+      points.push_back(axes.at(series.x[k], series.y[k]));
     canvas.polyline(points, {2.0, series.colour});
     for (std::size_t k = 0; k < points.size(); ++k)
       canvas.circle(points[k], 2.6, series.converged[k] ? series.colour : failed_colour);
@@ -242,4 +268,4 @@ Picture render_study_plot(const post::StudyTable& table) {
                  render_svg(picture_width, picture_height, draw)};
 }
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

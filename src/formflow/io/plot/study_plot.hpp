@@ -26,4 +26,4 @@ void draw_corner(const Canvas& canvas, const post::StudyTable& table);
 /// draw_corner rendered as corner.png / corner.svg (name "corner").
 Picture render_corner_plot(const post::StudyTable& table);
 
-}  // namespace formflow::io::plot
+} // namespace formflow::io::plot

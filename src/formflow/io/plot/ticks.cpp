@@ -16,23 +16,20 @@ std::string superscript_integer(int value) {
   static constexpr std::array<const char*, 10> digits = {"⁰", "¹", "²", "³", "⁴",
                                                          "⁵", "⁶", "⁷", "⁸", "⁹"};
   std::string out = value < 0 ? "⁻" : "";
-  for (const char c : std::to_string(std::abs(value)))
-    out += digits[c - '0'];
+  for (const char c : std::to_string(std::abs(value))) out += digits[c - '0'];
   return out;
 }
 
 /// Typographic minus: "-" looks like a hyphen next to digits.
 std::string with_minus_sign(std::string text) {
-  if (!text.empty() && text[0] == '-')
-    text.replace(0, 1, "−");
+  if (!text.empty() && text[0] == '-') text.replace(0, 1, "−");
   return text;
 }
 
 } // namespace
 
 double nice_step(double span, int target) {
-  if (!(span > 0) || !std::isfinite(span))
-    return 1.0;
+  if (!(span > 0) || !std::isfinite(span)) return 1.0;
   const double raw = span / std::max(target, 1);
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
   const double fraction = raw / magnitude;
@@ -52,8 +49,7 @@ std::vector<double> linear_ticks(double lo, double hi, int target) {
 
 std::vector<double> decade_ticks(double lo, double hi) {
   std::vector<double> ticks;
-  if (!(lo > 0) || !(hi >= lo))
-    return ticks;
+  if (!(lo > 0) || !(hi >= lo)) return ticks;
   for (int k = static_cast<int>(std::ceil(std::log10(lo) - 1e-9));
        k <= static_cast<int>(std::floor(std::log10(hi) + 1e-9)); ++k)
     ticks.push_back(std::pow(10.0, k));
@@ -75,8 +71,7 @@ std::vector<double> log_125_levels(double lo, double hi) {
 }
 
 std::string tick_label(double value, double step) {
-  if (value == 0.0)
-    return "0";
+  if (value == 0.0) return "0";
   const double magnitude = std::max(std::abs(value), std::abs(step));
   if (magnitude >= 1e5 || magnitude < 1e-4) {
     const int exponent = static_cast<int>(std::floor(std::log10(std::abs(value))));
@@ -96,8 +91,7 @@ std::string log_tick_label(double value, bool powers) {
   const int exponent = static_cast<int>(std::lround(std::log10(value)));
   if (std::abs(value - std::pow(10.0, exponent)) > 1e-9 * value)
     return with_minus_sign(fmt::format("{:.3g}", value));
-  if (!powers)
-    return fmt::format("{:.{}f}", value, std::max(0, -exponent));
+  if (!powers) return fmt::format("{:.{}f}", value, std::max(0, -exponent));
   return "10" + superscript_integer(exponent);
 }
 

@@ -38,12 +38,10 @@ std::vector<Index> arrow_nodes(const Axes& axes, const mesh::Mesh<2>& mesh, doub
     const std::pair<long, long> bucket{std::lround(u), std::lround(v)};
     const double distance = std::hypot(u - bucket.first, v - bucket.second);
     auto [it, inserted] = nearest.try_emplace(bucket, distance, node);
-    if (!inserted && distance < it->second.first)
-      it->second = {distance, node};
+    if (!inserted && distance < it->second.first) it->second = {distance, node};
   }
   std::vector<Index> nodes;
-  for (const auto& entry : nearest)
-    nodes.push_back(entry.second.second);
+  for (const auto& entry : nearest) nodes.push_back(entry.second.second);
   return nodes;
 }
 

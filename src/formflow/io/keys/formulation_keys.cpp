@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// Case keys of the [formulation] section (Penalty or mixed form): rows of the table in
+// io/case_keys.cpp.
+#include "formflow/io/keys/key_spec.hpp"
+
+namespace formflow::io::keys {
+
+using physics::ViscousStrain;
+
+std::vector<CaseKey> formulation_keys() {
+  return {
+      enum_key(
+          "formulation.viscous_strain", "full",
+          {{"full", ViscousStrain::Full}, {"deviatoric", ViscousStrain::Deviatoric}},
+          [](auto& c) -> auto& { return c.viscous_strain; })
+          .doc("strain rate in the viscous a-form: the full ε̇ (paper eq. 3.3) or its deviator "
+               "ė (the same as d → 0)"),
+      enum_key(
+          "formulation.type", "penalty",
+          {{"penalty", assembly::FormulationType::Penalty},
+           {"mixed", assembly::FormulationType::Mixed}},
+          [](auto& c) -> auto& { return c.formulation.type; })
+          .doc("penalty: problem (3.9), σ_H = ε̇_V/d at the volumetric points; mixed: problem "
+               "(3.7), σ_H in formulation.pressure, condensed cell by cell (docs/mixed.md)"),
+      enum_key(
+          "formulation.pressure", "P1disc",
+          {{"P0", fem::PressureSpace::P0},
+           {"P1disc", fem::PressureSpace::P1disc},
+           {"Q1", fem::PressureSpace::Q1}},
+          [](auto& c) -> auto& { return c.formulation.pressure; })
+          .constraint("mixed with Q1 velocity: P0 only; Q1 (Taylor–Hood) needs Q2 velocity and "
+                      "regularized friction")
+          .doc("pressure space of the mixed formulation: P0 (cell constant), P1disc (cell linear, "
+               "discontinuous), both condensed cell by cell, or Q1 (continuous bilinear on the "
+               "vertices, Taylor–Hood: global saddle-point solve with UMFPACK)"),
+      real_key(
+          "formulation.augmentation", 1e3,
+          [](auto& c) -> auto& { return c.formulation.augmentation; })
+          .above(0)
+          .at_most(1e8)
+          .doc("ρ of the augmented-Lagrangian term for d = 0: r = ρ × the cell's mean secant "
+               "viscosity; larger = fewer Uzawa steps, worse conditioning"),
+      real_key(
+          "formulation.contact_augmentation", 1e6,
+          [](auto& c) -> auto& { return c.formulation.contact_augmentation; })
+          .above(0)
+          .at_most(1e12)
+          .unit("stress·time/length")
+          .doc("r_N of the augmented-Lagrangian contact term for dN = 0 (plays the role of 1/d_N)"),
+      real_key(
+          "formulation.uzawa_tolerance", 1e-8,
+          [](auto& c) -> auto& { return c.formulation.uzawa_tolerance; })
+          .above(0)
+          .below(1)
+          .doc("Uzawa steps (d = 0 or dN = 0) end when the multipliers change by less than "
+               "this, relative, or stop changing at a round-off floor below its square root"),
+      integer_key(
+          "formulation.uzawa_max_steps", 50,
+          [](auto& c) -> auto& { return c.formulation.uzawa_max_steps; })
+          .at_least(1)
+          .at_most(10000)
+          .doc("Uzawa steps per secant iteration at most (each is one solve with the same "
+               "factorisation)"),
+  };
+}
+
+}  // namespace formflow::io::keys

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// Case keys of the [friction] section (Friction on the contact boundary): rows of the table in
+// io/case_keys.cpp.
+#include "formflow/io/keys/key_spec.hpp"
+
+#include <algorithm>
+
+namespace formflow::io::keys {
+
+namespace {
+
+bool contains(const std::vector<std::string>& list, std::string_view entry) {
+  return std::find(list.begin(), list.end(), entry) != list.end();
+}
+
+KeySpec friction_parts_key() {
+  KeySpec spec("friction.on", KeyType::StringList, std::vector<std::string>{"container", "die"});
+  spec.key.choices = {"container", "die"};
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    const auto& parts = std::get<std::vector<std::string>>(value);
+    case_.friction.on_container = contains(parts, "container");
+    case_.friction.on_die = contains(parts, "die");
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue {
+    std::vector<std::string> parts;
+    if (case_.friction.on_container) parts.emplace_back("container");
+    if (case_.friction.on_die) parts.emplace_back("die");
+    return parts;
+  };
+  return spec.doc("parts of the contact boundary Γ3 with friction: the container wall y = H_in "
+                  "and/or the die (its face and its land); [] = frictionless everywhere");
+}
+
+}  // namespace
+
+std::vector<CaseKey> friction_keys() {
+  return {
+      real_key(
+          "friction.mu", 0.0, [](auto& c) -> auto& { return c.friction.mu; })
+          .at_least(0)
+          .doc("Coulomb coefficient μ_f of the nonlocal friction law τ_f = μ_f σ̄_N"),
+      real_key(
+          "friction.radius", 0.0, [](auto& c) -> auto& { return c.friction.radius; })
+          .at_least(0)
+          .unit("length")
+          .doc("mollifier radius h of the mean contact pressure σ̄_N; 0 = local pressure"),
+      friction_parts_key(),
+      enum_key(
+          "friction.regularization", "regularized",
+          {{"regularized", physics::FrictionRegularization::Regularized},
+           {"none", physics::FrictionRegularization::None}},
+          [](auto& c) -> auto& { return c.friction.regularization; })
+          .doc("regularized: the paper's |u_T| → √(|u_T|² + d_T²) with penalty.dT (eq. 3.14); "
+               "none: exact Coulomb law by an augmented Lagrangian on the friction traction "
+               "(docs/friction.md)"),
+      real_key(
+          "friction.augmentation", 1.0, [](auto& c) -> auto& { return c.friction.augmentation; })
+          .above(0)
+          .at_most(1e6)
+          .unit("1/penalty.dN")
+          .doc("exact friction with solver.method = \"secant\" (or a mixed formulation): "
+               "augmentation r = value/d_N of λ_T = proj(λ_T + r u_T); "
+               "any value converges, larger takes fewer multiplier updates"),
+      real_key(
+          "friction.newton_augmentation", 100.0,
+          [](auto& c) -> auto& { return c.friction.newton_augmentation; })
+          .above(0)
+          .at_most(1e6)
+          .unit("1/penalty.dN")
+          .doc("exact friction solved by Newton (solver.method = \"newton\"; penalty, or mixed "
+               "with a condensed pressure): r = value/d_N; Newton's tangent carries the stick "
+               "penalty, and a stiffer one settles the multipliers in fewer updates "
+               "(docs/friction.md)"),
+  };
+}
+
+}  // namespace formflow::io::keys

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// Case keys of the [geometry] section (The die channel): rows of the table in io/case_keys.cpp.
+#include "formflow/io/keys/key_spec.hpp"
+
+namespace formflow::io::keys {
+
+namespace {
+
+KeySpec die_shape_key() {
+  using mesh::DieShape;
+  return enum_key(
+             "geometry.die", "square",
+             {{"square", DieShape::Square},
+              {"wedge", DieShape::Wedge},
+              {"arc", DieShape::Arc},
+              {"polyline", DieShape::Polyline}},
+             [](auto& c) -> auto& { return c.geometry.die; })
+      .doc("die shape: square (a step at x = L_c, the benchmark), wedge (geometry.die_angle), "
+           "arc (geometry.die_radius) or polyline (geometry.die_profile)");
+}
+
+KeySpec die_profile_key() {
+  KeySpec spec("geometry.die_profile", KeyType::PointList, KeyPoints{});
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.geometry.die_profile = std::get<KeyPoints>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.geometry.die_profile; };
+  return spec.unit("length")
+      .constraint("polyline die: starts at [0, H_in], ends at y = H_out, x increasing, y "
+                  "non-increasing")
+      .doc("polyline die face as [x, y] points, x measured from the die entry x = L_c");
+}
+
+}  // namespace
+
+std::vector<CaseKey> geometry_keys() {
+  return {
+      real_key(
+          "geometry.container_length", 10.0,
+          [](auto& c) -> auto& { return c.geometry.container_length; })
+          .above(0)
+          .constraint("a multiple of mesh.size")
+          .unit("length")
+          .doc("L_c: the container part is x ∈ [0, L_c]"),
+      real_key(
+          "geometry.entry_half_height", 10.0,
+          [](auto& c) -> auto& { return c.geometry.entry_half_height; })
+          .above(0)
+          .constraint("> geometry.exit_half_height; a multiple of mesh.size")
+          .unit("length")
+          .doc("H_in: half thickness of the billet in the container"),
+      real_key(
+          "geometry.exit_half_height", 5.0,
+          [](auto& c) -> auto& { return c.geometry.exit_half_height; })
+          .above(0)
+          .constraint("< geometry.entry_half_height; a multiple of mesh.size")
+          .unit("length")
+          .doc("H_out: half thickness of the product after the die"),
+      real_key(
+          "geometry.exit_length", 10.0, [](auto& c) -> auto& { return c.geometry.exit_length; })
+          .above(0)
+          .constraint("a multiple of mesh.size")
+          .unit("length")
+          .doc("L_e: the exit part is x ∈ [L_c, L_c + L_e]"),
+      die_shape_key(),
+      real_key(
+          "geometry.die_angle", 15.0, [](auto& c) -> auto& { return c.geometry.die_angle; })
+          .above(0)
+          .below(90)
+          .unit("degrees")
+          .doc("wedge (conical) die semi-angle α; the face runs from (L_c, H_in) to "
+               "(L_c + (H_in − H_out)/tan α, H_out)"),
+      real_key(
+          "geometry.die_radius", 10.0, [](auto& c) -> auto& { return c.geometry.die_radius; })
+          .above(0)
+          .constraint("≥ geometry.entry_half_height − geometry.exit_half_height")
+          .unit("length")
+          .doc("arc die: radius of the circular face, tangent to the exit direction at the die "
+               "exit"),
+      die_profile_key(),
+      real_key(
+          "geometry.land_length", 0.0, [](auto& c) -> auto& { return c.geometry.land_length; })
+          .at_least(0)
+          .constraint("a multiple of mesh.size; < geometry.exit_length for the square die")
+          .unit("length")
+          .doc("die land: a straight contact part y = H_out after the die face (Γ3; it counts "
+               "as \"die\" for friction.on)"),
+      enum_key(
+          "geometry.symmetry", "plane",
+          {{"plane", physics::Symmetry::Plane}, {"axisymmetric", physics::Symmetry::Axisymmetric}},
+          [](auto& c) -> auto& { return c.symmetry; })
+          .doc("plane strain, or axial symmetry about y = 0 (y = r; rod and wire): pressures "
+               "are forces over πR²"),
+  };
+}
+
+}  // namespace formflow::io::keys

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// Case keys of the [mesh] section (Where the cells come from): rows of the table in
+// io/case_keys.cpp.
+#include "formflow/io/keys/key_spec.hpp"
+
+namespace formflow::io::keys {
+
+namespace {
+
+KeySpec mesh_file_key() {
+  KeySpec spec("mesh.file", KeyType::Text, std::string());
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.mesh_file = std::get<std::string>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh_file; };
+  return spec.constraint("required when mesh.source = \"file\"; only then")
+      .doc("the Gmsh mesh (.msh 4.1 or 2.2, ASCII or binary) of quad-4 (Q1) or quad-9 (Q2) "
+           "cells; a relative path is taken from the case file's directory");
+}
+
+KeySpec mesh_boundaries_key() {
+  KeySpec spec("mesh.boundaries", KeyType::NameMap, NameMap{});
+  for (int k = 0; k < mesh::n_boundary_labels; ++k)
+    spec.key.choices.push_back(mesh::label_name(static_cast<mesh::BoundaryLabel>(k)));
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.mesh_boundaries = std::get<NameMap>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh_boundaries; };
+  return spec.constraint("only with mesh.source = \"file\"")
+      .doc("physical curve name in mesh.file → boundary part, as a table `[mesh.boundaries]` "
+           "with lines `ram = \"rear\"`; several names may share a part; every boundary "
+           "facet needs one; {} = the physical names are the part names");
+}
+
+}  // namespace
+
+std::vector<CaseKey> mesh_keys() {
+  return {
+      enum_key(
+          "mesh.element", "Q2", {{"Q1", fem::ElementKind::Q1}, {"Q2", fem::ElementKind::Q2}},
+          [](auto& c) -> auto& { return c.element; })
+          .doc("velocity element: Q1 (4-node bilinear) or Q2 (9-node biquadratic)"),
+      real_key(
+          "mesh.size", 1.0, [](auto& c) -> auto& { return c.mesh_size; })
+          .above(0)
+          .constraint("divides every geometry length when mesh.source = \"structured\"; the "
+                      "mesh's estimated memory fits in this machine's (docs/benchmarks.md)")
+          .unit("length")
+          .doc("side of the uniform square cells (mesh I: 10/6, mesh II: 1); the target "
+               "element size for mesh.source = \"gmsh\"; unused for \"file\""),
+      enum_key(
+          "mesh.source", "structured",
+          {{"structured", mesh::MeshSource::Structured},
+           {"gmsh", mesh::MeshSource::Gmsh},
+           {"file", mesh::MeshSource::File}},
+          [](auto& c) -> auto& { return c.mesh_source; })
+          .doc("structured: uniform square cells; gmsh: the same geometry meshed by Gmsh with "
+               "recombined quadrilaterals of size mesh.size; file: the mesh in mesh.file"),
+      mesh_file_key(),
+      mesh_boundaries_key(),
+  };
+}
+
+}  // namespace formflow::io::keys

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// Case keys of the [solver] section (The nonlinear iteration): rows of the table in
+// io/case_keys.cpp.
+#include "formflow/io/keys/key_spec.hpp"
+
+namespace formflow::io::keys {
+
+std::vector<CaseKey> solver_keys() {
+  return {
+      real_key(
+          "solver.tolerance", 1e-4, [](auto& c) -> auto& { return c.solver.tolerance; })
+          .above(0)
+          .below(1)
+          .doc("δ: the secant iteration stops when ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < δ"),
+      integer_key(
+          "solver.max_iterations", 500, [](auto& c) -> auto& { return c.solver.max_iterations; })
+          .at_least(1)
+          .at_most(1e9)
+          .doc("iteration limit; reaching it is a result (not converged, exit 3), not an error"),
+      real_key(
+          "solver.initial_rate", 1.0, [](auto& c) -> auto& { return c.solver.initial_rate; })
+          .above(0)
+          .unit("1/time")
+          .doc("ε̄̇ whose secant viscosity σ_p(ε̄̇)/ε̄̇ gives the constant-viscosity first "
+               "iterate"),
+      enum_key(
+          "solver.method", "newton",
+          {{"newton", solvers::NonlinearMethod::Newton},
+           {"secant", solvers::NonlinearMethod::Secant}},
+          [](auto& c) -> auto& { return c.solver.method; })
+          .doc("newton: Newton–Raphson with the consistent tangent and a line search; "
+               "secant: the paper's secant-modulus (Kachanov) iteration (eq. 5.2–5.3)"),
+      real_key(
+          "solver.newton_start", 0.5, [](auto& c) -> auto& { return c.solver.newton_start; })
+          .above(0)
+          .doc("newton only: secant steps are taken while the relative change exceeds this "
+               "(safeguard far from the solution)"),
+      integer_key(
+          "solver.coarse_levels", 2, [](auto& c) -> auto& { return c.solver.coarse_levels; })
+          .at_least(0)
+          .at_most(6)
+          .doc(
+              "newton only: first solve on this many coarser meshes (mesh.size times 2^L, ..., 2), "
+              "each started from the previous one, and start from the last; 0: from the "
+              "constant-viscosity solution; levels the geometry does not admit (or a mesh from a "
+              "file) are skipped, and summary.json coarse_mesh_sizes lists those used"),
+  };
+}
+
+}  // namespace formflow::io::keys
