@@ -110,8 +110,8 @@ namespace formflow {
 namespace {
 
 // The mixed formulation with its pressure condensed at d > 0 takes the Newton loop
-// too (app::exact_friction_by_newton). Measured, μ = 0.2, δ = 1e-8: 22 Newton
-// against 1563 secant iterations, ram pressures 2.7489329195 both.
+// too (solvers::LoopKind::AugmentedNewton, app/solve_plan.hpp). Measured, μ = 0.2, δ = 1e-8: 22
+// Newton against 1563 secant iterations, ram pressures 2.7489329195 both.
 TEST(ExactFrictionNewton, MixedCondensedPressureAgreesWithTheSecantLoop) {
   auto solve = [](solvers::NonlinearMethod method, double tolerance) {
     return testing::solve_benchmark([&](io::Case& c) {

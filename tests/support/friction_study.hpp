@@ -4,6 +4,7 @@
 #pragma once
 
 #include "formflow/app/simulation.hpp"
+#include "formflow/app/solve_plan.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
@@ -36,7 +37,7 @@ struct FrictionSolve {
 /// The paper's benchmark from a Case (SPEC §4 defaults plus the caller's edits),
 /// solved by the loop `formflow run` takes for solver.method, from the
 /// constant-viscosity start (no coarse levels): exact friction by the augmented
-/// Lagrangian around Newton (app::exact_friction_by_newton) or around the secant
+/// Lagrangian around Newton (the plan's AugmentedNewton loop) or around the secant
 /// iteration; regularised friction by Newton or the secant iteration.
 inline FrictionSolve solve_friction_case(const io::Case& case_) {
   FrictionSolve solve;
@@ -47,7 +48,7 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
   auto solver = solvers::make_cholmod_solver();
   PhaseTimes times;
   const bool newton = case_.solver.method == solvers::NonlinearMethod::Newton;
-  if (solve.problem->has_exact_friction() && app::exact_friction_by_newton(case_)) {
+  if (app::make_solve_plan(case_).loop == solvers::LoopKind::AugmentedNewton) {
     auto outcome = solvers::augmented_newton<2>(*solve.problem, *solver, case_.solver, {}, times);
     solve.velocity = outcome.solve.velocity;
     solve.stop_reason = outcome.solve.stop_reason;

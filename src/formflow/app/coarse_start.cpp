@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Solve on 2^L h, ..., 2h, interpolating each solution to the next mesh.
 #include "formflow/app/coarse_start.hpp"
+#include "formflow/app/solve_plan.hpp"
 
 #include "formflow/app/simulation.hpp"
 #include "formflow/fem/nodal_interpolation.hpp"
@@ -75,7 +76,8 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
       if (level < levels)
         guess = fem::interpolate_nodal_field(previous_mesh, previous_velocity, 2, mesh);
     }
-    auto solver = solvers::make_cholmod_solver();
+    auto solver = solvers::make_linear_solver(make_solve_plan(case_).linear,
+                                              solvers::MatrixStorage::SymmetricLower);
     solvers::SecantOutcome outcome = solvers::newton_iteration(
         *problem, *solver, coarse.solver, {}, times, level < levels ? &guess : nullptr);
     start.mesh_sizes.push_back(coarse.mesh_size);

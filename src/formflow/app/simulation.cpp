@@ -2,6 +2,7 @@
 // One case from parameters to results.
 #include "formflow/app/simulation.hpp"
 #include "formflow/app/coarse_start.hpp"
+#include "formflow/app/solve_plan.hpp"
 
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/post/post_process.hpp"
@@ -17,16 +18,6 @@
 
 namespace formflow::app {
 
-bool exact_friction_by_newton(const io::Case& case_) {
-  // Newton's system: the penalty problem, or the mixed one with its pressure
-  // condensed at d > 0 (ConstraintMultipliers::is_condensed_penalty).
-  const bool condensed = case_.formulation.type == assembly::FormulationType::Penalty ||
-                         (case_.penalty.d > 0 && fem::is_discontinuous(case_.formulation.pressure));
-  return case_.friction.regularization == physics::FrictionRegularization::None &&
-         case_.solver.method == solvers::NonlinearMethod::Newton && condensed &&
-         case_.penalty.d_n > 0;
-}
-
 assembly::ProblemSettings problem_settings(const io::Case& case_) {
   assembly::ProblemSettings settings;
   settings.process = case_.process;
@@ -34,9 +25,8 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   settings.viscous_strain = case_.viscous_strain;
   settings.penalty = case_.penalty;
   settings.friction = case_.friction;
-  // Newton's exact-friction loop has its own augmentation (friction.newton_augmentation).
-  if (exact_friction_by_newton(case_))
-    settings.friction.augmentation = case_.friction.newton_augmentation;
+  // The augmentation of the loop that runs (friction.newton_augmentation for Newton's).
+  settings.friction.augmentation = make_solve_plan(case_).friction_augmentation;
   settings.volumetric_points = case_.volumetric_points;
   settings.initial_rate = case_.solver.initial_rate;
   settings.symmetry = case_.symmetry;
@@ -78,28 +68,35 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
         problem->n_contact_points());
     problem->attach_multipliers(constraint_multipliers.get());
   }
-  auto solver = solvers::make_cholmod_solver();
+  const SolvePlan plan = make_solve_plan(case_);
+  auto solver = solvers::make_linear_solver(plan.linear, solvers::loop_storage(plan.loop));
   solvers::SecantOutcome outcome;
   assembly::FrictionMultipliers<2> multipliers;
-  if (exact_friction_by_newton(case_)) {
-    // Exact Coulomb friction by Newton, multipliers updated between its steps
-    // (solvers/augmented_newton.hpp). The coarse levels solve the Coulomb law with
-    // λ̂ = 0, i.e. stick penalty r (multipliers live at the fine Γ3 points only).
-    const std::optional<CoarseStart> coarse = coarse_start(case_, simulation.mesh, results.timing);
+  // Mesh sequencing (solver.coarse_levels) for the Newton loops: start from the coarse
+  // solution. Exact friction's coarse levels solve the Coulomb law with λ̂ = 0, i.e.
+  // stick penalty r (the multipliers live at the fine Γ3 points only).
+  std::optional<CoarseStart> coarse;
+  if (plan.is_newton()) {
+    coarse = coarse_start(case_, simulation.mesh, results.timing);
     if (coarse) {
       results.coarse_iterations = coarse->iterations;
       results.coarse_mesh_sizes = coarse->mesh_sizes;
     }
-    auto augmented =
-        solvers::augmented_newton(*problem, *solver, case_.solver, on_iteration, results.timing,
-                                  coarse ? &coarse->velocity : nullptr);
+  }
+  const VectorX* start_velocity = coarse ? &coarse->velocity : nullptr;
+  switch (plan.loop) {
+  case solvers::LoopKind::AugmentedNewton: {
+    // Exact Coulomb friction by Newton, multipliers updated between its steps
+    // (solvers/augmented_newton.hpp).
+    auto augmented = solvers::augmented_newton(*problem, *solver, case_.solver, on_iteration,
+                                               results.timing, start_velocity);
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
     results.augmentation = {augmented.augmentations, augmented.multiplier_change};
-    results.method = coarse ? "augmented-lagrangian friction around newton from coarse meshes"
-                            : "augmented-lagrangian friction around newton";
-  } else if (problem->has_exact_friction()) {
-    // Exact Coulomb friction, paper's method (or a mixed formulation): the
+    break;
+  }
+  case solvers::LoopKind::AugmentedSecant: {
+    // Exact friction, the paper's method (or a mixed formulation): the
     // augmented-Lagrangian loop with secant inner solves.
     auto augmented = solvers::augmented_lagrangian(
         *problem, solvers::secant_inner_solve(*problem, *solver, results.timing), case_.solver,
@@ -107,37 +104,30 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
     results.augmentation = {augmented.augmentations, augmented.multiplier_change};
-    results.method = "augmented-lagrangian friction around secant";
-  } else if (constraint_multipliers && constraint_multipliers->has_global_pressure()) {
+    break;
+  }
+  case solvers::LoopKind::SaddlePointSecant:
     // Taylor–Hood: a continuous pressure cannot be condensed; the saddle-point
-    // system is indefinite, so UMFPACK (LU) replaces CHOLMOD here.
-    auto lu = solvers::make_umfpack_solver();
-    outcome = solvers::saddle_point_secant_iteration(*problem, *lu, case_.solver, on_iteration,
+    // system is indefinite (an LU back-end, solvers/capabilities.hpp).
+    outcome = solvers::saddle_point_secant_iteration(*problem, *solver, case_.solver, on_iteration,
                                                      results.timing);
-    results.method = constraint_multipliers->is_exact_contact()
-                         ? "saddle point (umfpack) with uzawa contact around secant"
-                         : "saddle point (umfpack) around secant";
-  } else if (constraint_multipliers && constraint_multipliers->needs_uzawa()) {
+    break;
+  case solvers::LoopKind::UzawaSecant:
     outcome = solvers::uzawa_secant_iteration(*problem, *solver, case_.solver, on_iteration,
                                               results.timing);
-    results.method = "uzawa around secant";
-  } else if (case_.solver.method == solvers::NonlinearMethod::Newton &&
-             (!constraint_multipliers || constraint_multipliers->is_condensed_penalty())) {
+    break;
+  case solvers::LoopKind::Newton:
     // The penalty problem (plane and axisymmetric) and the mixed one with its
     // pressure condensed at d > 0 (the condensation is linear in u).
-    // Mesh sequencing (solver.coarse_levels): start from the coarse solution.
-    const std::optional<CoarseStart> coarse = coarse_start(case_, simulation.mesh, results.timing);
-    if (coarse) {
-      results.coarse_iterations = coarse->iterations;
-      results.coarse_mesh_sizes = coarse->mesh_sizes;
-    }
     outcome = solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration,
-                                        results.timing, coarse ? &coarse->velocity : nullptr);
-    results.method = coarse ? "newton from coarse meshes" : "newton";
-  } else {
+                                        results.timing, start_velocity);
+    break;
+  case solvers::LoopKind::Secant:
     outcome =
         solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+    break;
   }
+  results.method = plan.name(coarse.has_value());
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());

@@ -39,11 +39,6 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
 /// The discrete problem's parameters taken from `case_`.
 assembly::ProblemSettings problem_settings(const io::Case& case_);
 
-/// Exact friction solved by Newton (solvers/augmented_newton.hpp): friction.regularization
-/// = "none", solver.method = "newton", the penalty formulation with d_N > 0. Otherwise
-/// exact friction runs the augmented-Lagrangian loop around the secant iteration.
-bool exact_friction_by_newton(const io::Case& case_);
-
 /// CHOLMOD rcond of the secant matrix K(u) of `problem` at velocity `u`.
 Real condition_at(const assembly::FormingProblem<2>& problem, const VectorX& u);
 

@@ -13,7 +13,7 @@ namespace formflow::assembly {
 namespace {
 
 bool friction_acts_on(const physics::Friction& friction, mesh::BoundaryLabel label) {
-  if (friction.mu <= 0) return false;
+  if (physics::friction_vanishes(friction)) return false;
   return (label == mesh::BoundaryLabel::Container && friction.on_container) ||
          (label == mesh::BoundaryLabel::Die && friction.on_die);
 }
@@ -150,6 +150,10 @@ FormingProblem<dim>::contact_state(const VectorX& u,
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<ContactPoint<dim>> state;
   state.reserve(contact_facets_.size() * facet_rule_.size());
+  // The Tresca and hybrid thresholds read the flow stress at the surface point, taken
+  // at max(ε̄̇, rate1): below rate1 the law's linear continuation would make a rigid
+  // billet frictionless.
+  const bool shear_yield = average_ && physics::needs_shear_yield(settings_.friction);
   for (Index position = 0; position < static_cast<Index>(contact_facets_.size()); ++position) {
     const Index f = contact_facets_[position];
     const mesh::BoundaryFacet& facet = mesh_.facets[f];
@@ -168,6 +172,12 @@ FormingProblem<dim>::contact_state(const VectorX& u,
           multipliers_ ? multipliers_->contact_pressure(static_cast<Index>(state.size()),
                                                         point.normal_velocity)
                        : point.normal_velocity / settings_.penalty.d_n; // −σ_N (eq. 3.6)
+      if (shear_yield) {
+        const Real rate =
+            physics::equivalent_strain_rate(strain_rate_at(facet_values, velocities, q));
+        point.shear_yield =
+            settings_.law.yield_stress(std::max(rate, settings_.law.rate1)) / std::sqrt(3.0);
+      }
       state.push_back(point);
     }
   }
@@ -180,7 +190,10 @@ FormingProblem<dim>::contact_state(const VectorX& u,
     ContactPoint<dim>& point = state[k];
     point.mean_contact_pressure = mean[k];
     if (!friction_acts_on(settings_.friction, mesh_.facets[point.facet].label)) continue;
-    point.friction_threshold = physics::friction_threshold(settings_.friction.mu, mean[k]);
+    const physics::ThresholdValue threshold =
+        physics::friction_threshold(settings_.friction, {mean[k], point.shear_yield});
+    point.friction_threshold = threshold.value;
+    point.threshold_pressure_slope = threshold.pressure_slope;
     const Real slip = point.tangential_velocity.norm();
     if (has_exact_friction()) {
       const bool given = multipliers && !multipliers->traction.empty();
@@ -202,7 +215,7 @@ template <int dim>
 void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
                                    const FrictionMultipliers<dim>* multipliers) const {
   ScatterPlan::clear(system);
-  const bool with_friction = w && settings_.friction.mu > 0;
+  const bool with_friction = w && !physics::friction_vanishes(settings_.friction);
   std::vector<ContactPoint<dim>> state;
   if (with_friction) state = contact_state(*w, multipliers);
 
@@ -325,25 +338,45 @@ void FormingProblem<dim>::scatter_load(Index cell, const VectorX& local_load,
     }
 }
 
+namespace {
+
+/// ε̇ at point q of cell or face `values` for the cell's nodal `velocities`; in
+/// axisymmetry with the hoop rate u_r/r in the θθ (third) slot.
+template <int dim, class Values>
+Tensor3 strain_rate_of(const Values& values,
+                       const typename fem::CellValues<dim>::Gradients& velocities, int q,
+                       bool axisymmetric) {
+  Tensor2<dim> gradient;
+  with_node_count<dim>(values.n_nodes(), [&](auto n_nodes) { // fixed sizes: runs at every point
+    using NodeValues = Eigen::Matrix<Real, dim, decltype(n_nodes)::value>;
+    gradient = physics::velocity_gradient<dim>(
+        Eigen::Map<const NodeValues>(velocities.data(), dim, values.n_nodes()),
+        Eigen::Map<const NodeValues>(values.gradients(q).data(), dim, values.n_nodes()));
+  });
+  Tensor3 rate = physics::strain_rate<dim>(gradient);
+  if constexpr (dim == 2)
+    if (axisymmetric)
+      physics::add_hoop_rate<dim>(rate, gradient, (velocities * values.shape(q))[1],
+                                  values.point(q)[1]);
+  return rate;
+}
+
+} // namespace
+
 template <int dim>
 Tensor3
 FormingProblem<dim>::strain_rate_at(const fem::CellValues<dim>& values,
                                     const typename fem::CellValues<dim>::Gradients& velocities,
                                     int q) const {
-  Tensor2<dim> gradient;
-  with_node_count<dim>(
-      values.n_nodes(), [&](auto n_nodes) { // fixed sizes: this runs at every point
-        using NodeValues = Eigen::Matrix<Real, dim, decltype(n_nodes)::value>;
-        gradient = physics::velocity_gradient<dim>(
-            Eigen::Map<const NodeValues>(velocities.data(), dim, values.n_nodes()),
-            Eigen::Map<const NodeValues>(values.gradients(q).data(), dim, values.n_nodes()));
-      });
-  Tensor3 rate = physics::strain_rate<dim>(gradient);
-  if constexpr (dim == 2)
-    if (axisymmetric())
-      physics::add_hoop_rate<dim>(rate, gradient, (velocities * values.shape(q))[1],
-                                  values.point(q)[1]);
-  return rate;
+  return strain_rate_of<dim>(values, velocities, q, axisymmetric());
+}
+
+template <int dim>
+Tensor3
+FormingProblem<dim>::strain_rate_at(const fem::FacetValues<dim>& values,
+                                    const typename fem::CellValues<dim>::Gradients& velocities,
+                                    int q) const {
+  return strain_rate_of<dim>(values, velocities, q, axisymmetric());
 }
 
 template <int dim>

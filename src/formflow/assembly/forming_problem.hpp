@@ -43,8 +43,10 @@ template <int dim> struct ContactPoint {
   Point<dim> tangential_velocity = Point<dim>::Zero(); ///< u_T
   Real contact_pressure = 0;                           ///< −σ_N = u_N/d_N
   Real mean_contact_pressure = 0;                      ///< σ̄_N, mollified over radius h
-  Real friction_threshold = 0; ///< τ_f = μ_f max(σ̄_N, 0); 0 where friction is off
-  Real friction_weight = 0;    ///< τ_f/√(|u_T|² + d_T²); exact friction: s·r (see below)
+  Real friction_threshold = 0; ///< τ_f of friction.law (μ_f max(σ̄_N, 0), m k, …); 0 where off
+  Real threshold_pressure_slope = 0; ///< ∂τ_f/∂σ̄_N at the point (Newton's dτ_f coupling)
+  Real shear_yield = 0;     ///< k = σ_p(max(ε̄̇, rate1))/√3 (for laws that need it, else 0)
+  Real friction_weight = 0; ///< τ_f/√(|u_T|² + d_T²); exact friction: s·r (see below)
   /// Exact friction only: the lagged part s·λ_T of the traction, a load in K u = F.
   Point<dim> friction_load = Point<dim>::Zero();
   /// λ_T = friction_weight·u_T + friction_load: the friction traction resisting the
@@ -211,6 +213,9 @@ public:
   /// ε̇ at point q of `values` for the cell's nodal `velocities`; in
   /// axisymmetry with the hoop rate u_r/r in the θθ (third) slot.
   Tensor3 strain_rate_at(const fem::CellValues<dim>& values,
+                         const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
+  /// The same at point q of a face (the cell's gradients there).
+  Tensor3 strain_rate_at(const fem::FacetValues<dim>& values,
                          const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
   /// The hoop rate u_r/r at point q (exactly 0 in plane strain), the part of
   /// ε̇_V = tr ε̇ beyond the in-plane divergence.

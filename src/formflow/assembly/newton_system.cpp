@@ -76,7 +76,7 @@ void FormingProblem<dim>::assemble_newton(
     coupling->n_local = mesh_.nodes_per_cell() * dim;
   }
   std::vector<ContactPoint<dim>> state = contact_state(u, friction_multipliers);
-  const bool with_friction = settings_.friction.mu > 0;
+  const bool with_friction = !physics::friction_vanishes(settings_.friction);
   const bool exact_friction = with_friction && has_exact_friction();
   if (exact_friction) {
     // Exact friction: traction proj(λ̂ + r u_T) at the given τ_f; the coupling
@@ -91,20 +91,24 @@ void FormingProblem<dim>::assemble_newton(
       exact_friction_point(given ? friction_multipliers->traction[k] : Point<dim>::Zero(),
                            augmentation(), state[k]);
       const bool slipping = thresholds[k] > 0 && !state[k].sticking;
-      if (!coupling || !slipping || !own_threshold_positive) continue;
-      coupling->threshold_slip[k] = settings_.friction.mu * state[k].friction_traction.normalized();
+      const Real slope = state[k].threshold_pressure_slope;
+      if (!coupling || !slipping || !own_threshold_positive || slope == 0) continue;
+      coupling->threshold_slip[k] = slope * state[k].friction_traction.normalized();
       coupling->has_friction = true;
     }
   }
   if (coupling && with_friction && !exact_friction) {
-    // dτ_f = μ_f dσ̄_N where τ_f > 0 (its own σ̄_N at u, read before the given
-    // thresholds replace it below).
+    // dτ_f = (∂τ_f/∂σ̄_N) dσ̄_N where τ_f > 0 (its own σ̄_N at u, read before the
+    // given thresholds replace it below): μ_f for Coulomb, 0 for Tresca, whose k(ε̄̇)
+    // is lagged (its slope σ_p′/√3 is α σ_p/ε̄̇ small for the rate-insensitive laws
+    // and zero below rate1, where the container's rigid billet slides).
     coupling->threshold_slip.assign(state.size(), Point<dim>::Zero());
     for (std::size_t k = 0; k < state.size(); ++k) {
-      if (state[k].friction_threshold <= 0) continue;
+      if (state[k].friction_threshold <= 0 || state[k].threshold_pressure_slope == 0) continue;
       const Real s = std::sqrt(state[k].tangential_velocity.squaredNorm() +
                                settings_.friction.d_t * settings_.friction.d_t);
-      coupling->threshold_slip[k] = settings_.friction.mu / s * state[k].tangential_velocity;
+      coupling->threshold_slip[k] =
+          state[k].threshold_pressure_slope / s * state[k].tangential_velocity;
       coupling->has_friction = true;
     }
   }

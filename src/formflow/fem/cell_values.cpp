@@ -40,6 +40,7 @@ FacetValues<dim>::FacetValues(int order, const QuadratureRule<dim - 1>& face_rul
     : order_(order), face_rule_(face_rule) {
   const int n_q = face_rule.size();
   shape_.resize(n_q);
+  gradients_.resize(n_q);
   jxw_.assign(n_q, 0.0);
   normals_.assign(n_q, Point<dim>::Zero());
   points_.assign(n_q, Point<dim>::Zero());
@@ -57,9 +58,10 @@ template <int dim> void FacetValues<dim>::reinit(const Gradients& cell_nodes, in
     for (int d = 0, f = 0; d < dim; ++d) xi[d] = (d == axis) ? side : face_rule_.points[q][f++];
     tabulate_shape<dim>(order_, xi, shape_[q], reference_gradients);
     const Tensor2<dim> jacobian = cell_nodes * reference_gradients.transpose();
+    const Tensor2<dim> inverse_transpose = jacobian.transpose().inverse();
+    gradients_[q].noalias() = inverse_transpose * reference_gradients;
     // Nanson: n dA = det J · J⁻ᵀ N dA_ref.
-    const Point<dim> scaled =
-        jacobian.determinant() * jacobian.transpose().inverse() * reference_normal;
+    const Point<dim> scaled = jacobian.determinant() * inverse_transpose * reference_normal;
     const Real measure = scaled.norm();
     normals_[q] = scaled / measure;
     jxw_[q] = face_rule_.weights[q] * measure;

@@ -61,8 +61,12 @@ public:
   void reinit(const Gradients& cell_nodes, int local_face);
 
   int n_points() const { return static_cast<int>(face_rule_.weights.size()); }
+  int n_nodes() const { return static_cast<int>(shape_.empty() ? 0 : shape_[0].size()); }
   /// Cell shape functions N_a at face point q (length n_nodes of the cell).
   const VectorX& shape(int q) const { return shape_[q]; }
+  /// Cell shape gradients ∂N_a/∂x_i at face point q, shape (dim, n_nodes): the strain
+  /// rate at a surface point (the Tresca threshold's flow stress there).
+  const Gradients& gradients(int q) const { return gradients_[q]; }
   /// Surface element: weight times |det J · J⁻ᵀ N_ref| (Nanson's formula).
   Real JxW(int q) const { return jxw_[q]; }
   const Point<dim>& normal(int q) const { return normals_[q]; }
@@ -81,6 +85,7 @@ private:
   int order_;
   QuadratureRule<dim - 1> face_rule_;
   std::vector<VectorX> shape_;
+  std::vector<Gradients> gradients_;
   std::vector<Real> jxw_;
   std::vector<Point<dim>> normals_;
   std::vector<Point<dim>> points_;

@@ -41,11 +41,13 @@ FacetValuesCache<dim>::FacetValuesCache(Index n_faces, FacetValues<dim> values,
     map(position, values);
     if (position == 0) {
       n_nodes_ = static_cast<int>(values.shape(0).size());
-      per_face_ = static_cast<std::size_t>(n_points_) * (n_nodes_ + 1 + 2 * dim);
+      per_face_ = static_cast<std::size_t>(n_points_) * ((1 + dim) * n_nodes_ + 1 + 2 * dim);
       data_.resize(per_face_ * static_cast<std::size_t>(n_faces));
     }
     Real* out = data_.data() + per_face_ * static_cast<std::size_t>(position);
     for (int q = 0; q < n_points_; ++q) out = std::copy_n(values.shape_[q].data(), n_nodes_, out);
+    for (int q = 0; q < n_points_; ++q)
+      out = std::copy_n(values.gradients_[q].data(), dim * n_nodes_, out);
     out = std::copy(values.jxw_.begin(), values.jxw_.end(), out);
     for (int q = 0; q < n_points_; ++q) out = std::copy_n(values.normals_[q].data(), dim, out);
     for (int q = 0; q < n_points_; ++q) out = std::copy_n(values.points_[q].data(), dim, out);
@@ -58,6 +60,10 @@ void FacetValuesCache<dim>::load(Index position, FacetValues<dim>& values) const
   for (int q = 0; q < n_points_; ++q, in += n_nodes_) {
     values.shape_[q].resize(n_nodes_);
     std::copy_n(in, n_nodes_, values.shape_[q].data());
+  }
+  for (int q = 0; q < n_points_; ++q, in += dim * n_nodes_) {
+    values.gradients_[q].resize(dim, n_nodes_);
+    std::copy_n(in, dim * n_nodes_, values.gradients_[q].data());
   }
   for (int q = 0; q < n_points_; ++q) values.jxw_[q] = *in++;
   for (int q = 0; q < n_points_; ++q, in += dim) std::copy_n(in, dim, values.normals_[q].data());

@@ -31,7 +31,7 @@ private:
   std::vector<Real> data_;
 };
 
-/// Shape values, JxW, normals and points of FacetValues for a list of faces
+/// Shape values, gradients, JxW, normals and points of FacetValues for a list of faces
 /// (the contact faces Γ3, by their position in that list).
 template <int dim> class FacetValuesCache {
 public:
@@ -46,7 +46,7 @@ public:
 
 private:
   int n_points_ = 0, n_nodes_ = 0;
-  std::size_t per_face_ = 0; ///< doubles per face: shapes, then JxW, normals, points
+  std::size_t per_face_ = 0; ///< doubles per face: shapes, gradients, then JxW, normals, points
   std::vector<Real> data_;
 };
 

@@ -4,6 +4,7 @@
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/mesh_memory.hpp"
+#include "formflow/io/problem_shape.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
 
 #include <fmt/format.h>
@@ -257,23 +258,12 @@ private:
             "would lock (complete rule) or leave σ_H undefined",
             "set formulation.type = \"mixed\" (e.g. with formulation.pressure = \"P1disc\"), "
             "or use penalty.d > 0");
-    const bool exact_friction =
-        case_.friction.regularization == physics::FrictionRegularization::None;
-    if (exact_friction && (case_.penalty.d == 0 || case_.penalty.d_n == 0))
-      blame({"friction.regularization", case_.penalty.d_n == 0 ? "penalty.dN" : "penalty.d"},
-            "exact friction (its own augmented-Lagrangian loop, scaled by 1/d_N) cannot yet be "
-            "combined with the exact constraints d = 0 or d_N = 0 (Uzawa steps)",
-            "use friction.regularization = \"regularized\", or penalty.d > 0 and penalty.dN > 0");
+    // The combinations no loop serves, from the capability table the run plan reads.
+    const auto loop = solvers::choose_loop(problem_shape(case_));
+    if (const auto* refused = std::get_if<solvers::Refusal>(&loop))
+      blame(std::vector<std::string>(refused->keys.begin(), refused->keys.end()), refused->message,
+            refused->hint);
     if (!mixed) return;
-    if (case_.symmetry == physics::Symmetry::Axisymmetric)
-      blame({"formulation.type", "geometry.symmetry"},
-            "the mixed formulation is plane only: its pressure term has no hoop part u_r/r",
-            "use formulation.type = \"penalty\" for axisymmetric runs");
-    if (pressure == PressureSpace::Q1 && exact_friction)
-      blame({"formulation.pressure", "friction.regularization"},
-            "exact friction (its augmented-Lagrangian loop runs the CHOLMOD secant solve) is not "
-            "wired to the Taylor–Hood saddle-point solve",
-            "use friction.regularization = \"regularized\", or formulation.pressure = \"P1disc\"");
     if (case_.element == fem::ElementKind::Q1 && pressure != PressureSpace::P0)
       blame(
           {"formulation.pressure", "mesh.element"},
@@ -292,9 +282,9 @@ private:
   }
 
   /// Throws for the key (of `names`) that was set last: it is the one to change.
-  [[noreturn]] void blame(std::initializer_list<std::string> names, const std::string& message,
+  [[noreturn]] void blame(const std::vector<std::string>& names, const std::string& message,
                           const std::string& hint) const {
-    std::string blamed = *names.begin();
+    std::string blamed = names.front();
     for (const std::string& name : names)
       if (origin(name).order > origin(blamed).order) blamed = name;
     const Origin where = origin(blamed);

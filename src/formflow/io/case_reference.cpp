@@ -139,7 +139,7 @@ std::string valid_values_text(const CaseKey& key) {
 std::string case_reference_markdown() {
   std::string text =
       "# Case file reference\n\n"
-      "<!-- Generated from src/formflow/io/case_keys.cpp by\n"
+      "<!-- Generated from src/formflow/io/keys/*_keys.cpp by\n"
       "     `build/formflow case-reference > docs/case-reference.md`; do not edit by hand. -->\n\n"
       "A case file is TOML with the sections below. Every key is optional and defaults to\n"
       "the paper's benchmark (SPEC §4); an unknown section or key is an error. Real-valued\n"

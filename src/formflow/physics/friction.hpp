@@ -3,6 +3,10 @@
 #pragma once
 
 #include "formflow/core/types.hpp"
+#include "formflow/physics/friction_laws/coulomb.hpp"
+#include "formflow/physics/friction_laws/hybrid.hpp"
+#include "formflow/physics/friction_laws/tresca.hpp"
+#include "formflow/physics/process.hpp"
 
 #include <cmath>
 #include <vector>
@@ -29,9 +33,32 @@ private:
   std::vector<Real> coefficients_;
 };
 
-/// Friction threshold τ_f = μ_f · max(σ̄_N, 0): a tensile mean pressure carries no friction.
-inline Real friction_threshold(Real mu, Real mean_contact_pressure) {
-  return mean_contact_pressure > 0 ? mu * mean_contact_pressure : 0.0;
+/// The registration of the friction laws: calls `visit` with the threshold object of
+/// friction.law (each has at(ThresholdPoint), vanishes(), needs_shear_yield). A new
+/// law is one header in physics/friction_laws/ plus one case here and a key entry.
+template <class Visit> decltype(auto) visit_threshold(const Friction& friction, Visit&& visit) {
+  switch (friction.law) {
+  case FrictionLaw::Tresca: return visit(TrescaThreshold{friction.m});
+  case FrictionLaw::Hybrid: return visit(HybridThreshold{friction.mu, friction.m});
+  case FrictionLaw::Coulomb: break;
+  }
+  return visit(CoulombThreshold{friction.mu});
+}
+
+/// τ_f and its slopes at `point` for `friction`'s law.
+inline ThresholdValue friction_threshold(const Friction& friction, const ThresholdPoint& point) {
+  return visit_threshold(friction, [&](const auto& law) { return law.at(point); });
+}
+
+/// True when the law needs the shear yield stress k at the contact points.
+inline bool needs_shear_yield(const Friction& friction) {
+  return visit_threshold(friction, [](const auto& law) { return law.needs_shear_yield; });
+}
+
+/// True when the threshold is zero at every point (μ = 0 Coulomb, m = 0 Tresca): friction
+/// is "on" where a part has a law whose threshold does not vanish.
+inline bool friction_vanishes(const Friction& friction) {
+  return visit_threshold(friction, [](const auto& law) { return law.vanishes(); });
 }
 
 /// Secant weight of the regularised friction term (eq. 3.15):

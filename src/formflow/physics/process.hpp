@@ -32,9 +32,17 @@ struct Penalty {
 /// (eq. 3.14), or exactly, by an augmented Lagrangian on the friction traction.
 enum class FrictionRegularization { Regularized, None };
 
-/// Nonlocal Coulomb friction (eq. 3.14–3.15) on the chosen parts of Γ3.
+/// Which threshold τ_f the friction law has (physics/friction_laws/*.hpp, registered in
+/// physics/friction.hpp visit_threshold): Coulomb μ max(σ̄_N, 0), Tresca m k, or the
+/// hybrid min of the two.
+enum class FrictionLaw { Coulomb, Tresca, Hybrid };
+
+/// Friction on the chosen parts of Γ3: a threshold (friction.law) times an enforcement
+/// (friction.regularization): the paper's regularised law (eq. 3.14–3.15) or the exact one.
 struct Friction {
+  FrictionLaw law = FrictionLaw::Coulomb;
   Real mu = 0.0;     ///< Coulomb coefficient μ_f ≥ 0
+  Real m = 0.0;      ///< Tresca friction factor, 0 ≤ m ≤ 1
   Real radius = 0.0; ///< mollifier radius h of σ̄_N; 0 = local pressure
   Real d_t = 1e-6;   ///< regularisation d_T > 0
   bool on_container = true;

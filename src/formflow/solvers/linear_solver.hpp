@@ -3,9 +3,11 @@
 #pragma once
 
 #include "formflow/assembly/sparsity.hpp"
+#include "formflow/solvers/linear_solver_kind.hpp"
 
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace formflow::solvers {
 
@@ -22,6 +24,15 @@ public:
   virtual bool solve(const VectorX& rhs, VectorX& solution) = 0;
   virtual std::string name() const = 0;
 };
+
+/// The key's spelling of `kind` ("cholmod", "umfpack").
+std::string_view linear_solver_name(LinearSolverKind kind);
+
+/// Whether `kind` can factorise matrices stored as `storage` (CHOLMOD LLᵀ: SPD only).
+bool can_serve(LinearSolverKind kind, MatrixStorage storage);
+
+/// The solver `kind` for matrices stored as `storage`; can_serve(kind, storage) holds.
+std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind, MatrixStorage storage);
 
 /// CHOLMOD supernodal LLᵀ through Eigen's CholmodSupport (BLAS-3 on supernodes).
 std::unique_ptr<LinearSolver> make_cholmod_solver();

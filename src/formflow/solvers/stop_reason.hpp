@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/core/types.hpp"
+#include "formflow/solvers/linear_solver_kind.hpp"
 
 #include <string_view>
 
@@ -37,6 +38,9 @@ struct IterationControl {
   /// Newton only: solve first on this many coarser meshes (sizes 2^L h, ..., 2h)
   /// and start from the last coarse solution (app/coarse_start.hpp); 0: no.
   int coarse_levels = 2;
+  /// solver.linear: the direct solver of the velocity systems (Taylor–Hood's saddle
+  /// point always takes an LU, UMFPACK).
+  LinearSolverKind linear = LinearSolverKind::Cholmod;
 };
 
 /// One line of the iteration history.

@@ -268,7 +268,8 @@ TEST_F(CaseFile, OverrideErrorsNameSetAndTheKey) {
     EXPECT_TRUE(has_text(error.what(), part));
   };
   check({"friction.muu", "0.1"}, "friction.muu", "did you mean `friction.mu`?");
-  check({"friction", "0.1"}, "friction", "`friction.mu`");
+  // The example is a key of that section (the nearest by edit distance).
+  check({"friction", "0.1"}, "friction", "e.g. `friction.");
   check({"friction.mu", "-1"}, "friction.mu", "≥ 0");
   check({"mesh.size", "fine"}, "mesh.size", "got string \"fine\"");
   check({"mesh.element", "Q3"}, "mesh.element", "\"Q1\", \"Q2\"");
@@ -348,7 +349,9 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"formulation.uzawa_max_steps", "7"},
       {"contact.normals", "\"nodes\""},
       {"contact.corner_angle", "30.0"},
+      {"friction.law", "\"hybrid\""},
       {"friction.mu", "0.15"},
+      {"friction.m", "0.4"},
       {"friction.radius", "0.5"},
       {"friction.on", "[\"die\"]"},
       {"friction.regularization", "\"none\""},
@@ -360,6 +363,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"solver.tolerance", "1e-06"},
       {"solver.max_iterations", "42"},
       {"solver.initial_rate", "0.5"},
+      {"solver.linear", "\"umfpack\""},
       {"solver.method", "\"secant\""},
       {"solver.newton_start", "0.2"},
       {"solver.coarse_levels", "2"},

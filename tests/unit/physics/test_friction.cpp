@@ -87,10 +87,11 @@ TEST(NonlocalAverage, NeighbourExactlyAtTheRadiusIsExcluded) {
 }
 
 TEST(FrictionThreshold, IsMuTimesMeanPressureAndZeroUnderTension) {
-  EXPECT_TRUE(approx(physics::friction_threshold(0.2, 3.5), 0.7, roundoff));
-  EXPECT_EQ(physics::friction_threshold(0.2, 0.0), 0.0);
-  EXPECT_EQ(physics::friction_threshold(0.2, -4.0), 0.0); // tensile: no contact, no friction
-  EXPECT_EQ(physics::friction_threshold(0.0, 5.0), 0.0);
+  EXPECT_TRUE(approx(physics::CoulombThreshold{0.2}.at({3.5, 0.0}).value, 0.7, roundoff));
+  EXPECT_EQ(physics::CoulombThreshold{0.2}.at({0.0, 0.0}).value, 0.0);
+  EXPECT_EQ(physics::CoulombThreshold{0.2}.at({-4.0, 0.0}).value,
+            0.0); // tensile: no contact, no friction
+  EXPECT_EQ(physics::CoulombThreshold{0.0}.at({5.0, 0.0}).value, 0.0);
 }
 
 TEST(FrictionWeight, IsThresholdOverRegularisedSlipSpeed) {

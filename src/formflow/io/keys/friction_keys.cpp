@@ -34,11 +34,29 @@ KeySpec friction_parts_key() {
 } // namespace
 
 std::vector<CaseKey> friction_keys() {
+  using physics::FrictionLaw;
   return {
+      // The registration of the friction laws (physics/friction.hpp visit_threshold).
+      enum_key(
+          "friction.law", "coulomb",
+          {{"coulomb", FrictionLaw::Coulomb},
+           {"tresca", FrictionLaw::Tresca},
+           {"hybrid", FrictionLaw::Hybrid}},
+          [](auto& c) -> auto& { return c.friction.law; })
+          .doc("threshold τ_f of the friction law: coulomb = μ_f max(σ̄_N, 0) (the paper's, "
+               "nonlocal with friction.radius); tresca = m k, k = σ_p(max(ε̄̇, rate1))/√3 the "
+               "shear yield stress at the surface point; hybrid = min(coulomb, tresca)"),
       real_key(
           "friction.mu", 0.0, [](auto& c) -> auto& { return c.friction.mu; })
           .at_least(0)
-          .doc("Coulomb coefficient μ_f of the nonlocal friction law τ_f = μ_f σ̄_N"),
+          .doc("Coulomb coefficient μ_f of the nonlocal friction law τ_f = μ_f σ̄_N "
+               "(friction.law = \"coulomb\" or \"hybrid\")"),
+      real_key(
+          "friction.m", 0.0, [](auto& c) -> auto& { return c.friction.m; })
+          .at_least(0)
+          .at_most(1)
+          .doc("Tresca friction factor m of τ_f = m k (friction.law = \"tresca\" or "
+               "\"hybrid\"): 0 frictionless, 1 the interface shears like the metal"),
       real_key(
           "friction.radius", 0.0, [](auto& c) -> auto& { return c.friction.radius; })
           .at_least(0)

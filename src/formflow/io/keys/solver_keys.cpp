@@ -24,6 +24,16 @@ std::vector<CaseKey> solver_keys() {
           .doc("ε̄̇ whose secant viscosity σ_p(ε̄̇)/ε̄̇ gives the constant-viscosity first "
                "iterate"),
       enum_key(
+          "solver.linear", "cholmod",
+          {{"cholmod", solvers::LinearSolverKind::Cholmod},
+           {"umfpack", solvers::LinearSolverKind::Umfpack}},
+          [](auto& c) -> auto& { return c.solver.linear; })
+          .constraint("cholmod cannot serve the Taylor–Hood saddle point (formulation.pressure = "
+                      "\"Q1\"), which takes umfpack unless cholmod is asked for")
+          .doc("direct solver of the linear systems: cholmod (supernodal Cholesky LLᵀ of the "
+               "symmetric positive definite velocity systems) or umfpack (LU; also the "
+               "indefinite Taylor–Hood saddle point)"),
+      enum_key(
           "solver.method", "newton",
           {{"newton", solvers::NonlinearMethod::Newton},
            {"secant", solvers::NonlinearMethod::Secant}},

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// The solve plan of a case, from the capability table.
+#include "formflow/app/solve_plan.hpp"
+
+#include "formflow/core/error.hpp"
+#include "formflow/io/problem_shape.hpp"
+
+namespace formflow::app {
+
+SolvePlan make_solve_plan(const io::Case& case_) {
+  SolvePlan plan;
+  plan.shape = io::problem_shape(case_);
+  const auto choice = solvers::choose_loop(plan.shape);
+  FF_ASSERT(std::holds_alternative<solvers::LoopKind>(choice),
+            "load_case refuses the combinations no loop serves");
+  plan.loop = std::holds_alternative<solvers::LoopKind>(choice)
+                  ? std::get<solvers::LoopKind>(choice)
+                  : solvers::LoopKind::Secant;
+  plan.linear = solvers::linear_solver_for(plan.loop, plan.shape);
+  plan.coarse_levels = plan.is_newton() ? case_.solver.coarse_levels : 0;
+  plan.friction_augmentation = plan.loop == solvers::LoopKind::AugmentedNewton
+                                   ? case_.friction.newton_augmentation
+                                   : case_.friction.augmentation;
+  return plan;
+}
+
+std::string SolvePlan::name(bool coarse_start_ran) const {
+  std::string text = solvers::loop_name(loop, shape);
+  if (coarse_start_ran) text += " from coarse meshes";
+  return text;
+}
+
+} // namespace formflow::app

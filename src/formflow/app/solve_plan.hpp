@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// The solve plan: which loop, linear solver, coarse levels and multiplier
+// augmentation a case runs with, built once from the case (issue 13).
+#pragma once
+
+#include "formflow/io/case.hpp"
+#include "formflow/solvers/capabilities.hpp"
+
+#include <string>
+
+namespace formflow::app {
+
+struct SolvePlan {
+  solvers::ProblemShape shape;
+  solvers::LoopKind loop = solvers::LoopKind::Newton;
+  solvers::LinearSolverKind linear = solvers::LinearSolverKind::Cholmod;
+  /// Mesh sequencing (solver.coarse_levels) for the Newton loops; 0 for the others.
+  int coarse_levels = 0;
+  /// Exact friction's augmentation r in units of 1/d_N: friction.newton_augmentation for
+  /// the Newton loop (its tangent carries the stick penalty), friction.augmentation for
+  /// the secant one.
+  Real friction_augmentation = 1.0;
+
+  bool is_newton() const {
+    return loop == solvers::LoopKind::Newton || loop == solvers::LoopKind::AugmentedNewton;
+  }
+  /// summary.json `method`: the loop's name, "from coarse meshes" when a coarse start ran.
+  std::string name(bool coarse_start_ran) const;
+};
+
+/// The plan of a validated case (load_case refused what no loop serves).
+SolvePlan make_solve_plan(const io::Case& case_);
+
+} // namespace formflow::app

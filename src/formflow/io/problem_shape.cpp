@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// The case seen by the capability table.
+#include "formflow/io/problem_shape.hpp"
+
+namespace formflow::io {
+
+solvers::ProblemShape problem_shape(const Case& case_) {
+  solvers::ProblemShape shape;
+  shape.mixed = case_.formulation.type == assembly::FormulationType::Mixed;
+  shape.global_pressure = shape.mixed && !fem::is_discontinuous(case_.formulation.pressure);
+  shape.exact_incompressibility = case_.penalty.d == 0;
+  shape.exact_contact = case_.penalty.d_n == 0;
+  shape.exact_friction = case_.friction.regularization == physics::FrictionRegularization::None;
+  shape.axisymmetric = case_.symmetry == physics::Symmetry::Axisymmetric;
+  shape.method = case_.solver.method;
+  shape.linear = case_.solver.linear;
+  shape.linear_given = case_.key_locations.count("solver.linear") > 0;
+  return shape;
+}
+
+} // namespace formflow::io

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// The capability table of the nonlinear loops.
+#include "formflow/solvers/capabilities.hpp"
+
+#include "formflow/solvers/linear_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <optional>
+
+namespace formflow::solvers {
+
+namespace {
+
+/// The combinations that no loop serves yet, each with its reason.
+std::optional<Refusal> refusal(const ProblemShape& shape) {
+  if (shape.exact_friction && (shape.exact_incompressibility || shape.exact_contact))
+    return Refusal{{"friction.regularization", shape.exact_contact ? "penalty.dN" : "penalty.d"},
+                   "exact friction (its own augmented-Lagrangian loop, scaled by 1/d_N) cannot "
+                   "yet be combined with the exact constraints d = 0 or d_N = 0 (Uzawa steps)",
+                   "use friction.regularization = \"regularized\", or penalty.d > 0 and "
+                   "penalty.dN > 0"};
+  if (shape.mixed && shape.axisymmetric)
+    return Refusal{{"formulation.type", "geometry.symmetry"},
+                   "the mixed formulation is plane only: its pressure term has no hoop part u_r/r",
+                   "use formulation.type = \"penalty\" for axisymmetric runs"};
+  if (shape.global_pressure && shape.exact_friction)
+    return Refusal{{"formulation.pressure", "friction.regularization"},
+                   "exact friction (its augmented-Lagrangian loop runs the CHOLMOD secant solve) "
+                   "is not wired to the Taylor–Hood saddle-point solve",
+                   "use friction.regularization = \"regularized\", or formulation.pressure = "
+                   "\"P1disc\""};
+  return std::nullopt;
+}
+
+/// The loop of a shape that is served (refusal(shape) is empty).
+LoopKind served_loop(const ProblemShape& shape) {
+  const bool newton = shape.method == NonlinearMethod::Newton;
+  // Newton's system: the penalty problem, or the mixed one with its pressure
+  // condensed at d > 0 (a fixed matrix per cell, linear in u).
+  const bool condensed =
+      !shape.exact_incompressibility && !shape.exact_contact && !shape.global_pressure;
+  if (shape.exact_friction)
+    return newton && condensed ? LoopKind::AugmentedNewton : LoopKind::AugmentedSecant;
+  if (shape.global_pressure) return LoopKind::SaddlePointSecant;
+  if ((shape.mixed && shape.exact_incompressibility) || shape.exact_contact)
+    return LoopKind::UzawaSecant;
+  return newton ? LoopKind::Newton : LoopKind::Secant;
+}
+
+} // namespace
+
+std::variant<LoopKind, Refusal> choose_loop(const ProblemShape& shape) {
+  if (auto refused = refusal(shape)) return std::move(*refused);
+  const LoopKind loop = served_loop(shape);
+  if (shape.linear_given && !can_serve(shape.linear, loop_storage(loop)))
+    return Refusal{{"solver.linear", "formulation.pressure"},
+                   fmt::format("{} (Cholesky LLᵀ) cannot factorise the indefinite Taylor–Hood "
+                               "saddle-point system",
+                               linear_solver_name(shape.linear)),
+                   "use solver.linear = \"umfpack\" (LU), or a discontinuous pressure "
+                   "(formulation.pressure = \"P1disc\" or \"P0\")"};
+  return loop;
+}
+
+MatrixStorage loop_storage(LoopKind loop) {
+  return loop == LoopKind::SaddlePointSecant ? MatrixStorage::Full : MatrixStorage::SymmetricLower;
+}
+
+LinearSolverKind linear_solver_for(LoopKind loop, const ProblemShape& shape) {
+  return can_serve(shape.linear, loop_storage(loop)) ? shape.linear : LinearSolverKind::Umfpack;
+}
+
+std::string loop_name(LoopKind loop, const ProblemShape& shape) {
+  switch (loop) {
+  case LoopKind::Secant: return "secant";
+  case LoopKind::Newton: return "newton";
+  case LoopKind::UzawaSecant: return "uzawa around secant";
+  case LoopKind::SaddlePointSecant:
+    return fmt::format("saddle point ({}) {}around secant",
+                       linear_solver_name(linear_solver_for(loop, shape)),
+                       shape.exact_contact ? "with uzawa contact " : "");
+  case LoopKind::AugmentedSecant: return "augmented-lagrangian friction around secant";
+  case LoopKind::AugmentedNewton: return "augmented-lagrangian friction around newton";
+  }
+  return "unknown";
+}
+
+} // namespace formflow::solvers
