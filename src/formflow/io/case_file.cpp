@@ -259,7 +259,9 @@ private:
             "set formulation.type = \"mixed\" (e.g. with formulation.pressure = \"P1disc\"), "
             "or use penalty.d > 0");
     // The combinations no loop serves, from the capability table the run plan reads.
-    const auto loop = solvers::choose_loop(problem_shape(case_));
+    solvers::ProblemShape shape = problem_shape(case_);
+    shape.linear_given = origins_.count("solver.linear") > 0; // key_locations come at finish()
+    const auto loop = solvers::choose_loop(shape);
     if (const auto* refused = std::get_if<solvers::Refusal>(&loop))
       blame(std::vector<std::string>(refused->keys.begin(), refused->keys.end()), refused->message,
             refused->hint);
