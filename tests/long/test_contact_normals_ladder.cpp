@@ -23,7 +23,7 @@ io::Case extrusion_case(double degrees, double exit_half_height, double size) {
   case_.geometry.die = mesh::DieShape::Wedge;
   case_.geometry.die_angle = degrees;
   case_.mesh_size = size;
-  case_.material.alpha = 1e-4;
+  case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   case_.contact.normals = assembly::ContactNormals::Nodes;
   return case_;

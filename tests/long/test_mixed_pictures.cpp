@@ -51,7 +51,7 @@ TEST(MixedPictures, CheckerboardOfQ1P0AndItsFilterAndTheSmoothQ2P1discPressure) 
   const io::Case q1p0_case = sticking_case(fem::ElementKind::Q1, fem::PressureSpace::P0, 1e-3);
   const app::Simulation q1p0 = app::simulate(q1p0_case);
   const VectorX raw = -q1p0.results.fields.cell_hydrostatic_stress;
-  const VectorX filtered = assembly::filter_checkerboard(q1p0.mesh, size, raw);
+  const VectorX filtered = testing::filter_checkerboard(q1p0.mesh, size, raw);
   save(q1p0_case, q1p0, "mixed_q1p0_cells", [&](const auto& canvas, const auto& data) {
     io::plot::draw_cell_pressure(canvas, data, raw,
                                  "Q1–P0 cell pressure (= Q1, 1×1 rule), d = 1e-3");

@@ -33,7 +33,7 @@ TEST(ContactNormalsRuns, PlaneWedgeExtrusionOnSixteenRowsIsWithinFivePercentOfHi
   case_.geometry.die = mesh::DieShape::Wedge;
   case_.geometry.die_angle = 15;
   case_.mesh_size = 1.0 / 16;
-  case_.material.alpha = 1e-4;
+  case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   case_.contact.normals = assembly::ContactNormals::Nodes;
   const post::Results results = app::simulate(case_).results;
@@ -60,7 +60,7 @@ TEST(ContactNormalsRuns, FrictionlessDieLandLeavesTheDrawingStressAtHillsValue) 
   case_.geometry.die_angle = 15;
   case_.geometry.land_length = 0.25;
   case_.mesh_size = 1.0 / 8;
-  case_.material.alpha = 1e-4;
+  case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   case_.contact.normals = assembly::ContactNormals::Nodes;
   const post::Results results = app::simulate(case_).results;

@@ -24,7 +24,7 @@ io::Case wedge_case(physics::ProcessType type, double degrees, double exit_half_
   case_.geometry.die = mesh::DieShape::Wedge;
   case_.geometry.die_angle = degrees;
   case_.mesh_size = size;
-  case_.material.alpha = 1e-4;
+  case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   return case_;
 }

@@ -67,7 +67,8 @@ TEST(TrescaFriction, LoadRisesWithTheFactorBelowTheRigidSlidingBound) {
   // and by the penalty terms' power (1/d) ε̇_V², (1/d_N) u_N² (twice their potential).
   // Those margins are the measured penalty powers of u⁰ plus α p_0.
   const double slip = container_slip_integral(frictionless);
-  const double alpha = io::load_case("", {}).material.alpha;
+  const double alpha =
+      io::load_case("", {}).material.parameters_of<physics::PiecewisePower>().alpha;
   const double margin =
       alpha * p0 +
       (frictionless.power.volumetric_penalty + frictionless.power.contact_penalty) / height;

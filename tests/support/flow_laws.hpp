@@ -9,9 +9,9 @@ namespace formflow::testing {
 /// σ_p = √3 K (√3 ε̄̇)^m.
 inline physics::FlowLaw norton_hoff(double k, double m) {
   physics::FlowLaw law;
-  law.kind = physics::FlowLawKind::NortonHoff;
-  law.K = k;
-  law.m = m;
+  law.model = physics::NortonHoff{};
+  law.as<physics::NortonHoff>().K = k;
+  law.as<physics::NortonHoff>().m = m;
   return law;
 }
 
@@ -19,23 +19,23 @@ inline physics::FlowLaw norton_hoff(double k, double m) {
 /// 700 °C, strain 0.5).
 inline physics::FlowLaw hensel_spittel() {
   physics::FlowLaw law;
-  law.kind = physics::FlowLawKind::HenselSpittel;
-  law.hs_A = 300.0;
-  law.hs_m1 = -0.002;
-  law.hs_m2 = 0.1;
-  law.hs_m3 = 0.05;
-  law.hs_m4 = -0.01;
-  law.hs_m8 = 1e-4;
-  law.temperature = 700.0;
-  law.strain = 0.5;
+  law.model = physics::HenselSpittel{};
+  law.as<physics::HenselSpittel>().A = 300.0;
+  law.as<physics::HenselSpittel>().m1 = -0.002;
+  law.as<physics::HenselSpittel>().m2 = 0.1;
+  law.as<physics::HenselSpittel>().m3 = 0.05;
+  law.as<physics::HenselSpittel>().m4 = -0.01;
+  law.as<physics::HenselSpittel>().m8 = 1e-4;
+  law.as<physics::HenselSpittel>().temperature = 700.0;
+  law.as<physics::HenselSpittel>().strain = 0.5;
   return law;
 }
 
 /// σ_p = σ₀ at every rate.
 inline physics::FlowLaw perfectly_plastic(double sigma0) {
   physics::FlowLaw law;
-  law.kind = physics::FlowLawKind::PerfectlyPlastic;
-  law.sigma0 = sigma0;
+  law.model = physics::PerfectlyPlastic{};
+  law.as<physics::PerfectlyPlastic>().sigma0 = sigma0;
   return law;
 }
 

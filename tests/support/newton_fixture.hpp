@@ -27,8 +27,8 @@ inline VectorX random_vector(Index n, unsigned seed) {
 /// tests, so that ν′ is large and smooth (the break points would make FD one-sided).
 inline physics::FlowLaw sensitive_law() {
   physics::FlowLaw law;
-  law.A = 2.0;
-  law.alpha = 0.25;
+  law.as<physics::PiecewisePower>().A = 2.0;
+  law.as<physics::PiecewisePower>().alpha = 0.25;
   law.rate1 = 1e-8;
   law.rate2 = 1e8;
   return law;

@@ -26,7 +26,7 @@ inline io::Case manufactured_case(fem::ElementKind element, Real size, mesh::Dis
   case_.mesh_size = size;
   case_.volumetric_points = element == fem::ElementKind::Q1 ? 1 : 2;
   case_.distortion = {distortion, distortion == mesh::Distortion::Random ? 0.2 : 0.1, 1};
-  if (!nonlinear) case_.material.alpha = 1.0;
+  if (!nonlinear) case_.material.parameters_of<physics::PiecewisePower>().alpha = 1.0;
   case_.solver.tolerance = 1e-8;
   case_.solver.max_iterations = 1000;
   return case_;

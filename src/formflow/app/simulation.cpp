@@ -21,7 +21,7 @@ namespace formflow::app {
 assembly::ProblemSettings problem_settings(const io::Case& case_) {
   assembly::ProblemSettings settings;
   settings.process = case_.process;
-  settings.law = case_.material;
+  settings.law = case_.material.selected();
   settings.viscous_strain = case_.viscous_strain;
   settings.penalty = case_.penalty;
   settings.friction = case_.friction;

@@ -23,7 +23,7 @@ namespace formflow::assembly {
 /// Everything the discrete problem depends on besides the mesh.
 struct ProblemSettings {
   physics::Process process;
-  physics::PowerLaw law;
+  physics::FlowLaw law;
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
   physics::Penalty penalty;
   physics::Friction friction;

@@ -425,7 +425,7 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
       const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
       Tensor3& w = duals[cell * n_q + q];
       // Where the law is linear the dual stress is just ν ė: nothing to gain.
-      if (next_eps <= law.rate1 || next_eps >= law.rate2) {
+      if (law.is_linear_at(next_eps)) {
         w = law.secant_viscosity(next_eps) * next_dev;
         continue;
       }
@@ -467,7 +467,7 @@ void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& n
       const Tensor3 next_dev = physics::deviator(strain_rate_at(values, next_velocities, q));
       const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
       Tensor3& w = duals[cell * n_q + q];
-      if (next_eps <= law.rate1 || next_eps >= law.rate2) { // linear law: w = ν ė exactly
+      if (law.is_linear_at(next_eps)) { // linear law: w = ν ė exactly
         w = law.secant_viscosity(next_eps) * next_dev;
         continue;
       }

@@ -30,8 +30,8 @@ struct Case {
   physics::Symmetry symmetry = physics::Symmetry::Plane;
   fem::ElementKind element = fem::ElementKind::Q2;
   Real mesh_size = 1.0;
-  int volumetric_points = 2; ///< Gauss points per direction of the volumetric (penalty) term
-  physics::PowerLaw material;
+  int volumetric_points = 2;       ///< Gauss points per direction of the volumetric (penalty) term
+  physics::FlowLawChoice material; ///< the law by name, its range and every law's parameters
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
   assembly::Formulation formulation; ///< penalty or mixed; exact-constraint (Uzawa) settings
   physics::Friction friction;

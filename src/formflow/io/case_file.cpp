@@ -233,7 +233,7 @@ private:
 
   /// Condition (2.11) of the whole law; blames the material key set last.
   void check_flow_law() const {
-    const auto violation = physics::check_flow_law(case_.material);
+    const auto violation = physics::check_flow_law(case_.material.selected());
     if (!violation) return;
     std::string blamed = "material.law";
     for (const CaseKey& key : case_keys())

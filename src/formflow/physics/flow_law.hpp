@@ -1,68 +1,98 @@
 // SPDX-License-Identifier: MIT
 // The uniaxial yield limit σ_p(ε̄̇), its secant viscosity and derivative (SPEC §1,
-// eq. 5.4), for the paper's piecewise power law and the other laws of issue 6.
+// eq. 5.4), for every flow law (one type each in physics/flow_laws/).
 #pragma once
 
 #include "formflow/core/types.hpp"
+#include "formflow/physics/flow_laws/hensel_spittel.hpp"
+#include "formflow/physics/flow_laws/norton_hoff.hpp"
+#include "formflow/physics/flow_laws/perfectly_plastic.hpp"
+#include "formflow/physics/flow_laws/piecewise_power.hpp"
 
 #include <optional>
 #include <string>
+#include <string_view>
+#include <tuple>
+#include <variant>
 
 namespace formflow::physics {
 
-/// Which law gives σ_p on [rate1, rate2]; outside that range every law is
-/// continued linearly through the origin, as the paper's (5.4) is, so that the
-/// secant viscosity σ_p/ε̄̇ stays bounded (condition 2.11). Inside the range all
-/// of them are a power law C ε̄̇^m; they differ in how C and m are given:
-///  * PiecewisePower (paper eq. 5.4): C = A, m = α.
-///  * NortonHoff: s = 2K(√3 ε̄̇)^(m−1) ė, i.e. σ_p = √3 K (√3 ε̄̇)^m; m = 1 is
-///    linear viscous (σ_p = 3K ε̄̇, K the shear viscosity).
-///  * HenselSpittel, isothermal at temperature T and at a fixed reference strain ε
-///    (the steady-state model carries no strain history):
-///    σ_p = A e^(m1 T) ε^m2 e^(m4/ε) ε̄̇^(m3 + m8 T).
-///  * PerfectlyPlastic (rate independent): σ_p = σ0, m = 0; σ_p′ = 0 in the
-///    plastic range, so (2.11) holds there only with η1 = 0 (the α → 0 limit of 5.4).
-enum class FlowLawKind { PiecewisePower, NortonHoff, HenselSpittel, PerfectlyPlastic };
+/// The registration of the flow laws: every type of physics/flow_laws/ in one list
+/// (the key material.law takes their `name`s). A law type has `name`,
+/// `rate_independent` and `at(rate) → FlowResponse` on [rate1, rate2].
+template <class... Laws> struct FlowLawList {
+  using Variant = std::variant<Laws...>;
+  using Tuple = std::tuple<Laws...>;
+};
+using FlowLaws = FlowLawList<PiecewisePower, NortonHoff, HenselSpittel, PerfectlyPlastic>;
 
+/// One law evaluated at a point: the law of `model` on [rate1, rate2], continued
+/// linearly through the origin outside it, as the paper's (5.4) is, so that the
+/// secant viscosity σ_p/ε̄̇ stays bounded (condition 2.11). The solvers ask this
+/// object, never the law's parameters.
 struct FlowLaw {
-  FlowLawKind kind = FlowLawKind::PiecewisePower;
-  Real A = 1.7320508075688772;      ///< √3: shear yield k = σ_p/√3 ≈ 1 (PiecewisePower)
-  Real alpha = 1e-3;                ///< strain-rate sensitivity, 0 < α ≤ 1 (PiecewisePower)
-  Real rate1 = 1e-3;                ///< lower limit of the power-law range
-  Real rate2 = 1e3;                 ///< upper limit of the power-law range
-  Real K = 1.0;                     ///< Norton–Hoff consistency (stress·time^m)
-  Real m = 0.1;                     ///< Norton–Hoff rate sensitivity, 0 < m ≤ 1
-  Real sigma0 = 1.7320508075688772; ///< PerfectlyPlastic yield stress
-  /// Hensel–Spittel parameters (see FlowLawKind) and the state it is evaluated at.
-  Real hs_A = 1.7320508075688772, hs_m1 = 0.0, hs_m2 = 0.0, hs_m3 = 0.1, hs_m4 = 0.0, hs_m8 = 0.0,
-       temperature = 0.0, strain = 1.0;
+  FlowLaws::Variant model = PiecewisePower{};
+  Real rate1 = 1e-3; ///< lower limit of the law's range
+  Real rate2 = 1e3;  ///< upper limit of the law's range
 
-  /// C of σ_p = C ε̄̇^m on [rate1, rate2].
-  Real coefficient() const;
-  /// m of σ_p = C ε̄̇^m on [rate1, rate2].
-  Real exponent() const;
-
-  /// Uniaxial yield limit σ_p at equivalent strain rate `rate` ≥ 0.
-  Real yield_stress(Real rate) const;
+  /// The law's own response at a rate clamped to [rate1, rate2].
+  FlowResponse response(Real rate) const {
+    const Real clamped = rate <= rate1 ? rate1 : (rate >= rate2 ? rate2 : rate);
+    return std::visit([clamped](const auto& law) { return law.at(clamped); }, model);
+  }
   /// Secant viscosity σ_p(ε̄̇)/ε̄̇, finite at ε̄̇ = 0 (the linear branch).
-  Real secant_viscosity(Real rate) const;
+  Real secant_viscosity(Real rate) const { return response(rate).viscosity; }
+  /// Uniaxial yield limit σ_p at equivalent strain rate `rate` ≥ 0.
+  Real yield_stress(Real rate) const { return secant_viscosity(rate) * rate; }
+  /// True where σ_p is linear in ε̄̇ (outside (rate1, rate2)): there σ_p′ = ν and the
+  /// secant matrix is already the tangent.
+  bool is_linear_at(Real rate) const { return rate <= rate1 || rate >= rate2; }
   /// dσ_p/dε̄̇ (one-sided at the break points: the linear branch's value there).
-  Real yield_stress_derivative(Real rate) const;
-  /// secant_viscosity(rate) and yield_stress_derivative(rate) from one power
-  /// (equal to round-off): the Newton loops need both at every point.
+  Real yield_stress_derivative(Real rate) const {
+    const FlowResponse at = response(rate);
+    return rate < rate1 || rate > rate2 ? at.viscosity : at.slope;
+  }
+  /// secant_viscosity(rate) and yield_stress_derivative(rate) from one evaluation.
   struct SecantAndDerivative {
     Real viscosity, derivative;
   };
-  SecantAndDerivative secant_viscosity_and_derivative(Real rate) const;
+  SecantAndDerivative secant_viscosity_and_derivative(Real rate) const {
+    const FlowResponse at = response(rate);
+    if (rate < rate1 || rate > rate2) return {at.viscosity, at.viscosity};
+    return {at.viscosity, at.slope};
+  }
   /// Plastic dissipation density σ_p(ε̄̇)·ε̄̇.
   Real dissipation(Real rate) const { return yield_stress(rate) * rate; }
+  /// The law's name (its material.law spelling).
+  std::string_view name() const {
+    return std::visit([](const auto& law) { return std::string_view(law.name); }, model);
+  }
+  bool is_rate_independent() const {
+    return std::visit([](const auto& law) { return law.rate_independent; }, model);
+  }
+  /// The parameters of law `Law`, which `model` holds.
+  template <class Law> Law& as() { return std::get<Law>(model); }
+  template <class Law> const Law& as() const { return std::get<Law>(model); }
 };
 
-/// The paper's law keeps its historical name.
-using PowerLaw = FlowLaw;
+/// What the case file says of the material: the law by name, its range and the
+/// parameters of every law (keys may come in any order; only the named one is used).
+struct FlowLawChoice {
+  std::string_view law = PiecewisePower::name;
+  Real rate1 = 1e-3;
+  Real rate2 = 1e3;
+  FlowLaws::Tuple parameters;
+
+  template <class Law> Law& parameters_of() { return std::get<Law>(parameters); }
+  template <class Law> const Law& parameters_of() const { return std::get<Law>(parameters); }
+  /// The law named `law` with its parameters and range.
+  FlowLaw selected() const;
+  /// Shorthands of selected(), for code that evaluates the case's law directly.
+  Real yield_stress(Real rate) const { return selected().yield_stress(rate); }
+};
 
 /// Checks condition (2.11), η1 ≤ σ_p′(ε̄̇) ≤ σ_p(ε̄̇)/ε̄̇ ≤ η2 with η1 > 0 (η1 = 0
-/// allowed for the rate-independent law only), on a logarithmic sweep over
+/// allowed for a rate-independent law only), on a logarithmic sweep over
 /// [rate1/10, 10 rate2] that includes the break points. Returns what is violated, or
 /// std::nullopt. A law that fails is refused at load time (io/case_file.cpp).
 std::optional<std::string> check_flow_law(const FlowLaw& law);

@@ -55,7 +55,7 @@ std::array<Tensor2<2>, 2> StreamFunctionField::hessians(const Point<2>& x) const
   return {h0, h1};
 }
 
-Point<2> manufactured_body_force(const PowerLaw& law, const StreamFunctionField& field,
+Point<2> manufactured_body_force(const FlowLaw& law, const StreamFunctionField& field,
                                  const Point<2>& x) {
   const Tensor3 rate = strain_rate<2>(field.gradient(x));
   const Tensor3 dev = deviator(rate);

@@ -46,7 +46,7 @@ private:
 /// field's u: then b(u; u, v) = ∫ f·v for every v vanishing on the boundary,
 /// since ε̇_V(u) = 0 removes the penalty term. Evaluated by the chain rule
 /// with the field's exact second derivatives; needs ε̄̇(u(x)) > 0.
-Point<2> manufactured_body_force(const PowerLaw& law, const StreamFunctionField& field,
+Point<2> manufactured_body_force(const FlowLaw& law, const StreamFunctionField& field,
                                  const Point<2>& x);
 
 } // namespace formflow::physics

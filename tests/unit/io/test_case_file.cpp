@@ -68,8 +68,8 @@ TEST_F(CaseFile, DefaultsAreThePapersBenchmark) {
   EXPECT_EQ(case_.element, fem::ElementKind::Q2);
   EXPECT_EQ(case_.mesh_size, 1.0);
   EXPECT_EQ(case_.volumetric_points, 2);
-  EXPECT_EQ(case_.material.A, std::sqrt(3.0));
-  EXPECT_EQ(case_.material.alpha, 1e-3);
+  EXPECT_EQ(case_.material.parameters_of<physics::PiecewisePower>().A, std::sqrt(3.0));
+  EXPECT_EQ(case_.material.parameters_of<physics::PiecewisePower>().alpha, 1e-3);
   EXPECT_EQ(case_.material.rate1, 1e-3);
   EXPECT_EQ(case_.material.rate2, 1e3);
   EXPECT_EQ(case_.viscous_strain, physics::ViscousStrain::Full);
@@ -150,7 +150,7 @@ TEST_F(CaseFile, IntegersAreAcceptedForRealKeys) {
   const Case case_ =
       load_case(write("[process]\nspeed = 2\n[material]\nA = 1\n[mesh]\nsize = 5\n"), {});
   EXPECT_EQ(case_.process.speed, 2.0);
-  EXPECT_EQ(case_.material.A, 1.0);
+  EXPECT_EQ(case_.material.parameters_of<physics::PiecewisePower>().A, 1.0);
   EXPECT_EQ(case_.mesh_size, 5.0);
 }
 

@@ -315,7 +315,8 @@ TEST_F(ResultsFiles, NonFiniteSummaryValueThrowsNamingTheKey) {
   results_.history[3].pressure = std::numeric_limits<double>::infinity();
   EXPECT_THROW(io::summary_json(case_, results_), InternalError);
   results_.history[3].pressure = 1.0;
-  case_.material.alpha = std::numeric_limits<double>::quiet_NaN(); // inside the "case" object
+  case_.material.parameters_of<physics::PiecewisePower>().alpha =
+      std::numeric_limits<double>::quiet_NaN(); // inside the "case" object
   try {
     io::summary_json(case_, results_);
     FAIL() << "no exception";

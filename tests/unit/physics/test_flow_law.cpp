@@ -12,17 +12,17 @@
 namespace formflow::testing {
 namespace {
 
-using physics::PowerLaw;
+using physics::FlowLaw;
 
 /// The paper's law and a strongly rate-sensitive one, where mistakes in the
 /// exponent or the branch limits show up clearly.
-std::vector<PowerLaw> laws() {
-  PowerLaw sensitive;
-  sensitive.A = 2.0;
-  sensitive.alpha = 0.2;
+std::vector<FlowLaw> laws() {
+  FlowLaw sensitive;
+  sensitive.as<physics::PiecewisePower>().A = 2.0;
+  sensitive.as<physics::PiecewisePower>().alpha = 0.2;
   sensitive.rate1 = 0.1;
   sensitive.rate2 = 10.0;
-  return {PowerLaw{}, sensitive};
+  return {FlowLaw{}, sensitive};
 }
 
 /// Logarithmic sweep over twelve decades, through both break points.
@@ -34,24 +34,29 @@ std::vector<double> sweep() {
 
 TEST(PowerLaw, DefaultsAreThePaperValues) {
   // SPEC §1: A = √3, α = 1e-3, ε̄̇1 = 1e-3, ε̄̇2 = 1e3.
-  const PowerLaw law;
-  EXPECT_TRUE(approx(law.A, std::sqrt(3.0), 1e-15));
-  EXPECT_EQ(law.alpha, 1e-3);
+  const FlowLaw law;
+  EXPECT_TRUE(approx(law.as<physics::PiecewisePower>().A, std::sqrt(3.0), 1e-15));
+  EXPECT_EQ(law.as<physics::PiecewisePower>().alpha, 1e-3);
   EXPECT_EQ(law.rate1, 1e-3);
   EXPECT_EQ(law.rate2, 1e3);
 }
 
 TEST(PowerLaw, PowerLawInsideTheRange) {
-  for (const PowerLaw& law : laws())
+  for (const FlowLaw& law : laws())
     for (double rate : {law.rate1 * 1.5, std::sqrt(law.rate1 * law.rate2), law.rate2 / 1.5})
       // pow is accurate to an ulp or two: 1e-14 relative.
-      EXPECT_TRUE(approx(law.yield_stress(rate), law.A * std::pow(rate, law.alpha), 1e-14)) << rate;
+      EXPECT_TRUE(approx(law.yield_stress(rate),
+                         law.as<physics::PiecewisePower>().A *
+                             std::pow(rate, law.as<physics::PiecewisePower>().alpha),
+                         1e-14))
+          << rate;
 }
 
 TEST(PowerLaw, ContinuousAtBothBreakPoints) {
-  for (const PowerLaw& law : laws())
+  for (const FlowLaw& law : laws())
     for (double limit : {law.rate1, law.rate2}) {
-      const double at = law.A * std::pow(limit, law.alpha);
+      const double at = law.as<physics::PiecewisePower>().A *
+                        std::pow(limit, law.as<physics::PiecewisePower>().alpha);
       EXPECT_TRUE(approx(law.yield_stress(limit), at, 1e-14));
       // One part in 1e9 either side moves σ_p by at most that much (σ_p′ ≤ σ_p/ε̄̇),
       // so 1e-8 relative separates continuity from any jump.
@@ -61,9 +66,13 @@ TEST(PowerLaw, ContinuousAtBothBreakPoints) {
 }
 
 TEST(PowerLaw, LinearThroughTheOriginOutsideTheRange) {
-  for (const PowerLaw& law : laws()) {
-    const double slope_low = law.A * std::pow(law.rate1, law.alpha) / law.rate1;
-    const double slope_high = law.A * std::pow(law.rate2, law.alpha) / law.rate2;
+  for (const FlowLaw& law : laws()) {
+    const double slope_low = law.as<physics::PiecewisePower>().A *
+                             std::pow(law.rate1, law.as<physics::PiecewisePower>().alpha) /
+                             law.rate1;
+    const double slope_high = law.as<physics::PiecewisePower>().A *
+                              std::pow(law.rate2, law.as<physics::PiecewisePower>().alpha) /
+                              law.rate2;
     for (double factor : {1e-6, 0.01, 0.5}) {
       const double rate = law.rate1 * factor;
       EXPECT_TRUE(approx(law.yield_stress(rate), slope_low * rate, 1e-14)) << rate;
@@ -78,10 +87,13 @@ TEST(PowerLaw, LinearThroughTheOriginOutsideTheRange) {
 }
 
 TEST(PowerLaw, SecantViscosityIsFiniteAtRest) {
-  for (const PowerLaw& law : laws()) {
+  for (const FlowLaw& law : laws()) {
     const double eta = law.secant_viscosity(0.0);
     EXPECT_TRUE(std::isfinite(eta));
-    EXPECT_TRUE(approx(eta, law.A * std::pow(law.rate1, law.alpha - 1.0), 1e-14));
+    EXPECT_TRUE(approx(eta,
+                       law.as<physics::PiecewisePower>().A *
+                           std::pow(law.rate1, law.as<physics::PiecewisePower>().alpha - 1.0),
+                       1e-14));
     EXPECT_EQ(law.yield_stress(0.0), 0.0);
     EXPECT_EQ(law.dissipation(0.0), 0.0);
   }
@@ -90,9 +102,12 @@ TEST(PowerLaw, SecantViscosityIsFiniteAtRest) {
 TEST(PowerLaw, BoundsOfCondition211HoldOnASweep) {
   // η1 ≤ σ_p′ ≤ σ_p/ε̄̇ ≤ η2 with η2 = σ_p(ε̄̇1)/ε̄̇1 (largest secant) and
   // η1 = α σ_p(ε̄̇2)/ε̄̇2 (smallest slope, at the top of the power range).
-  for (const PowerLaw& law : laws()) {
-    const double eta2 = law.A * std::pow(law.rate1, law.alpha - 1.0);
-    const double eta1 = law.alpha * law.A * std::pow(law.rate2, law.alpha - 1.0);
+  for (const FlowLaw& law : laws()) {
+    const double eta2 = law.as<physics::PiecewisePower>().A *
+                        std::pow(law.rate1, law.as<physics::PiecewisePower>().alpha - 1.0);
+    const double eta1 = law.as<physics::PiecewisePower>().alpha *
+                        law.as<physics::PiecewisePower>().A *
+                        std::pow(law.rate2, law.as<physics::PiecewisePower>().alpha - 1.0);
     double previous = 0.0;
     for (double rate : sweep()) {
       const double slope = law.yield_stress_derivative(rate);
@@ -113,7 +128,7 @@ TEST(PowerLaw, DerivativeMatchesCentralDifferences) {
   // round-off ≈ ε σ_p/h ~ 1e-10 relative to σ_p/ε̄̇. For the paper's law σ_p′
   // is α = 1e-3 times smaller than σ_p/ε̄̇, so compare with 1e-6 of the secant
   // viscosity as absolute scale: still 1000× below the derivative itself.
-  for (const PowerLaw& law : laws()) {
+  for (const FlowLaw& law : laws()) {
     std::vector<double> rates = {law.rate1 * 3, std::sqrt(law.rate1 * law.rate2), law.rate2 / 3};
     rates.push_back(law.rate1 / 10); // linear branches: the slope is the secant viscosity
     rates.push_back(law.rate2 * 10);
@@ -128,16 +143,16 @@ TEST(PowerLaw, DerivativeMatchesCentralDifferences) {
 }
 
 TEST(PowerLaw, DissipationIsStressTimesRate) {
-  for (const PowerLaw& law : laws())
+  for (const FlowLaw& law : laws())
     for (double rate : sweep())
       EXPECT_TRUE(approx(law.dissipation(rate), law.yield_stress(rate) * rate, 1e-15));
 }
 
 TEST(PowerLaw, AlphaOneIsNewtonianEverywhere) {
   // α = 1: σ_p = A ε̄̇ on every branch, so the secant viscosity is A at all rates.
-  PowerLaw law;
-  law.A = 2.5;
-  law.alpha = 1.0;
+  FlowLaw law;
+  law.as<physics::PiecewisePower>().A = 2.5;
+  law.as<physics::PiecewisePower>().alpha = 1.0;
   for (double rate : sweep()) {
     EXPECT_TRUE(approx(law.secant_viscosity(rate), 2.5, 1e-15)) << rate;
     EXPECT_TRUE(approx(law.yield_stress_derivative(rate), 2.5, 1e-15)) << rate;

@@ -32,8 +32,7 @@ TEST(ManufacturedField, IsDivergenceFreeWithConsistentDerivatives) {
 }
 
 /// τ = ⅔ ν(ε̄̇) ε̇ of the field at x (2×2 block).
-Tensor2<2> viscous_stress(const PowerLaw& law, const StreamFunctionField& field,
-                          const Point<2>& x) {
+Tensor2<2> viscous_stress(const FlowLaw& law, const StreamFunctionField& field, const Point<2>& x) {
   const Tensor3 rate = strain_rate<2>(field.gradient(x));
   return 2.0 / 3.0 * law.secant_viscosity(equivalent_strain_rate(rate)) *
          rate.topLeftCorner<2, 2>();
@@ -41,13 +40,13 @@ Tensor2<2> viscous_stress(const PowerLaw& law, const StreamFunctionField& field,
 
 TEST(ManufacturedField, BodyForceIsMinusDivergenceOfViscousStress) {
   const StreamFunctionField field = StreamFunctionField::of(ManufacturedSolution::Smooth);
-  PowerLaw nonlinear; // the paper's law (5.4)
-  PowerLaw strongly_nonlinear;
-  strongly_nonlinear.alpha = 0.2;
-  PowerLaw constant;
-  constant.alpha = 1.0; // σ_p = A ε̄̇: constant viscosity A
+  FlowLaw nonlinear; // the paper's law (5.4)
+  FlowLaw strongly_nonlinear;
+  strongly_nonlinear.as<physics::PiecewisePower>().alpha = 0.2;
+  FlowLaw constant;
+  constant.as<physics::PiecewisePower>().alpha = 1.0; // σ_p = A ε̄̇: constant viscosity A
   const Real step = 1e-5;
-  for (const PowerLaw& law : {nonlinear, strongly_nonlinear, constant})
+  for (const FlowLaw& law : {nonlinear, strongly_nonlinear, constant})
     for (const Point<2>& x : sample_points) {
       Point<2> divergence = Point<2>::Zero();
       for (int k = 0; k < 2; ++k) {
@@ -59,13 +58,14 @@ TEST(ManufacturedField, BodyForceIsMinusDivergenceOfViscousStress) {
       const Point<2> force = manufactured_body_force(law, field, x);
       // Central differences of τ (entries up to ~40): error ~ step²·τ‴ ≈ 1e-7.
       for (int i = 0; i < 2; ++i)
-        EXPECT_NEAR(force[i], -divergence[i], 1e-6) << "alpha " << law.alpha;
+        EXPECT_NEAR(force[i], -divergence[i], 1e-6)
+            << "alpha " << law.as<physics::PiecewisePower>().alpha;
     }
 }
 
 TEST(ManufacturedField, ExtensionFieldIsLinearWithZeroBodyForce) {
   const StreamFunctionField field = StreamFunctionField::of(ManufacturedSolution::Extension);
-  const PowerLaw law;
+  const FlowLaw law;
   for (const Point<2>& x : sample_points) {
     EXPECT_NEAR(field.velocity(x).x(), x.x(), 1e-15);
     EXPECT_NEAR(field.velocity(x).y(), -x.y(), 1e-15);

@@ -286,7 +286,7 @@ TEST(FormingProblem, StartingViscosityIsTheSecantViscosityAtTheInitialRate) {
   // other starting rate, or a wrong ε̄̇ of w, change the viscosity.
   const mesh::Mesh<2> m = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
   assembly::ProblemSettings settings;
-  settings.law.alpha = 0.5;
+  settings.law.as<physics::PiecewisePower>().alpha = 0.5;
   settings.initial_rate = 0.04;
   const assembly::FormingProblem<2> problem(m, settings);
   VectorX w(problem.n_dofs());

@@ -59,8 +59,8 @@ TEST(NewtonIteration, LinearViscousLawIsSolvedByTheStart) {
   // m = 1: the constant-viscosity start is the solution, so the first step
   // changes nothing (to solver round-off).
   assembly::ProblemSettings settings;
-  settings.law.kind = physics::FlowLawKind::NortonHoff;
-  settings.law.m = 1.0;
+  settings.law.model = physics::NortonHoff{};
+  settings.law.as<physics::NortonHoff>().m = 1.0;
   const assembly::FormingProblem<2> problem(small_mesh(), settings);
   const solvers::SecantOutcome outcome = run(problem, solvers::IterationControl{}, true);
   ASSERT_EQ(outcome.stop_reason, StopReason::Converged);

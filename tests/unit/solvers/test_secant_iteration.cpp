@@ -170,8 +170,8 @@ TEST(SecantIterationNewtonian, ConstantViscosityConvergesAtOnce) {
   // K(u⁰) = K(·) and the first iteration (the loop's iteration 1 — the
   // starting solve is not counted) reproduces u⁰: change ≈ 0, converged.
   assembly::ProblemSettings settings;
-  settings.law.alpha = 1.0;
-  settings.law.A = 2.0;
+  settings.law.as<physics::PiecewisePower>().alpha = 1.0;
+  settings.law.as<physics::PiecewisePower>().A = 2.0;
   const assembly::FormingProblem<2> problem(small_mesh(), settings);
   const solvers::SecantOutcome outcome = run(problem, solvers::IterationControl{});
   EXPECT_EQ(outcome.stop_reason, StopReason::Converged);
@@ -186,7 +186,7 @@ TEST(SecantIterationNewtonian, RamReactionEqualsTheDiscretePower) {
   // the driven force times u⁰ is the total discrete power. The power is
   // summed here cell by cell from the kernels, bypassing the global assembly.
   assembly::ProblemSettings settings;
-  settings.law.alpha = 1.0;
+  settings.law.as<physics::PiecewisePower>().alpha = 1.0;
   const mesh::Mesh<2>& m = small_mesh();
   const assembly::FormingProblem<2> problem(m, settings);
   const solvers::SecantOutcome outcome = run(problem, solvers::IterationControl{});
@@ -197,7 +197,8 @@ TEST(SecantIterationNewtonian, RamReactionEqualsTheDiscretePower) {
       volumetric(2, fem::gauss_rule<2>(settings.volumetric_points));
   fem::FacetValues<2> facet(2, fem::gauss_rule<1>(3));
   typename fem::CellValues<2>::Gradients coordinates, velocities;
-  const std::vector<Real> viscosity(full.n_points(), settings.law.A); // Newtonian: ν = A
+  const std::vector<Real> viscosity(
+      full.n_points(), settings.law.as<physics::PiecewisePower>().A); // Newtonian: ν = A
   double power = 0.0;
   for (Index cell = 0; cell < m.n_cells(); ++cell) {
     problem.gather(cell, &u, coordinates, velocities);

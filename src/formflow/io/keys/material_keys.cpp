@@ -2,29 +2,47 @@
 // Case keys of the [material] section (The flow law): rows of the table in io/case_keys.cpp.
 #include "formflow/io/keys/key_spec.hpp"
 
+#include <tuple>
+
 namespace formflow::io::keys {
 
+namespace {
+
+/// The choices of material.law: the names of the registered laws (physics::FlowLaws).
+std::vector<std::pair<std::string_view, std::string_view>> law_names() {
+  std::vector<std::pair<std::string_view, std::string_view>> names;
+  std::apply([&](const auto&... law) { (names.emplace_back(law.name, law.name), ...); },
+             physics::FlowLaws::Tuple{});
+  return names;
+}
+
+/// Accessor of parameter `field` of law `Law` in the case (whichever law is selected).
+template <class Law> auto law_parameter(Real Law::*field) {
+  return [field](auto& c) -> auto& {
+    return c.material.template parameters_of<Law>().*field;
+  };
+}
+
+} // namespace
+
 std::vector<CaseKey> material_keys() {
-  using physics::FlowLawKind;
+  using physics::HenselSpittel;
+  using physics::NortonHoff;
+  using physics::PerfectlyPlastic;
+  using physics::PiecewisePower;
   return {
       enum_key(
-          "material.law", "piecewise_power",
-          {{"piecewise_power", FlowLawKind::PiecewisePower},
-           {"norton_hoff", FlowLawKind::NortonHoff},
-           {"hensel_spittel", FlowLawKind::HenselSpittel},
-           {"perfectly_plastic", FlowLawKind::PerfectlyPlastic}},
-          [](auto& c) -> auto& { return c.material.kind; })
+          "material.law", "piecewise_power", law_names(),
+          [](auto& c) -> auto& { return c.material.law; })
           .constraint("the law must satisfy condition (2.11) (checked at load time)")
           .doc("σ_p on [rate1, rate2], linear through the origin outside: piecewise_power "
                "A ε̄̇^α (paper eq. 5.4); norton_hoff √3 K (√3 ε̄̇)^m; hensel_spittel "
                "A e^(m1 T) ε^m2 e^(m4/ε) ε̄̇^(m3 + m8 T); perfectly_plastic σ0"),
-      real_key(
-          "material.A", 1.7320508075688772, [](auto& c) -> auto& { return c.material.A; })
+      real_key("material.A", 1.7320508075688772, law_parameter(&PiecewisePower::A))
           .above(0)
           .unit("stress·time^α")
           .doc("A of σ_p = A ε̄̇^α (paper eq. 5.4); √3 gives the shear yield k ≈ 1"),
-      real_key(
-          "material.alpha", 1e-3, [](auto& c) -> auto& { return c.material.alpha; })
+      real_key("material.alpha", 1e-3, law_parameter(&PiecewisePower::alpha))
           .above(0)
           .at_most(1)
           .doc("strain-rate sensitivity α"),
@@ -40,51 +58,40 @@ std::vector<CaseKey> material_keys() {
           .constraint("> material.rate1")
           .unit("1/time")
           .doc("ε̄̇₂: above it σ_p is continued linearly through the origin"),
-      real_key(
-          "material.K", 1.0, [](auto& c) -> auto& { return c.material.K; })
+      real_key("material.K", 1.0, law_parameter(&NortonHoff::K))
           .above(0)
           .unit("stress·time^m")
           .doc("norton_hoff: consistency K of s = 2K(√3 ε̄̇)^(m−1) ė"),
-      real_key(
-          "material.m", 0.1, [](auto& c) -> auto& { return c.material.m; })
+      real_key("material.m", 0.1, law_parameter(&NortonHoff::m))
           .above(0)
           .at_most(1)
           .doc("norton_hoff: strain-rate sensitivity m (1 = linear viscous)"),
-      real_key(
-          "material.sigma0", 1.7320508075688772, [](auto& c) -> auto& { return c.material.sigma0; })
+      real_key("material.sigma0", 1.7320508075688772, law_parameter(&PerfectlyPlastic::sigma0))
           .above(0)
           .unit("stress")
           .doc("perfectly_plastic: the rate-independent yield stress σ0"),
-      real_key(
-          "material.hs_A", 1.7320508075688772, [](auto& c) -> auto& { return c.material.hs_A; })
+      real_key("material.hs_A", 1.7320508075688772, law_parameter(&HenselSpittel::A))
           .above(0)
           .unit("stress·time^(m3+m8 T)")
           .doc("hensel_spittel: A"),
-      real_key(
-          "material.hs_m1", 0.0, [](auto& c) -> auto& { return c.material.hs_m1; })
+      real_key("material.hs_m1", 0.0, law_parameter(&HenselSpittel::m1))
           .unit("1/temperature")
           .doc("hensel_spittel: temperature factor e^(m1 T)"),
-      real_key(
-          "material.hs_m2", 0.0, [](auto& c) -> auto& { return c.material.hs_m2; })
+      real_key("material.hs_m2", 0.0, law_parameter(&HenselSpittel::m2))
           .doc("hensel_spittel: strain-hardening exponent of ε^m2"),
-      real_key(
-          "material.hs_m3", 0.1, [](auto& c) -> auto& { return c.material.hs_m3; })
+      real_key("material.hs_m3", 0.1, law_parameter(&HenselSpittel::m3))
           .constraint("0 < m3 + m8 T ≤ 1")
           .doc("hensel_spittel: strain-rate exponent m3 of ε̄̇^(m3 + m8 T)"),
-      real_key(
-          "material.hs_m4", 0.0, [](auto& c) -> auto& { return c.material.hs_m4; })
+      real_key("material.hs_m4", 0.0, law_parameter(&HenselSpittel::m4))
           .doc("hensel_spittel: softening term e^(m4/ε)"),
-      real_key(
-          "material.hs_m8", 0.0, [](auto& c) -> auto& { return c.material.hs_m8; })
+      real_key("material.hs_m8", 0.0, law_parameter(&HenselSpittel::m8))
           .unit("1/temperature")
           .constraint("0 < m3 + m8 T ≤ 1")
           .doc("hensel_spittel: temperature dependence m8 T of the strain-rate exponent"),
-      real_key(
-          "material.temperature", 0.0, [](auto& c) -> auto& { return c.material.temperature; })
+      real_key("material.temperature", 0.0, law_parameter(&HenselSpittel::temperature))
           .unit("temperature")
           .doc("hensel_spittel: the (uniform, constant) temperature T of the isothermal form"),
-      real_key(
-          "material.strain", 1.0, [](auto& c) -> auto& { return c.material.strain; })
+      real_key("material.strain", 1.0, law_parameter(&HenselSpittel::strain))
           .above(0)
           .doc("hensel_spittel: the reference equivalent strain ε at which the law is taken "
                "(the steady model carries no strain history)"),
