@@ -2,7 +2,7 @@
 // How much of a cell-pressure field is the 2×2 checkerboard (Remark 4.3).
 #pragma once
 
-#include "formflow/assembly/inf_sup.hpp"
+#include "support/inf_sup.hpp"
 
 namespace formflow::testing {
 
@@ -10,7 +10,7 @@ namespace formflow::testing {
 /// 0 for a field without checkerboard, O(h²) for the cell means of a smooth one.
 inline double checkerboard_share(const mesh::Mesh<2>& mesh, Real size, const VectorX& cell_pressure,
                                  Real x_max) {
-  const VectorX filtered = assembly::filter_checkerboard(mesh, size, cell_pressure);
+  const VectorX filtered = testing::filter_checkerboard(mesh, size, cell_pressure);
   double removed = 0.0, total = 0.0;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     Real centre = 0.0;

@@ -3,8 +3,8 @@
 // small step channel (the benchmark's shape, scaled to 1 × 1 → ½) for h = 1/4, 1/8, ...
 #pragma once
 
-#include "formflow/assembly/inf_sup.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
+#include "support/inf_sup.hpp"
 
 #include <cstdio>
 #include <string>
@@ -33,10 +33,10 @@ inline const std::vector<Pair>& inf_sup_pairs() {
 }
 
 /// β_h per pair (rows) and cell size (columns); prints the markdown table.
-inline std::vector<std::vector<assembly::InfSupEstimate>>
+inline std::vector<std::vector<testing::InfSupEstimate>>
 inf_sup_table(const std::vector<int>& cells_per_unit) {
   const mesh::ChannelGeometry geometry{1.0, 1.0, 0.5, 1.0};
-  std::vector<std::vector<assembly::InfSupEstimate>> table;
+  std::vector<std::vector<testing::InfSupEstimate>> table;
   std::string header = "| pair |", rule = "|---|";
   for (int n : cells_per_unit) {
     header += " h = 1/" + std::to_string(n) + " |";
@@ -44,11 +44,11 @@ inf_sup_table(const std::vector<int>& cells_per_unit) {
   }
   std::printf("%s\n%s\n", header.c_str(), rule.c_str());
   for (const Pair& pair : inf_sup_pairs()) {
-    std::vector<assembly::InfSupEstimate> row;
+    std::vector<testing::InfSupEstimate> row;
     std::string line = "| " + pair.name + " |";
     for (int n : cells_per_unit) {
       const mesh::Mesh<2> mesh = mesh::make_channel_mesh(geometry, 1.0 / n, pair.order);
-      row.push_back(assembly::inf_sup_constant(mesh, pair.space, pair.filter));
+      row.push_back(testing::inf_sup_constant(mesh, pair.space, pair.filter));
       char cell[64];
       std::snprintf(cell, sizeof cell, " %.4f (%d null) |", row.back().beta,
                     row.back().n_null_modes);

@@ -109,7 +109,7 @@ double container_checkerboard(fem::ElementKind element, fem::PressureSpace space
   EXPECT_TRUE(simulation.results.converged());
   const double share = testing::checkerboard_share(
       simulation.mesh, size, simulation.results.fields.cell_hydrostatic_stress, 8.0);
-  const VectorX filtered = assembly::filter_checkerboard(
+  const VectorX filtered = testing::filter_checkerboard(
       simulation.mesh, size, simulation.results.fields.cell_hydrostatic_stress);
   EXPECT_LT(testing::checkerboard_share(simulation.mesh, size, filtered, 8.0), 1e-12);
   std::printf("%s-%s h = %g: checkerboard share %.3e\n",
