@@ -6,6 +6,7 @@
 #include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/assembly/constraints.hpp"
 #include "formflow/assembly/contact_normals.hpp"
+#include "formflow/assembly/discretisation.hpp"
 #include "formflow/assembly/friction_multipliers.hpp"
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/fem/cell_values.hpp"
@@ -179,63 +180,44 @@ public:
   /// penalty terms of eq. 3.8). Assembly records each cell's augmentation in it.
   void attach_multipliers(ConstraintMultipliers<dim>* multipliers) { multipliers_ = multipliers; }
   ConstraintMultipliers<dim>* multipliers() const { return multipliers_; }
-  /// Number of Γ3 quadrature points (the length of contact_state()).
-  Index n_contact_points() const {
-    return static_cast<Index>(contact_facets_.size()) * facet_rule_.size();
-  }
-  /// Measure of the driven end (ram height, or exit half height for drawing).
-  Real driven_height() const { return driven_height_; }
+  /// The fixed part of the problem: mesh, pattern, rules, caches, Γ3, kinematics.
+  const Discretisation<dim>& discretisation() const { return *discretisation_; }
+  using Gradients = typename fem::CellValues<dim>::Gradients;
 
+  // Shorthands of discretisation(), for the drivers and cell loops.
+  Index n_contact_points() const { return discretisation_->n_contact_points(); }
+  Real driven_height() const { return discretisation_->driven_height(); }
   const mesh::Mesh<dim>& mesh() const { return mesh_; }
   const ProblemSettings& settings() const { return settings_; }
-  const ScatterPlan& plan() const { return *plan_; }
-  const DirichletConstraints& constraints() const { return constraints_; }
-  Index n_dofs() const { return mesh_.n_nodes() * dim; }
-  /// True with nodal contact normals: the face rule is fem::nodal_rule, its
-  /// points are the face nodes (in face_local_nodes order).
-  bool contact_points_at_nodes() const {
-    return settings_.contact.normals == ContactNormals::Nodes;
+  const ScatterPlan& plan() const { return discretisation_->plan(); }
+  const DirichletConstraints& constraints() const { return discretisation_->constraints(); }
+  Index n_dofs() const { return discretisation_->n_dofs(); }
+  bool contact_points_at_nodes() const { return discretisation_->contact_points_at_nodes(); }
+  const fem::QuadratureRule<dim>& full_rule() const { return discretisation_->full_rule(); }
+  const fem::QuadratureRule<dim>& volumetric_rule() const {
+    return discretisation_->volumetric_rule();
   }
-  /// Quadrature rules: full (a-term), volumetric, and faces (Gauss, or the
-  /// nodal rule when contact_points_at_nodes()).
-  const fem::QuadratureRule<dim>& full_rule() const { return full_rule_; }
-  const fem::QuadratureRule<dim>& volumetric_rule() const { return volumetric_rule_; }
-  const fem::QuadratureRule<dim - 1>& facet_rule() const { return facet_rule_; }
-  /// Maps `values` to a cell or face and, in axisymmetry, weights them by r
-  /// (all integrals are per radian: forces per radian, "heights" ∫ r dr).
+  const fem::QuadratureRule<dim - 1>& facet_rule() const { return discretisation_->facet_rule(); }
   template <class Values, class... Face>
-  void reinit(Values& values, const typename fem::CellValues<dim>::Gradients& coordinates,
-              Face... local_face) const {
-    values.reinit(coordinates, local_face...);
-    if (axisymmetric()) values.weight_by_radius();
+  void reinit(Values& values, const Gradients& coordinates, Face... local_face) const {
+    discretisation_->reinit(values, coordinates, local_face...);
   }
-  bool axisymmetric() const { return settings_.symmetry == physics::Symmetry::Axisymmetric; }
-  /// ε̇ at point q of `values` for the cell's nodal `velocities`; in
-  /// axisymmetry with the hoop rate u_r/r in the θθ (third) slot.
-  Tensor3 strain_rate_at(const fem::CellValues<dim>& values,
-                         const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
-  /// The same at point q of a face (the cell's gradients there).
-  Tensor3 strain_rate_at(const fem::FacetValues<dim>& values,
-                         const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
-  /// The hoop rate u_r/r at point q (exactly 0 in plane strain), the part of
-  /// ε̇_V = tr ε̇ beyond the in-plane divergence.
-  Real hoop_rate_at(const fem::CellValues<dim>& values,
-                    const typename fem::CellValues<dim>::Gradients& velocities, int q) const;
-  /// Puts cell `cell`'s mapped values at the full and the volumetric rule into
-  /// the given values (from the geometry cache: the mesh never moves).
+  bool axisymmetric() const { return discretisation_->axisymmetric(); }
+  template <class Values>
+  Tensor3 strain_rate_at(const Values& values, const Gradients& velocities, int q) const {
+    return discretisation_->strain_rate_at(values, velocities, q);
+  }
+  Real hoop_rate_at(const fem::CellValues<dim>& values, const Gradients& velocities, int q) const {
+    return discretisation_->hoop_rate_at(values, velocities, q);
+  }
   void load_cell(Index cell, fem::CellValues<dim>& full_values,
                  fem::CellValues<dim>* volumetric_values) const {
-    full_cache_->load(cell, full_values);
-    if (volumetric_values) volumetric_cache_->load(cell, *volumetric_values);
+    discretisation_->load_cell(cell, full_values, volumetric_values);
   }
-  /// Memory held by the geometry cache (cells at both rules, contact faces).
-  std::size_t geometry_cache_bytes() const {
-    return full_cache_->bytes() + volumetric_cache_->bytes() +
-           (contact_cache_ ? contact_cache_->bytes() : 0);
+  std::size_t geometry_cache_bytes() const { return discretisation_->geometry_cache_bytes(); }
+  void gather(Index cell, const VectorX* u, Gradients& coordinates, Gradients& velocities) const {
+    discretisation_->gather(cell, u, coordinates, velocities);
   }
-  /// Node coordinates (dim × n) and nodal velocities (dim × n) of one cell.
-  void gather(Index cell, const VectorX* u, typename fem::CellValues<dim>::Gradients& coordinates,
-              typename fem::CellValues<dim>::Gradients& velocities) const;
 
 private:
   void update_slip_duals(const VectorX& u, const VectorX& step, bool primal,
@@ -259,28 +241,15 @@ private:
                           fem::FacetValues<dim>& facet_values, LinearSystem& system) const;
 
   void add_body_force(const fem::CellValues<dim>& values, VectorX& local_load) const;
-  /// Maps `values` to the Γ3 face at `position` (in contact_facets_) and, with
-  /// nodal normals, puts them in place of the face normals.
-  void reinit_contact(fem::FacetValues<dim>& values,
-                      const typename fem::CellValues<dim>::Gradients& coordinates,
-                      Index position) const;
+  void reinit_contact(fem::FacetValues<dim>& values, const Gradients& coordinates,
+                      Index position) const {
+    discretisation_->reinit_contact(values, coordinates, position);
+  }
 
   const mesh::Mesh<dim>& mesh_;
   ProblemSettings settings_;
-  DirichletConstraints constraints_;
   BodyForce<dim> body_force_;
-  std::unique_ptr<ScatterPlan> plan_;
-  fem::QuadratureRule<dim> full_rule_, volumetric_rule_;
-  fem::QuadratureRule<dim - 1> facet_rule_;
-  std::vector<Index> contact_facets_;       ///< Mesh::facets indices of Γ3, in mesh order
-  std::vector<Index> cell_contact_offsets_; ///< per cell, range in cell_contact_
-  std::vector<Index> cell_contact_;         ///< positions in contact_facets_
-  std::vector<Point<dim>> contact_normals_; ///< nodal normals per Γ3 point; empty: face normals
-  std::unique_ptr<physics::NonlocalAverage> average_;
-  /// Mapped values of every cell (full and volumetric rule) and Γ3 face, built once.
-  std::unique_ptr<fem::CellValuesCache<dim>> full_cache_, volumetric_cache_;
-  std::unique_ptr<fem::FacetValuesCache<dim>> contact_cache_;
-  Real driven_height_ = 0.0;
+  std::unique_ptr<Discretisation<dim>> discretisation_;
   ConstraintMultipliers<dim>* multipliers_ = nullptr;
 };
 

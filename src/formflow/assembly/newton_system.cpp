@@ -118,15 +118,15 @@ void FormingProblem<dim>::assemble_newton(
         thresholds[k], state[k].tangential_velocity.norm(), settings_.friction.d_t);
   }
 
-  fem::CellValues<dim> full_values(mesh_.order, full_rule_);
-  fem::CellValues<dim> volumetric_values(mesh_.order, volumetric_rule_);
-  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule_);
+  fem::CellValues<dim> full_values(mesh_.order, full_rule());
+  fem::CellValues<dim> volumetric_values(mesh_.order, volumetric_rule());
+  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   const int n_local = mesh_.nodes_per_cell() * dim;
   MatrixX local_tangent(n_local, n_local);
   CellVector local_force(n_local), divergence_row(n_local), deviator_row(n_local);
   VectorX unused_load(n_local); // contact loads come only from multipliers, absent here
-  const int n_q = full_rule_.size(), n_face_q = facet_rule_.size();
+  const int n_q = full_rule().size(), n_face_q = facet_rule().size();
   std::vector<Real> viscosity(n_q), coefficient_a(n_q), coefficient_b(n_q), weight(n_face_q);
   std::vector<Tensor3> rates(n_q), deviators(n_q), cell_duals(n_q);
   std::vector<Point<dim>> slip(n_face_q), dual_slip(n_face_q);
@@ -170,8 +170,7 @@ void FormingProblem<dim>::assemble_newton(
         multipliers_->add_cell_force(cell, local_velocity, local_force);
       else if (!axisymmetric())
         add_volumetric_force<dim>(volumetric_values, settings_.penalty.d, velocities, local_force);
-      for (Index k = cell_contact_offsets_[cell]; k < cell_contact_offsets_[cell + 1]; ++k) {
-        const Index position = cell_contact_[k];
+      for (const Index position : discretisation_->cell_contact_faces(cell)) {
         reinit_contact(facet_values, coordinates, position);
         for (int q = 0; q < n_face_q && with_friction; ++q)
           weight[q] = state[position * n_face_q + q].friction_weight;
@@ -199,10 +198,10 @@ void FormingProblem<dim>::assemble_newton(
       assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
                        local_tangent, unused_load);
       local_force.noalias() = local_tangent * local_velocity;
-      for (Index k = cell_contact_offsets_[cell];
-           exact_friction && k < cell_contact_offsets_[cell + 1]; ++k) {
-        reinit_contact(facet_values, coordinates, cell_contact_[k]);
-        add_friction_load_force(facet_values, state, cell_contact_[k], local_force);
+      for (const Index position : discretisation_->cell_contact_faces(cell)) {
+        if (!exact_friction) break;
+        reinit_contact(facet_values, coordinates, position);
+        add_friction_load_force(facet_values, state, position, local_force);
       }
       if constexpr (dim == 2) {
         if (axisymmetric())
@@ -212,9 +211,8 @@ void FormingProblem<dim>::assemble_newton(
       if (!axisymmetric())
         add_viscous_tangent<dim>(full_values, deviators, cell_duals, coefficient_a, coefficient_b,
                                  local_tangent);
-      for (Index k = cell_contact_offsets_[cell];
-           with_friction && k < cell_contact_offsets_[cell + 1]; ++k) {
-        const Index position = cell_contact_[k];
+      for (const Index position : discretisation_->cell_contact_faces(cell)) {
+        if (!with_friction) break;
         reinit_contact(facet_values, coordinates, position);
         for (int q = 0; q < n_face_q && exact_friction; ++q) {
           // Semismooth derivative of proj(t), t = λ̂ + r u_T, at fixed τ_f: r P at
@@ -245,7 +243,7 @@ void FormingProblem<dim>::assemble_newton(
         add_friction_tangent<dim>(facet_values, slip, dual_slip, friction_coefficient,
                                   local_tangent);
       }
-      plan_->scatter(cell, local_tangent, constraints_.values, *tangent);
+      plan().scatter(cell, local_tangent, constraints().values, *tangent);
     }
     for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
       internal_force.template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, cell), 0)) +=
@@ -290,7 +288,7 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
     if (cell != last_cell) { // points of one cell are stored together
       for (int a = 0; a < n_nodes; ++a)
         for (int i = 0; i < dim; ++i) {
-          const Index row = plan_->free_index(fem::dof_of<dim>(mesh_.cells(a, cell), i));
+          const Index row = plan().free_index(fem::dof_of<dim>(mesh_.cells(a, cell), i));
           rows[a * dim + i] = row;
           x_local[a * dim + i] = row >= 0 ? x_free[row] : 0.0;
         }
@@ -308,12 +306,12 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
 
   // dσ̄_N[x] is the mollified u_N(x)/d_N: contact_state of x itself (it is linear in x).
   const std::vector<ContactPoint<dim>> change =
-      contact_state(plan_->expand(x_free, VectorX::Zero(n_dofs())));
-  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule_);
+      contact_state(plan().expand(x_free, VectorX::Zero(n_dofs())));
+  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
   typename fem::CellValues<dim>::Gradients coordinates, unused;
-  const int n_face_q = facet_rule_.size();
-  for (std::size_t position = 0; position < contact_facets_.size(); ++position) {
-    const mesh::BoundaryFacet& facet = mesh_.facets[contact_facets_[position]];
+  const int n_face_q = facet_rule().size();
+  for (std::size_t position = 0; position < discretisation_->contact_facets().size(); ++position) {
+    const mesh::BoundaryFacet& facet = mesh_.facets[discretisation_->contact_facets()[position]];
     gather(facet.cell, nullptr, coordinates, unused);
     reinit_contact(facet_values, coordinates, static_cast<Index>(position));
     for (int q = 0; q < n_face_q; ++q) {
@@ -323,7 +321,7 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
           (change[k].mean_contact_pressure * facet_values.JxW(q)) * coupling.threshold_slip[k];
       for (int a = 0; a < n_nodes; ++a)
         for (int i = 0; i < dim; ++i) {
-          const Index row = plan_->free_index(fem::dof_of<dim>(mesh_.cells(a, facet.cell), i));
+          const Index row = plan().free_index(fem::dof_of<dim>(mesh_.cells(a, facet.cell), i));
           if (row >= 0) y_free[row] += facet_values.shape(q)[a] * traction[i];
         }
     }
@@ -332,7 +330,7 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
 
 template <int dim> Real FormingProblem<dim>::driven_force(const VectorX& internal_force) const {
   Real force = 0.0;
-  for (Index dof : constraints_.driven_dofs) force += internal_force[dof];
+  for (Index dof : constraints().driven_dofs) force += internal_force[dof];
   return force;
 }
 
@@ -403,7 +401,7 @@ template <int dim>
 void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
                                        NewtonDuals<dim>& all_duals,
                                        const FrictionMultipliers<dim>* friction_multipliers) const {
-  const int n_q = full_rule_.size();
+  const int n_q = full_rule().size();
   const bool primal = all_duals.empty();
   if (has_exact_friction())
     update_exact_slip_duals(u, step, primal, friction_multipliers, all_duals.slip);
@@ -411,7 +409,7 @@ void FormingProblem<dim>::update_duals(const VectorX& u, const VectorX& step, co
     update_slip_duals(u, step, primal, all_duals.slip);
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(mesh_.n_cells()) * n_q);
-  fem::CellValues<dim> values(mesh_.order, full_rule_);
+  fem::CellValues<dim> values(mesh_.order, full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities, step_velocities,
       next_velocities;
   const physics::FlowLaw& law = settings_.law;
@@ -453,10 +451,10 @@ template <int dim>
 void FormingProblem<dim>::secant_duals(const VectorX* previous, const VectorX& next,
                                        NewtonDuals<dim>& all_duals,
                                        const FrictionMultipliers<dim>* friction_multipliers) const {
-  const int n_q = full_rule_.size();
+  const int n_q = full_rule().size();
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(mesh_.n_cells()) * n_q);
-  fem::CellValues<dim> values(mesh_.order, full_rule_);
+  fem::CellValues<dim> values(mesh_.order, full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, previous_velocities, next_velocities;
   const physics::FlowLaw& law = settings_.law;
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {

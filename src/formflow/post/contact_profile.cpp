@@ -11,8 +11,8 @@ namespace formflow::post {
 
 std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& problem,
                                            const std::vector<assembly::ContactPoint<2>>& contact) {
-  const auto& mesh = problem.mesh();
-  const int n_q = problem.facet_rule().size();
+  const auto& mesh = problem.discretisation().mesh();
+  const int n_q = problem.discretisation().facet_rule().size();
   // Each contact face is a segment between its first and last face node;
   // chain the segments, starting from the end that touches the rear.
   struct Segment {
@@ -94,7 +94,8 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
       for (int q = 0; q < n_q; ++q) {
         const auto& point = contact[segment.first_point + q];
         // Axisymmetric weights are r dΓ (per radian): the arc length wants dΓ.
-        arc_length += problem.axisymmetric() ? point.weight / point.position[1] : point.weight;
+        arc_length += problem.discretisation().axisymmetric() ? point.weight / point.position[1]
+                                                              : point.weight;
       }
       node = segment.from == node ? segment.to : segment.from;
     }

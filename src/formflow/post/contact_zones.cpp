@@ -12,12 +12,14 @@ void contact_zones(const assembly::FormingProblem<dim>& problem,
   die = {};
   for (const auto& point : contact) {
     ContactZones& zones =
-        problem.mesh().facets[point.facet].label == mesh::BoundaryLabel::Die ? die : container;
+        problem.discretisation().mesh().facets[point.facet].label == mesh::BoundaryLabel::Die
+            ? die
+            : container;
     // Lengths along the profile: in axisymmetry the quadrature weight carries
     // the radius (integrals are per radian), which a length must not.
     Real length = point.weight;
     if constexpr (dim == 2)
-      if (problem.axisymmetric()) length /= point.position[1];
+      if (problem.discretisation().axisymmetric()) length /= point.position[1];
     zones.length += length;
     if (point.sticking) zones.stick_length += length;
   }

@@ -17,11 +17,11 @@ CornerProfile corner_profile(const assembly::FormingProblem<dim>& problem, const
   const int n_bins =
       static_cast<int>(std::ceil(std::log10(r_max / r_min) * bins_per_decade - 1e-9));
   std::vector<Real> area(n_bins, 0.0), integral(n_bins, 0.0), largest(n_bins, 0.0);
-  const auto& mesh = problem.mesh();
-  fem::CellValues<dim> values(mesh.order, problem.full_rule());
+  const auto& mesh = problem.discretisation().mesh();
+  fem::CellValues<dim> values(mesh.order, problem.discretisation().full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    problem.gather(cell, &u, coordinates, velocities);
+    problem.discretisation().gather(cell, &u, coordinates, velocities);
     values.reinit(coordinates);
     for (int q = 0; q < values.n_points(); ++q) {
       const Real distance = (values.point(q) - corner).norm();

@@ -14,12 +14,12 @@ namespace {
 template <int dim>
 void add_domain_terms(const assembly::FormingProblem<dim>& problem, const VectorX& u_h,
                       const ExactVelocity<dim>* exact, Real& strain_square, Real& l2_square) {
-  const auto& mesh = problem.mesh();
+  const auto& mesh = problem.discretisation().mesh();
   const fem::QuadratureRule<dim> rule = fem::gauss_rule<dim>(error_quadrature_points);
   fem::CellValues<dim> values(mesh.order, rule);
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    problem.gather(cell, &u_h, coordinates, velocities);
+    problem.discretisation().gather(cell, &u_h, coordinates, velocities);
     values.reinit(coordinates);
     for (int q = 0; q < values.n_points(); ++q) {
       Point<dim> error = velocities * values.shape(q);
@@ -38,12 +38,12 @@ void add_domain_terms(const assembly::FormingProblem<dim>& problem, const Vector
 /// ∫ (ε̇_V(u_h)/d)² at the volumetric rule: the discrete σ_H against σ_H = 0.
 template <int dim>
 Real hydrostatic_square(const assembly::FormingProblem<dim>& problem, const VectorX& u_h) {
-  const auto& mesh = problem.mesh();
-  fem::CellValues<dim> values(mesh.order, problem.volumetric_rule());
+  const auto& mesh = problem.discretisation().mesh();
+  fem::CellValues<dim> values(mesh.order, problem.discretisation().volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   Real sum = 0.0;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    problem.gather(cell, &u_h, coordinates, velocities);
+    problem.discretisation().gather(cell, &u_h, coordinates, velocities);
     values.reinit(coordinates);
     for (int q = 0; q < values.n_points(); ++q) {
       const Real stress = physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() /

@@ -29,15 +29,15 @@ template <int dim> fem::QuadratureRule<dim> node_rule(int order, int n_nodes) {
 template <int dim>
 Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX& u,
                     const std::vector<assembly::ContactPoint<dim>>& contact) {
-  const auto& mesh = problem.mesh();
+  const auto& mesh = problem.discretisation().mesh();
   const Real d = problem.settings().penalty.d;
   const assembly::ConstraintMultipliers<dim>* mixed =
       problem.multipliers() && problem.multipliers()->has_pressure_space() ? problem.multipliers()
                                                                            : nullptr;
   const int n = mesh.nodes_per_cell();
   fem::CellValues<dim> at_nodes(mesh.order, node_rule<dim>(mesh.order, n));
-  fem::CellValues<dim> full_values(mesh.order, problem.full_rule());
-  fem::CellValues<dim> volumetric_values(mesh.order, problem.volumetric_rule());
+  fem::CellValues<dim> full_values(mesh.order, problem.discretisation().full_rule());
+  fem::CellValues<dim> volumetric_values(mesh.order, problem.discretisation().volumetric_rule());
   const MatrixX pressure_to_nodes =
       fem::gauss_to_nodes<dim>(mesh.order, problem.settings().volumetric_points);
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
@@ -51,13 +51,14 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   VectorX count = VectorX::Zero(mesh.n_nodes());
   VectorX stress_at_points(volumetric_values.n_points());
   auto rate_at = [&](const fem::CellValues<dim>& values, int q) {
-    return physics::equivalent_strain_rate(problem.strain_rate_at(values, velocities, q));
+    return physics::equivalent_strain_rate(
+        problem.discretisation().strain_rate_at(values, velocities, q));
   };
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    problem.gather(cell, &u, coordinates, velocities);
+    problem.discretisation().gather(cell, &u, coordinates, velocities);
     at_nodes.reinit(coordinates);
-    problem.reinit(full_values, coordinates);
-    problem.reinit(volumetric_values, coordinates);
+    problem.discretisation().reinit(full_values, coordinates);
+    problem.discretisation().reinit(volumetric_values, coordinates);
     Real area = 0.0;
     for (int q = 0; q < full_values.n_points(); ++q) {
       fields.cell_equivalent_strain_rate[cell] += rate_at(full_values, q) * full_values.JxW(q);
@@ -77,9 +78,10 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
     } else {
       for (int q = 0; q < volumetric_values.n_points(); ++q) {
         // σ_H = ε̇_V/d (eq. 3.6), the Lagrange multiplier of incompressibility.
-        stress_at_points[q] = (velocities.cwiseProduct(volumetric_values.gradients(q)).sum() +
-                               problem.hoop_rate_at(volumetric_values, velocities, q)) /
-                              d;
+        stress_at_points[q] =
+            (velocities.cwiseProduct(volumetric_values.gradients(q)).sum() +
+             problem.discretisation().hoop_rate_at(volumetric_values, velocities, q)) /
+            d;
         fields.cell_hydrostatic_stress[cell] +=
             stress_at_points[q] * volumetric_values.JxW(q) / area;
       }
@@ -99,9 +101,9 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   fields.contact_pressure = VectorX::Zero(mesh.n_nodes());
   fields.friction_stress = VectorX::Zero(mesh.n_nodes());
   count.setZero();
-  const int n_q = problem.facet_rule().size();
+  const int n_q = problem.discretisation().facet_rule().size();
   // Nodal contact normals put the points on the face nodes already.
-  const MatrixX facet_to_nodes = problem.contact_points_at_nodes()
+  const MatrixX facet_to_nodes = problem.discretisation().contact_points_at_nodes()
                                      ? MatrixX(MatrixX::Identity(n_q, n_q))
                                      : fem::gauss_to_nodes<dim - 1>(mesh.order, mesh.order + 1);
   VectorX pressure_at(n_q), friction_at(n_q);

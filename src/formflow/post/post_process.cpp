@@ -11,16 +11,17 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
                       Results& results, const assembly::FrictionMultipliers<dim>* multipliers) {
   ScopedTimer timer(results.timing, "post");
   const Real speed = problem.settings().process.speed;
-  const Real height = problem.driven_height();
+  const Real height = problem.discretisation().driven_height();
 
-  assembly::LinearSystem system = problem.plan().make_system();
+  assembly::LinearSystem system = problem.discretisation().plan().make_system();
   problem.assemble(&u, system, multipliers);
   const auto contact = problem.contact_state(u, multipliers);
 
-  results.n_cells = problem.mesh().n_cells();
-  results.n_nodes = problem.mesh().n_nodes();
-  results.n_dofs = problem.n_dofs();
-  const mesh::CellDiameterRange diameters = mesh::cell_diameter_range(problem.mesh());
+  results.n_cells = problem.discretisation().mesh().n_cells();
+  results.n_nodes = problem.discretisation().mesh().n_nodes();
+  results.n_dofs = problem.discretisation().n_dofs();
+  const mesh::CellDiameterRange diameters =
+      mesh::cell_diameter_range(problem.discretisation().mesh());
   results.min_cell_diameter = diameters.smallest;
   results.max_cell_diameter = diameters.largest;
   results.power = compute_powers(problem, u, contact);

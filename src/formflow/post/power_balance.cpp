@@ -9,19 +9,19 @@ template <int dim>
 PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const VectorX& u,
                           const std::vector<assembly::ContactPoint<dim>>& contact) {
   const auto& settings = problem.settings();
-  const auto& mesh = problem.mesh();
-  fem::CellValues<dim> full_values(mesh.order, problem.full_rule());
-  fem::CellValues<dim> volumetric_values(mesh.order, problem.volumetric_rule());
+  const auto& mesh = problem.discretisation().mesh();
+  fem::CellValues<dim> full_values(mesh.order, problem.discretisation().full_rule());
+  fem::CellValues<dim> volumetric_values(mesh.order, problem.discretisation().volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   const bool deviatoric = settings.viscous_strain == physics::ViscousStrain::Deviatoric;
   const bool mixed = problem.multipliers() && problem.multipliers()->has_pressure_space();
   PowerTerms power;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    problem.gather(cell, &u, coordinates, velocities);
-    problem.reinit(full_values, coordinates);
-    problem.reinit(volumetric_values, coordinates);
+    problem.discretisation().gather(cell, &u, coordinates, velocities);
+    problem.discretisation().reinit(full_values, coordinates);
+    problem.discretisation().reinit(volumetric_values, coordinates);
     for (int q = 0; q < full_values.n_points(); ++q) {
-      const Tensor3 rate = problem.strain_rate_at(full_values, velocities, q);
+      const Tensor3 rate = problem.discretisation().strain_rate_at(full_values, velocities, q);
       const Real equivalent = physics::equivalent_strain_rate(rate);
       const Tensor3 measured = deviatoric ? physics::deviator(rate) : rate;
       power.plastic_dissipation += settings.law.dissipation(equivalent) * full_values.JxW(q);
@@ -32,7 +32,7 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
     for (int q = 0; q < volumetric_values.n_points(); ++q) {
       const Real volumetric =
           physics::velocity_gradient<dim>(velocities, volumetric_values.gradients(q)).trace() +
-          problem.hoop_rate_at(volumetric_values, velocities, q);
+          problem.discretisation().hoop_rate_at(volumetric_values, velocities, q);
       power.volumetric_penalty +=
           volumetric * volumetric / settings.penalty.d * volumetric_values.JxW(q);
     }
@@ -50,16 +50,16 @@ PowerTerms compute_powers(const assembly::FormingProblem<dim>& problem, const Ve
 template <int dim>
 Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, const VectorX& u,
                                mesh::BoundaryLabel label) {
-  const auto& mesh = problem.mesh();
-  fem::CellValues<dim> values(mesh.order, problem.volumetric_rule());
+  const auto& mesh = problem.discretisation().mesh();
+  fem::CellValues<dim> values(mesh.order, problem.discretisation().volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<bool> counted(mesh.n_cells(), false);
   Real integral = 0.0, area = 0.0;
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
     if (facet.label != label || counted[facet.cell]) continue;
     counted[facet.cell] = true;
-    problem.gather(facet.cell, &u, coordinates, velocities);
-    problem.reinit(values, coordinates);
+    problem.discretisation().gather(facet.cell, &u, coordinates, velocities);
+    problem.discretisation().reinit(values, coordinates);
     if (problem.multipliers() && problem.multipliers()->has_pressure_space()) {
       integral -= problem.multipliers()->pressure_integral(facet.cell, u); // −σ_H dx
       for (int q = 0; q < values.n_points(); ++q) area += values.JxW(q);
@@ -68,7 +68,7 @@ Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, con
     for (int q = 0; q < values.n_points(); ++q) {
       const Real volumetric =
           physics::velocity_gradient<dim>(velocities, values.gradients(q)).trace() +
-          problem.hoop_rate_at(values, velocities, q);
+          problem.discretisation().hoop_rate_at(values, velocities, q);
       integral += -volumetric / problem.settings().penalty.d * values.JxW(q); // −σ_H dx
       area += values.JxW(q);
     }
