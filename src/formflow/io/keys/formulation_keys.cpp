@@ -64,4 +64,4 @@ std::vector<CaseKey> formulation_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

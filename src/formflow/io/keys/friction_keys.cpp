@@ -31,7 +31,7 @@ KeySpec friction_parts_key() {
                   "and/or the die (its face and its land); [] = frictionless everywhere");
 }
 
-}  // namespace
+} // namespace
 
 std::vector<CaseKey> friction_keys() {
   return {
@@ -74,4 +74,4 @@ std::vector<CaseKey> friction_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

@@ -31,7 +31,7 @@ KeySpec die_profile_key() {
       .doc("polyline die face as [x, y] points, x measured from the die entry x = L_c");
 }
 
-}  // namespace
+} // namespace
 
 std::vector<CaseKey> geometry_keys() {
   return {
@@ -94,4 +94,4 @@ std::vector<CaseKey> geometry_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

@@ -18,4 +18,4 @@ std::vector<CaseKey> integration_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

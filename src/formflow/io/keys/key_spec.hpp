@@ -90,4 +90,4 @@ std::vector<CaseKey> penalty_keys();
 std::vector<CaseKey> solver_keys();
 std::vector<CaseKey> verification_keys();
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

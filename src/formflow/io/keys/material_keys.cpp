@@ -91,4 +91,4 @@ std::vector<CaseKey> material_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

@@ -32,7 +32,7 @@ KeySpec mesh_boundaries_key() {
            "facet needs one; {} = the physical names are the part names");
 }
 
-}  // namespace
+} // namespace
 
 std::vector<CaseKey> mesh_keys() {
   return {
@@ -61,4 +61,4 @@ std::vector<CaseKey> mesh_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

@@ -28,4 +28,4 @@ std::vector<CaseKey> penalty_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

@@ -29,4 +29,4 @@ std::vector<CaseKey> process_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

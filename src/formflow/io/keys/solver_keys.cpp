@@ -47,4 +47,4 @@ std::vector<CaseKey> solver_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys
