@@ -12,13 +12,16 @@ build_dir=${1:-build-test}
 shift || true
 [ -d "$build_dir" ] || { echo "no build in $build_dir: run ./test or scripts/setup.sh first"; exit 2; }
 
-# Kernels: unset (OpenBLAS picks this CPU's), the AVX-512 one, the AVX2 one and the
-# oldest AVX one; threads: unset (all cores), 1 and 2 with the CPU's own kernel.
+# Kernels: unset (OpenBLAS picks this CPU's), the AVX-512 one, the AVX2 one, the
+# oldest AVX one and an SSE3 one (Prescott: on this EPYC it is the kernel that
+# exposed the tuned 1e-12 of ExactFriction.WithZeroCoefficient…/Newton);
+# threads: unset (all cores), 1 and 2 with the CPU's own kernel.
 configurations=(
   ""
   "OPENBLAS_CORETYPE=SkylakeX"
   "OPENBLAS_CORETYPE=Haswell"
   "OPENBLAS_CORETYPE=Sandybridge"
+  "OPENBLAS_CORETYPE=Prescott"
   "OPENBLAS_NUM_THREADS=1"
   "OPENBLAS_NUM_THREADS=2"
 )
