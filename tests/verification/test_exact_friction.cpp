@@ -54,8 +54,8 @@ TEST_P(ExactFriction, WithZeroCoefficientIsTheFrictionlessSolution) {
   // one by the forward error of the last solves, ≲ ε·κ(K) relative, and the
   // reaction (a sum of K u over the rear) by the same relative amount. κ = 1/rcond,
   // CHOLMOD's estimate at the solution (≈ 1.6e5 here, so the bound is ≈ 3.5e-11).
-  // A fixed 1e-12 was round-off luck: 13 OpenBLAS kernels gave 0.3–1.2e-12 on the
-  // reaction (docs/reliability.md), up to 0.03 ε·κ.
+  // A fixed 1e-12 was round-off luck: ten OpenBLAS kernels gave 5e-16 to 1.4e-12 on
+  // the reaction, Prescott and Barcelona above 1e-12 (docs/reliability.md): ≤ 0.04 ε·κ.
   const double round_off = std::numeric_limits<double>::epsilon() /
                            app::condition_at(*frictionless.problem, frictionless.velocity);
   EXPECT_LT(relative_velocity_difference(exact_zero.velocity, frictionless.velocity), round_off);
