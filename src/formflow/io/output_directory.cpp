@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <system_error>
+#include <utility>
 
 namespace formflow::io {
 
@@ -65,8 +66,11 @@ void check_output_directory(const std::filesystem::path& directory,
   // The nearest part of the path that exists: the directory itself or an ancestor.
   std::filesystem::path existing = directory;
   // A dangling link exists as a link (symlink_status): it stops the walk and is refused below.
-  while (!existing.empty() && !std::filesystem::exists(status_of(existing)))
-    existing = existing.parent_path();
+  while (!existing.empty() && !std::filesystem::exists(status_of(existing))) {
+    std::filesystem::path parent = existing.parent_path();
+    if (parent == existing) refuse(directory, "has no existing ancestor directory");
+    existing = std::move(parent);
+  }
   if (existing.empty()) existing = ".";
   std::error_code error;
   const std::filesystem::file_status target = std::filesystem::status(existing, error);
