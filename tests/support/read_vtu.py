@@ -6,7 +6,8 @@
 # Needs Debian's python3-vtk9, which only /usr/bin/python3 can import.
 # Output: {"n_points", "n_cells", "cell_types": [...], "points": [[x, y, z], ...],
 #          "cells": [[point ids in VTK order], ...],
-#          "point_data" / "cell_data": {name: {"components": k, "values": [...]}}}
+#          "point_data" / "cell_data" / "field_data":
+#              {name: {"components": k, "values": [...]}}}
 # Exits 1 (with the reason on stderr) if VTK cannot read the file.
 import json
 import sys
@@ -19,6 +20,8 @@ def arrays(data):
     out = {}
     for i in range(data.GetNumberOfArrays()):
         array = data.GetArray(i)
+        if array is None:  # a non-numeric array (field data may hold strings)
+            continue
         k = array.GetNumberOfComponents()
         values = [array.GetComponent(t, c) for t in range(array.GetNumberOfTuples()) for c in range(k)]
         out[array.GetName()] = {"components": k, "values": values}
@@ -47,6 +50,7 @@ def main(path):
         "cells": cells,
         "point_data": arrays(grid.GetPointData()),
         "cell_data": arrays(grid.GetCellData()),
+        "field_data": arrays(grid.GetFieldData()),
     }, sys.stdout)
     return 0
 

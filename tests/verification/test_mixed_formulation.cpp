@@ -10,13 +10,15 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace formflow {
 namespace {
 
 using testing::approx;
 
-post::Results solve(const std::function<void(io::Case&)>& edit) {
+/// The case of solve() below, as a full simulation (`estimate_condition`: with rcond).
+app::Simulation simulate(const std::function<void(io::Case&)>& edit, bool estimate_condition) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
   case_.mesh_size = 2.5; // 4 + 2 cells across: seconds, not minutes
@@ -24,7 +26,11 @@ post::Results solve(const std::function<void(io::Case&)>& edit) {
   // equal iterates; the mixed and Uzawa paths run the secant method anyway.
   case_.solver.method = solvers::NonlinearMethod::Secant;
   edit(case_);
-  return app::simulate(case_).results;
+  return app::simulate(case_, {}, estimate_condition);
+}
+
+post::Results solve(const std::function<void(io::Case&)>& edit) {
+  return simulate(edit, false).results;
 }
 
 void mixed(io::Case& case_, fem::PressureSpace space, Real d) {
@@ -34,11 +40,14 @@ void mixed(io::Case& case_, fem::PressureSpace space, Real d) {
 }
 
 TEST(MixedFormulation, Q1OnePointPenaltyAndQ1P0GiveTheSameSolution) {
-  const post::Results penalty = solve([](io::Case& c) {
-    c.element = fem::ElementKind::Q1;
-    c.mesh_size = 1.0;
-    c.volumetric_points = 1;
-  });
+  const app::Simulation penalty_run = simulate(
+      [](io::Case& c) {
+        c.element = fem::ElementKind::Q1;
+        c.mesh_size = 1.0;
+        c.volumetric_points = 1;
+      },
+      true);
+  const post::Results& penalty = penalty_run.results;
   const post::Results q1p0 = solve([](io::Case& c) {
     c.element = fem::ElementKind::Q1;
     c.mesh_size = 1.0;
@@ -47,14 +56,28 @@ TEST(MixedFormulation, Q1OnePointPenaltyAndQ1P0GiveTheSameSolution) {
   ASSERT_TRUE(penalty.converged());
   ASSERT_TRUE(q1p0.converged());
   EXPECT_EQ(penalty.iterations, q1p0.iterations);
-  // Same matrices up to round-off, so the same iterates: agreement far below δ.
-  EXPECT_TRUE(approx(q1p0.pressure.ram_reaction, penalty.pressure.ram_reaction, 1e-10));
+  // Same matrices up to round-off (the condensed P0 block sums the one-point
+  // penalty's terms in another order), so the same iterates: each secant solve
+  // differs by its forward error, ≲ ε·κ(K) relative with κ = 1/rcond at the
+  // solution, and the linear contraction of the secant loop keeps that from
+  // growing across iterations; 10 covers the iterations' accumulation. The
+  // pressures are K-weighted sums of u: the same relative bound, ten times more
+  // for the cell pressures (1/d times a divergence: one more cancellation).
+  ASSERT_TRUE(penalty_run.reciprocal_condition);
+  const double round_off =
+      10 * std::numeric_limits<double>::epsilon() / *penalty_run.reciprocal_condition;
+  EXPECT_TRUE(approx(q1p0.pressure.ram_reaction, penalty.pressure.ram_reaction, round_off));
   EXPECT_TRUE(approx(q1p0.pressure.mean_hydrostatic_near_ram,
-                     penalty.pressure.mean_hydrostatic_near_ram, 1e-10));
+                     penalty.pressure.mean_hydrostatic_near_ram, round_off));
   EXPECT_LT((q1p0.fields.cell_hydrostatic_stress - penalty.fields.cell_hydrostatic_stress).norm(),
-            1e-9 * penalty.fields.cell_hydrostatic_stress.norm());
+            10 * round_off * penalty.fields.cell_hydrostatic_stress.norm());
   EXPECT_LT((q1p0.fields.velocity - penalty.fields.velocity).norm(),
-            1e-10 * penalty.fields.velocity.norm());
+            round_off * penalty.fields.velocity.norm());
+  std::printf("Q1 one-point penalty vs Q1-P0: rcond %.3e, reaction difference %.3e (bound %.3e)\n",
+              *penalty_run.reciprocal_condition,
+              std::abs(q1p0.pressure.ram_reaction - penalty.pressure.ram_reaction) /
+                  penalty.pressure.ram_reaction,
+              round_off);
 }
 
 TEST(MixedFormulation, ExactIncompressibilityIsTheLimitOfThePerturbedMixedProblem) {

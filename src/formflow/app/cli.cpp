@@ -4,10 +4,13 @@
 
 #include "formflow/app/monitor.hpp"
 #include "formflow/app/simulation.hpp"
+#include "formflow/app/stop_signals.hpp"
 #include "formflow/app/study.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/mesh_input.hpp"
+#include "formflow/io/output_directory.hpp"
+#include "formflow/io/output_error.hpp"
 #include "formflow/io/results_writer.hpp"
 
 #include <CLI/CLI.hpp>
@@ -39,8 +42,17 @@ std::vector<io::Override> parse_assignments(const std::vector<std::string>& assi
   return overrides;
 }
 
+/// A signal that came while the results were being moved into place: the
+/// commit was finished rather than broken, so the new set is complete.
+int report_late_signal(const std::string& directory) {
+  fmt::print(stderr, "formflow: stopped by a signal; the results in {} are complete\n", directory);
+  return signal_exit_code(stop_signal());
+}
+
 int run_case(const Options& options) {
   const io::Case case_ = io::load_case(options.case_path, parse_assignments(options.assignments));
+  // Before the solve: a -o that cannot take the results costs nothing (exit 2).
+  io::check_output_directory(options.output_directory, io::result_file_names());
   Monitor monitor(stdout, case_.solver.tolerance);
   const bool show = !options.quiet && !options.json;
   if (show) {
@@ -52,18 +64,24 @@ int run_case(const Options& options) {
                case_.volumetric_points, case_.friction.mu);
     monitor.header();
   }
-  IterationCallback callback;
-  if (show) callback = [&monitor](const solvers::IterationRecord& record) { monitor(record); };
+  // Every iteration is a safe point to stop at after SIGINT/SIGTERM (app/stop_signals.hpp).
+  const IterationCallback callback = [&monitor, show](const solvers::IterationRecord& record) {
+    throw_if_signalled();
+    if (show) monitor(record);
+  };
   const Simulation simulation = simulate(case_, callback);
   const post::Results& results = simulation.results;
-  io::write_results(options.output_directory, case_, simulation.mesh, results);
+  io::write_results(options.output_directory, case_, simulation.mesh, results,
+                    signal_stop_request());
+  if (stop_signal() != 0) return report_late_signal(options.output_directory);
 
   if (options.json) fmt::print("{}\n", io::summary_json(case_, results));
   const std::string reason(solvers::stop_reason_name(results.stop_reason));
   if (!results.converged()) {
     fmt::print(stderr,
                "formflow: NOT CONVERGED ({}) after {} iterations; results in {} are marked "
-               "converged: false\n",
+               "so (summary.json converged: false, a comment in the CSVs and fields.vtu, a red "
+               "mark on the pictures)\n",
                reason, results.iterations, options.output_directory);
     return NotConverged;
   }
@@ -165,6 +183,15 @@ int run_cli(int argc, char** argv) {
   } catch (const InputError& error) {
     fmt::print(stderr, "error: {}\n", error.what());
     return BadInput;
+  } catch (const Stopped& stop) {
+    fmt::print(stderr, "formflow: {}; the output directory was left as it was\n", stop.what());
+    return stop_signal() != 0 ? signal_exit_code(stop_signal()) : InternalFailure;
+  } catch (const io::OutputError& error) {
+    fmt::print(stderr,
+               "formflow: cannot write the results: {}; the output directory was left "
+               "as it was\n",
+               error.what());
+    return InternalFailure;
   } catch (const std::exception& error) {
     fmt::print(stderr, "formflow: internal error: {}\n", error.what());
     return InternalFailure;

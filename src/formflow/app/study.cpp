@@ -102,14 +102,15 @@ StudyPlan plan_study(const std::string& case_path, const std::string& vary,
 }
 
 post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
-                           const std::function<void(const post::StudyRung&)>& on_rung) {
+                           const std::function<void(const post::StudyRung&)>& on_rung,
+                           const IterationCallback& on_iteration) {
   const io::CaseKey* key = io::find_case_key(plan.key);
   FF_ASSERT(key, "plan_study checked the key");
   post::StudyTable table{plan.key, plan.description, {}, std::nullopt, std::nullopt};
   std::vector<Simulation> simulations;
   for (std::size_t k = 0; k < plan.cases.size(); ++k) {
     const auto start = std::chrono::steady_clock::now();
-    Simulation simulation = simulate(plan.cases[k], {}, estimate_condition);
+    Simulation simulation = simulate(plan.cases[k], on_iteration, estimate_condition);
     post::StudyRung rung;
     rung.value_text = plan.values[k];
     rung.parameter = numeric_value(*key, plan.cases[k]);

@@ -2,6 +2,7 @@
 // `formflow study`: a ladder of runs over one case key, with error norms and observed orders.
 #pragma once
 
+#include "formflow/app/simulation.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/post/study_table.hpp"
 
@@ -30,9 +31,11 @@ StudyPlan plan_study(const std::string& case_path, const std::string& vary,
 /// Solves every rung in order. Rungs with the same mesh as the last one also
 /// get ‖u − u_last‖ (the last rung is the reference of a penalty or
 /// regularisation ladder). `estimate_condition` adds CHOLMOD's rcond of K(u).
-/// `on_rung` is called after each rung (for progress lines).
+/// `on_rung` is called after each rung (for progress lines), `on_iteration`
+/// after every nonlinear iteration of every rung (a safe point to stop at).
 post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
-                           const std::function<void(const post::StudyRung&)>& on_rung = {});
+                           const std::function<void(const post::StudyRung&)>& on_rung = {},
+                           const IterationCallback& on_iteration = {});
 
 } // namespace formflow::app
 

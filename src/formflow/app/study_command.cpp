@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The `formflow study` subcommand: progress lines, files, exit code.
 #include "formflow/app/cli.hpp"
+#include "formflow/app/stop_signals.hpp"
 #include "formflow/app/study.hpp"
+#include "formflow/io/output_directory.hpp"
 #include "formflow/io/study_files.hpp"
 
 #include <fmt/format.h>
@@ -22,6 +24,8 @@ std::string cell(const std::optional<Real>& value, const char* format) {
 
 int study_command(const StudyCommand& command) {
   const StudyPlan plan = plan_study(command.case_path, command.vary, command.overrides);
+  // Before the first rung: a -o that cannot take the files costs nothing (exit 2).
+  io::check_output_directory(command.output_directory, io::study_file_names());
   if (!command.quiet)
     fmt::print(
         "formflow study of {} over {} rungs ({})\n{:>12} {:>9} {:>5} {:>11} {:>12} {:>12} {:>10}\n",
@@ -37,8 +41,15 @@ int study_command(const StudyCommand& command) {
                solvers::stop_reason_name(rung.stop_reason));
     std::fflush(stdout);
   };
-  const post::StudyTable table = run_study(plan, command.estimate_condition, progress);
-  io::write_study(command.output_directory, table);
+  const post::StudyTable table =
+      run_study(plan, command.estimate_condition, progress,
+                [](const solvers::IterationRecord&) { throw_if_signalled(); });
+  io::write_study(command.output_directory, table, signal_stop_request());
+  if (stop_signal() != 0) {
+    fmt::print(stderr, "formflow: stopped by a signal; the study in {} is complete\n",
+               command.output_directory);
+    return signal_exit_code(stop_signal());
+  }
   if (!command.quiet) {
     fmt::print("observed orders (between a rung and the one before it):\n");
     for (const post::StudyRung& rung : table.rungs)

@@ -40,8 +40,15 @@ std::string_view part_name(int part) {
 
 } // namespace
 
-std::string history_csv(std::span<const solvers::IterationRecord> history) {
-  std::string out = "iteration,relative_change,pressure,seconds\n";
+std::string not_converged_line(solvers::StopReason stop_reason) {
+  if (stop_reason == solvers::StopReason::Converged) return {};
+  return fmt::format("# not converged: {}\n", solvers::stop_reason_name(stop_reason));
+}
+
+std::string history_csv(std::span<const solvers::IterationRecord> history,
+                        solvers::StopReason stop_reason) {
+  std::string out =
+      not_converged_line(stop_reason) + "iteration,relative_change,pressure,seconds\n";
   std::size_t row = 0;
   for (const auto& record : history) {
     ++row;
@@ -55,8 +62,10 @@ std::string history_csv(std::span<const solvers::IterationRecord> history) {
   return out;
 }
 
-std::string contact_csv(std::span<const post::ContactSample> contact) {
-  std::string out = "s,x,y,contact_pressure,friction_stress,slip_velocity,state,part\n";
+std::string contact_csv(std::span<const post::ContactSample> contact,
+                        solvers::StopReason stop_reason) {
+  std::string out = not_converged_line(stop_reason) +
+                    "s,x,y,contact_pressure,friction_stress,slip_velocity,state,part\n";
   std::size_t row = 0;
   for (const auto& sample : contact) {
     ++row;

@@ -10,15 +10,26 @@
 
 namespace formflow::io {
 
-/// history.csv: header `iteration,relative_change,pressure,seconds`, then one
-/// row per record in the given order, reals as `{:.10g}`.
-/// Throws InternalError naming row and column if a value is not finite.
-std::string history_csv(std::span<const solvers::IterationRecord> history);
+/// The first line of a CSV file of a run that stopped for `stop_reason` other
+/// than Converged: `# not converged: <stop_reason>`; "" for a converged run.
+/// A comment line, so readers told about `#` comments (pandas `comment='#'`,
+/// numpy `loadtxt`, gnuplot) skip it, and one that does not sees a malformed
+/// first row instead of silently taking an unconverged iterate for a result.
+std::string not_converged_line(solvers::StopReason stop_reason);
 
-/// contact.csv: header `s,x,y,contact_pressure,friction_stress,slip_velocity,state,part`,
+/// history.csv: not_converged_line(stop_reason), header
+/// `iteration,relative_change,pressure,seconds`, then one row per record in
+/// the given order, reals as `{:.10g}`.
+/// Throws InternalError naming row and column if a value is not finite.
+std::string history_csv(std::span<const solvers::IterationRecord> history,
+                        solvers::StopReason stop_reason = solvers::StopReason::Converged);
+
+/// contact.csv: not_converged_line(stop_reason), header
+/// `s,x,y,contact_pressure,friction_stress,slip_velocity,state,part`,
 /// one row per sample in the given order (the solver sorts by s); `state` is
 /// `stick` or `slip`, `part` is `container` or `die`.
 /// Throws InternalError naming row and column if a value is not finite.
-std::string contact_csv(std::span<const post::ContactSample> contact);
+std::string contact_csv(std::span<const post::ContactSample> contact,
+                        solvers::StopReason stop_reason = solvers::StopReason::Converged);
 
 } // namespace formflow::io

@@ -1,21 +1,33 @@
 // SPDX-License-Identifier: MIT
-// Writes every result file of a run into an output directory, atomically.
+// Writes every result file of a run into an output directory, as one atomic set.
 #pragma once
 
+#include "formflow/core/stop_request.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/mesh/mesh.hpp"
 #include "formflow/post/results.hpp"
 
+#include <span>
 #include <string>
 
 namespace formflow::io {
 
-/// Writes summary.json, history.csv, contact.csv, fields.vtu and the pictures
-/// into `directory` (created if missing). Each file goes to a temporary name
-/// first and is renamed into place, so no file is ever half-written.
-/// Non-finite numbers are never written (they would become JSON null).
+/// Every file write_results writes: summary.json, history.csv, contact.csv,
+/// fields.vtu and each picture's .png and .svg. check_output_directory takes
+/// this list before the solve.
+std::span<const std::string> result_file_names();
+
+/// Writes the files of result_file_names() into `directory` (created if
+/// missing) as one set (io/result_set.hpp): all built in memory first (and
+/// checked for non-finite numbers: InternalError, nothing written), then
+/// staged and moved in with summary.json last, so a reader sees the previous
+/// set or the complete new one. `stop_requested` is asked between files
+/// (throws Stopped, directory unchanged). A run that did not converge says so
+/// in every file: summary.json `converged: false`, a `# not converged: <reason>`
+/// first line in the CSVs, FieldData `converged` = 0 in fields.vtu and a red
+/// mark on the pictures. Throws OutputError if the disk refuses the files.
 void write_results(const std::string& directory, const Case& case_, const mesh::Mesh<2>& mesh,
-                   const post::Results& results);
+                   const post::Results& results, const StopRequested& stop_requested = {});
 
 /// The summary.json document as text (also what `formflow run --json` prints).
 std::string summary_json(const Case& case_, const post::Results& results);

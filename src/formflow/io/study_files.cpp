@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
-// study.csv and the study pictures, written atomically.
+// study.csv and the study pictures, published as one set.
 #include "formflow/io/study_files.hpp"
 
-#include "formflow/io/atomic_file.hpp"
 #include "formflow/io/plot/study_plot.hpp"
+#include "formflow/io/result_set.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <filesystem>
 #include <iterator>
 #include <optional>
+#include <vector>
 
 namespace formflow::io {
 
@@ -76,18 +76,25 @@ std::string corner_csv(const post::StudyTable& table) {
   return out;
 }
 
-void write_study(const std::string& directory, const post::StudyTable& table) {
-  const std::filesystem::path folder(directory);
-  std::filesystem::create_directories(folder);
-  const plot::Picture picture = plot::render_study_plot(table);
-  write_file_atomically(folder / "study.csv", study_csv(table));
-  write_file_atomically(folder / "study.png", picture.png);
-  write_file_atomically(folder / "study.svg", picture.svg);
-  if (!table.has_corner_profiles()) return;
-  const plot::Picture corner = plot::render_corner_plot(table);
-  write_file_atomically(folder / "corner.csv", corner_csv(table));
-  write_file_atomically(folder / "corner.png", corner.png);
-  write_file_atomically(folder / "corner.svg", corner.svg);
+std::span<const std::string> study_file_names() {
+  static const std::vector<std::string> names = {"study.csv",  "study.png",  "study.svg",
+                                                 "corner.csv", "corner.png", "corner.svg"};
+  return names;
+}
+
+void write_study(const std::string& directory, const post::StudyTable& table,
+                 const StopRequested& stop_requested) {
+  plot::Picture picture = plot::render_study_plot(table);
+  std::vector<ResultFile> files = {{"study.csv", study_csv(table)},
+                                   {"study.png", std::move(picture.png)},
+                                   {"study.svg", std::move(picture.svg)}};
+  if (table.has_corner_profiles()) {
+    plot::Picture corner = plot::render_corner_plot(table);
+    files.push_back({"corner.csv", corner_csv(table)});
+    files.push_back({"corner.png", std::move(corner.png)});
+    files.push_back({"corner.svg", std::move(corner.svg)});
+  }
+  publish_result_set(directory, files, "study.csv", study_file_names(), stop_requested);
 }
 
 } // namespace formflow::io

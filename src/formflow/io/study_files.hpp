@@ -2,8 +2,10 @@
 // The files of a parameter study: study.csv and the log-log picture study.png/.svg.
 #pragma once
 
+#include "formflow/core/stop_request.hpp"
 #include "formflow/post/study_table.hpp"
 
+#include <span>
 #include <string>
 
 namespace formflow::io {
@@ -19,9 +21,16 @@ std::string study_csv(const post::StudyTable& table);
 /// profile of every rung that has one.
 std::string corner_csv(const post::StudyTable& table);
 
+/// Every file write_study may write: study.csv/.png/.svg, corner.csv/.png/.svg.
+std::span<const std::string> study_file_names();
+
 /// Writes study.csv, study.png and study.svg into `directory` (created if
-/// missing), each through a temporary file and a rename; with corner
-/// profiles also corner.csv, corner.png and corner.svg.
-void write_study(const std::string& directory, const post::StudyTable& table);
+/// missing), with corner profiles also corner.csv, corner.png and corner.svg,
+/// as one set (io/result_set.hpp, study.csv last); corner files of an older
+/// study that this one lacks are removed with the commit. `stop_requested`
+/// is asked between files (throws Stopped, directory unchanged). Throws
+/// OutputError if the disk refuses the files (directory unchanged).
+void write_study(const std::string& directory, const post::StudyTable& table,
+                 const StopRequested& stop_requested = {});
 
 } // namespace formflow::io

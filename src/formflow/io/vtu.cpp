@@ -152,19 +152,31 @@ std::span<const int> vtk_node_order(int order) {
   throw InternalError(fmt::format("fields.vtu: no VTK node order for order {}", order));
 }
 
-std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
+std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields,
+                       solvers::StopReason stop_reason) {
   if (mesh.nodes_per_cell() != static_cast<int>(vtk_node_order(mesh.order).size()))
     throw InternalError("fields.vtu: cells do not have (order + 1)^2 nodes");
   check_fields(mesh, fields);
   std::string text;
   Out out(text);
+  const bool converged = stop_reason == solvers::StopReason::Converged;
+  fmt::format_to(out, "<?xml version=\"1.0\"?>\n");
+  // Stop reasons are fixed lower-case words: nothing to escape inside the comment.
+  if (!converged)
+    fmt::format_to(out,
+                   "<!-- NOT CONVERGED ({}): these fields are the last iterate, not a "
+                   "solution -->\n",
+                   solvers::stop_reason_name(stop_reason));
   fmt::format_to(out,
-                 "<?xml version=\"1.0\"?>\n"
                  "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
                  "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
                  "  <UnstructuredGrid>\n"
+                 "    <FieldData>\n"
+                 "      <DataArray type=\"Int32\" Name=\"converged\" NumberOfTuples=\"1\" "
+                 "format=\"ascii\">{}</DataArray>\n"
+                 "    </FieldData>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
-                 mesh.n_nodes(), mesh.n_cells());
+                 converged ? 1 : 0, mesh.n_nodes(), mesh.n_cells());
   points_section(out, mesh);
   cells_section(out, mesh);
   point_data_section(out, mesh, fields);

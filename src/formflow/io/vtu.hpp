@@ -4,6 +4,7 @@
 
 #include "formflow/mesh/mesh.hpp"
 #include "formflow/post/results.hpp"
+#include "formflow/solvers/stop_reason.hpp"
 
 #include <array>
 #include <span>
@@ -24,7 +25,12 @@ std::span<const int> vtk_node_order(int order);
 /// hydrostatic_stress (σ_H, tension positive), hydrostatic_pressure (−σ_H),
 /// contact_pressure, friction_stress. Cell data: equivalent_strain_rate,
 /// hydrostatic_stress, hydrostatic_pressure (cell means) and cell_id.
+/// Field data (one value for the whole grid, shown by ParaView's
+/// Information panel and read by any VTK reader): Int32 `converged`, 1 or 0;
+/// a run that stopped for another `stop_reason` also carries an XML comment
+/// `NOT CONVERGED (<stop_reason>)` at the top of the file.
 /// Throws InternalError if a field has the wrong size or a non-finite value.
-std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields);
+std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields,
+                       solvers::StopReason stop_reason = solvers::StopReason::Converged);
 
 } // namespace formflow::io

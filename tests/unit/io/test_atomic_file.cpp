@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Atomic writes: complete file or none, and never a stray temporary.
 #include "formflow/io/atomic_file.hpp"
+#include "formflow/io/output_error.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -55,19 +57,12 @@ TEST_F(AtomicFile, ReplacesAnExistingFile) {
 }
 
 TEST_F(AtomicFile, WriterThrowingMidwayLeavesNoFileAndNoTemporary) {
-  bool wrote_something = false;
   EXPECT_THROW(io::write_file_atomically(directory_ / "broken.csv",
                                          [&](std::ostream& stream) {
                                            stream << "iteration,relative_change\n1,0.5\n";
-                                           stream.flush();
-                                           // The temporary really exists with data at this point.
-                                           wrote_something =
-                                               std::filesystem::file_size(io::temporary_path(
-                                                   directory_ / "broken.csv")) > 0;
                                            throw std::runtime_error("solver exploded");
                                          }),
                std::runtime_error);
-  EXPECT_TRUE(wrote_something);
   EXPECT_FALSE(std::filesystem::exists(directory_ / "broken.csv"));
   EXPECT_TRUE(entries().empty());
 }
@@ -90,10 +85,32 @@ TEST_F(AtomicFile, MissingDirectoryThrowsAndCreatesNothing) {
   EXPECT_TRUE(entries().empty());
 }
 
-TEST_F(AtomicFile, TemporaryNameIsBesideTheTargetWithThePid) {
-  const auto temporary = io::temporary_path(directory_ / "fields.vtu");
-  EXPECT_EQ(temporary.parent_path(), directory_);
-  EXPECT_EQ(temporary.filename().string(), "fields.vtu.tmp." + std::to_string(::getpid()));
+// Issue 14 item 7: the temporary used to be `<name>.tmp.<pid>`, opened without
+// O_EXCL/O_NOFOLLOW, so a link planted there made formflow overwrite its target.
+TEST_F(AtomicFile, LinkPlantedAtThePredictableTemporaryNameIsNotFollowed) {
+  const auto victim = directory_ / "victim.txt";
+  { std::ofstream(victim) << "precious"; }
+  const auto planted = directory_ / ("fields.vtu.tmp." + std::to_string(::getpid()));
+  std::filesystem::create_symlink(victim, planted);
+  io::write_file_atomically(directory_ / "fields.vtu", "new fields");
+  EXPECT_EQ(contents(victim), "precious");
+  EXPECT_EQ(contents(directory_ / "fields.vtu"), "new fields");
+  EXPECT_FALSE(std::filesystem::is_symlink(directory_ / "fields.vtu"));
+  EXPECT_TRUE(std::filesystem::is_symlink(planted)); // left alone, not replaced or followed
+  EXPECT_EQ(entries(), (std::set<std::string>{"fields.vtu", "victim.txt", planted.filename()}));
+}
+
+TEST_F(AtomicFile, NewFileRefusesALinkAtItsNameAndLeavesItsTargetAlone) {
+  const auto victim = directory_ / "victim.txt";
+  { std::ofstream(victim) << "precious"; }
+  std::filesystem::create_symlink(victim, directory_ / "summary.json");
+  const int fd = ::open(directory_.c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(fd, 0);
+  EXPECT_THROW(io::write_new_file(fd, "summary.json", "{}", directory_ / "summary.json"),
+               io::OutputError);
+  ::close(fd);
+  EXPECT_EQ(contents(victim), "precious");
+  EXPECT_TRUE(std::filesystem::is_symlink(directory_ / "summary.json"));
 }
 
 } // namespace

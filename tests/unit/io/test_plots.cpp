@@ -49,6 +49,38 @@ plot::Rgb pixel(cairo_surface_t* surface, double x, double y) {
   return {((value >> 16) & 0xff) / 255.0, ((value >> 8) & 0xff) / 255.0, (value & 0xff) / 255.0};
 }
 
+/// Decodes PNG bytes held in memory; null if they do not decode.
+SurfacePtr decode_png_bytes(const std::string& bytes) {
+  struct Reader {
+    const std::string& bytes;
+    std::size_t at = 0;
+  } reader{bytes};
+  auto read = [](void* closure, unsigned char* data, unsigned int length) {
+    auto* source = static_cast<Reader*>(closure);
+    if (source->at + length > source->bytes.size()) return CAIRO_STATUS_READ_ERROR;
+    std::memcpy(data, source->bytes.data() + source->at, length);
+    source->at += length;
+    return CAIRO_STATUS_SUCCESS;
+  };
+  SurfacePtr surface(cairo_image_surface_create_from_png_stream(read, &reader),
+                     &cairo_surface_destroy);
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+    return {nullptr, &cairo_surface_destroy};
+  cairo_surface_flush(surface.get());
+  return surface;
+}
+
+/// Pixels in `area` that are strongly red (the not-converged mark's colour).
+int red_pixels(cairo_surface_t* surface, const plot::Rect& area) {
+  int count = 0;
+  for (int y = static_cast<int>(area.y); y < static_cast<int>(area.bottom()); ++y)
+    for (int x = static_cast<int>(area.x); x < static_cast<int>(area.right()); ++x) {
+      const plot::Rgb colour = pixel(surface, x, y);
+      count += colour.r > 0.6 && colour.g < 0.3 && colour.b < 0.3;
+    }
+  return count;
+}
+
 std::size_t distinct_colours(cairo_surface_t* surface) {
   std::set<std::uint32_t> colours;
   const unsigned char* data = cairo_image_surface_get_data(surface);
@@ -163,6 +195,33 @@ TEST(PicturesWithoutData, EmptyHistoryAndContactStillRender) {
   for (const auto& picture : pictures) {
     EXPECT_EQ(picture.png.substr(1, 3), "PNG") << picture.name;
     EXPECT_GT(picture.svg.size(), 100u) << picture.name;
+  }
+}
+
+TEST(PicturesOfAnUnconvergedRun, EveryPictureCarriesARedMark) {
+  // Issue 14: only the grey subtitle said "NOT converged"; a picture of the last
+  // iterate must not pass for a solution at a glance.
+  io::Case case_;
+  mesh::Mesh<2> mesh;
+  post::Results results;
+  make_synthetic_run(2, 2.5, case_, mesh, results);
+  const plot::Rect left_edge{0, 100, 3, 400}, corner_label{8, 8, 130, 34};
+  for (const bool converged : {true, false}) {
+    results.stop_reason =
+        converged ? solvers::StopReason::Converged : solvers::StopReason::MaxIterations;
+    for (const auto& picture : plot::render_pictures(case_, mesh, results)) {
+      const SurfacePtr surface = decode_png_bytes(picture.png);
+      ASSERT_TRUE(surface) << picture.name;
+      const int frame = red_pixels(surface.get(), left_edge);
+      const int label = red_pixels(surface.get(), corner_label);
+      if (converged) {
+        EXPECT_EQ(frame, 0) << picture.name;
+        EXPECT_EQ(label, 0) << picture.name;
+      } else {
+        EXPECT_EQ(frame, 3 * 400) << picture.name; // the frame covers the edge entirely
+        EXPECT_GT(label, 200) << picture.name;     // bold letters, not a stray pixel
+      }
+    }
   }
 }
 

@@ -404,6 +404,33 @@ TEST_F(ResultsFiles, NonFiniteCsvValueThrowsNamingRowAndColumn) {
   EXPECT_THROW(io::history_csv(results_.history), InternalError);
 }
 
+TEST_F(ResultsFiles, CsvOfAnUnconvergedRunStartsWithACommentNamingTheStopReason) {
+  // Issue 14: the not-converged mark was in summary.json only.
+  const std::string converged = io::history_csv(results_.history);
+  const std::string history = io::history_csv(results_.history, solvers::StopReason::Diverged);
+  EXPECT_EQ(history, "# not converged: diverged\n" + converged);
+  const std::string contact = io::contact_csv(results_.contact, solvers::StopReason::MaxIterations);
+  EXPECT_EQ(contact, "# not converged: max_iterations\n" + io::contact_csv(results_.contact));
+  EXPECT_EQ(converged.find('#'), std::string::npos); // a converged run has no comment
+}
+
+TEST_F(ResultsFiles, EveryFileOfAnUnconvergedRunSaysSo) {
+  const ScratchDirectory scratch("unconverged");
+  results_.stop_reason = solvers::StopReason::MaxIterations;
+  io::write_results(scratch.path.string(), case_, mesh_, results_);
+  auto read = [&](const char* name) {
+    std::ifstream file(scratch.path / name);
+    return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(nlohmann::json::parse(read("summary.json")).at("converged"), false);
+  for (const char* csv : {"history.csv", "contact.csv"})
+    EXPECT_EQ(read(csv).rfind("# not converged: max_iterations\n", 0), 0u) << csv;
+  const std::string vtu = read("fields.vtu");
+  EXPECT_NE(vtu.find("Name=\"converged\" NumberOfTuples=\"1\" format=\"ascii\">0<"),
+            std::string::npos);
+  EXPECT_NE(vtu.find("NOT CONVERGED (max_iterations)"), std::string::npos);
+}
+
 TEST_F(ResultsFiles, EmptyTablesHaveOnlyTheHeader) {
   EXPECT_EQ(io::history_csv({}), "iteration,relative_change,pressure,seconds\n");
   EXPECT_EQ(io::contact_csv({}),

@@ -154,6 +154,18 @@ TEST_P(VtuReadBack, CellDataMatchesTheFields) {
   }
 }
 
+TEST_P(VtuReadBack, FieldDataSaysWhetherTheRunConverged) {
+  const auto& converged = seen_["field_data"]["converged"];
+  EXPECT_EQ(converged["values"], nlohmann::json::array({1.0}));
+  const std::string text =
+      io::fields_vtu(mesh_, results_.fields, solvers::StopReason::MaxIterations);
+  EXPECT_NE(text.find("<!-- NOT CONVERGED (max_iterations)"), std::string::npos);
+  const auto unconverged = read_with_vtk(text, "vtu_unconverged_q" + std::to_string(GetParam()));
+  EXPECT_EQ(unconverged["field_data"]["converged"]["values"], nlohmann::json::array({0.0}));
+  // The fields themselves are written all the same: the last iterate, marked.
+  EXPECT_EQ(unconverged["n_points"], mesh_.n_nodes());
+}
+
 INSTANTIATE_TEST_SUITE_P(Orders, VtuReadBack, ::testing::Values(1, 2),
                          [](const auto& info) { return "Q" + std::to_string(info.param); });
 

@@ -2,12 +2,14 @@
 // Rendering all pictures of a run, and the layout and subtitle they share.
 #include "formflow/io/plot/pictures.hpp"
 
+#include "formflow/core/error.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/plot/mesh_drawing.hpp"
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <iterator>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -70,20 +72,38 @@ Rect graph_area() {
   return {92, 72, picture_width - 92 - 100, picture_height - 72 - 84};
 }
 
+std::span<const std::string> picture_names() {
+  static const std::vector<std::string> names = {"strain_rate", "velocity", "pressure", "contact",
+                                                 "convergence"};
+  return names;
+}
+
+void draw_not_converged_mark(const Canvas& canvas, solvers::StopReason stop_reason) {
+  const Rgb red{0.8, 0.05, 0.05};
+  constexpr double frame = 4.0; // pixels: unmissable, yet clear of the axes and labels
+  canvas.stroke_rect({0.5 * frame, 0.5 * frame, canvas.width() - frame, canvas.height() - frame},
+                     {frame, red});
+  canvas.text({12, 10}, "NOT CONVERGED", Font{14.0, true, red}, HAlign::Left, VAlign::Top);
+  canvas.text({12, 28}, std::string(solvers::stop_reason_name(stop_reason)), Font{11.0, false, red},
+              HAlign::Left, VAlign::Top);
+}
+
 std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mesh,
                                      const post::Results& results) {
   const PictureData data{case_, mesh, results};
   using DrawPicture = void (*)(const Canvas&, const PictureData&);
-  const std::pair<const char*, DrawPicture> pictures[] = {{"strain_rate", draw_strain_rate},
-                                                          {"velocity", draw_velocity},
-                                                          {"pressure", draw_pressure},
-                                                          {"contact", draw_contact},
-                                                          {"convergence", draw_convergence}};
+  const DrawPicture drawings[] = {draw_strain_rate, draw_velocity, draw_pressure, draw_contact,
+                                  draw_convergence};
+  const std::span<const std::string> names = picture_names();
+  FF_ASSERT(names.size() == std::size(drawings), "one name per picture");
   std::vector<Picture> out;
-  for (const auto& [name, draw] : pictures) {
-    const DrawPicture picture = draw;
-    const DrawFunction function = [&data, picture](Canvas& canvas) { picture(canvas, data); };
-    out.push_back({name, render_png(picture_width, picture_height, function),
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const DrawPicture picture = drawings[k];
+    const DrawFunction function = [&data, picture](Canvas& canvas) {
+      picture(canvas, data);
+      if (!data.results.converged()) draw_not_converged_mark(canvas, data.results.stop_reason);
+    };
+    out.push_back({names[k], render_png(picture_width, picture_height, function),
                    render_svg(picture_width, picture_height, function)});
   }
   return out;

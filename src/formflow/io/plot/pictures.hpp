@@ -8,6 +8,7 @@
 #include "formflow/mesh/mesh.hpp"
 #include "formflow/post/results.hpp"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -46,8 +47,19 @@ void draw_contact(const Canvas& canvas, const PictureData& data);
 /// Relative change per iteration (log) with the tolerance, and the pressure history.
 void draw_convergence(const Canvas& canvas, const PictureData& data);
 
-/// Every picture above, in that order, named strain_rate, velocity, pressure,
-/// contact, convergence. Throws std::runtime_error if cairo fails.
+/// The stems of the pictures render_pictures draws, in its order:
+/// strain_rate, velocity, pressure, contact, convergence.
+std::span<const std::string> picture_names();
+
+/// The mark of a run that did not converge, drawn over a finished picture: a
+/// red frame round the whole canvas and "NOT CONVERGED" with the stop reason
+/// in red in its top-left corner, clear of the centred title. A picture of
+/// the last iterate must not pass for a picture of a solution.
+void draw_not_converged_mark(const Canvas& canvas, solvers::StopReason stop_reason);
+
+/// Every picture above, in the order of picture_names(); a run that did not
+/// converge carries draw_not_converged_mark on each. Throws std::runtime_error
+/// if cairo fails.
 std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mesh,
                                      const post::Results& results);
 
