@@ -66,9 +66,7 @@ StudyPlan plan_study(const std::string& case_path, const std::string& vary,
   StudyPlan plan;
   plan.key = trimmed(vary.substr(0, equals));
   const io::CaseKey* key = io::find_case_key(plan.key);
-  if (!key)
-    throw InputError("--vary", 0, plan.key, "unknown key",
-                     fmt::format("did you mean `{}`?", io::closest_case_key(plan.key)));
+  if (!key) throw InputError("--vary", 0, plan.key, "unknown key", io::unknown_key_hint(plan.key));
   if (key->type != io::KeyType::Real && key->type != io::KeyType::Integer)
     throw InputError("--vary", 0, plan.key, "a study varies a numeric key",
                      "e.g. mesh.size, penalty.d, penalty.dT, friction.radius");

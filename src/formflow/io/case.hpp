@@ -59,6 +59,10 @@ struct Case {
   /// By dotted key name; entries of a table key as "key.entry" ("mesh.boundaries.ram").
   /// Keys left at their defaults are absent.
   std::map<std::string, KeyLocation> key_locations;
+
+  /// Lines for stderr about valid but doubtful choices ("file:line: ..."),
+  /// e.g. a locking complete volumetric rule with Q1.
+  std::vector<std::string> warnings;
 };
 
 /// One `--set key=value` override, in command-line order.

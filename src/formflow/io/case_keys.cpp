@@ -3,6 +3,8 @@
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/keys/key_spec.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -51,7 +53,8 @@ std::optional<KeyProblem> check_number(const CaseKey& key, Real value, const std
                                                                    : value >= *key.upper.value);
   if (!std::isfinite(value))
     return KeyProblem{"value " + text + " is not finite", "must be " + valid_values_text(key)};
-  if (below_lower || above_upper)
+  const bool too_small = key.smallest_nonzero && value != 0 && value < *key.smallest_nonzero;
+  if (below_lower || above_upper || too_small)
     return KeyProblem{"value " + text + " is out of range", "must be " + valid_values_text(key)};
   return std::nullopt;
 }
@@ -63,7 +66,14 @@ std::string quoted_choices(const CaseKey& key) {
   return text;
 }
 
+std::optional<KeyProblem> check_entry_count(const CaseKey& key, std::size_t count) {
+  if (key.max_entries == 0 || count <= key.max_entries) return std::nullopt;
+  return KeyProblem{fmt::format("{} entries, more than the limit of {}", count, key.max_entries),
+                    "must be " + valid_values_text(key)};
+}
+
 std::optional<KeyProblem> check_list(const CaseKey& key, const std::vector<std::string>& list) {
+  if (auto problem = check_entry_count(key, list.size())) return problem;
   for (std::size_t i = 0; i < list.size(); ++i) {
     if (std::find(key.choices.begin(), key.choices.end(), list[i]) == key.choices.end())
       return KeyProblem{"invalid entry \"" + list[i] + "\"",
@@ -121,36 +131,75 @@ bool is_case_section(std::string_view name) {
                      [name](const CaseSection& section) { return section.name == name; });
 }
 
-std::string_view closest_case_key(std::string_view name) {
+namespace {
+
+/// A suggestion and how many edits away from the name it is.
+struct Nearest {
+  std::string_view name;
+  std::size_t score = std::string_view::npos;
+};
+
+std::string_view leaf_of(std::string_view name) {
+  return name.find('.') == std::string_view::npos ? name : name.substr(name.rfind('.') + 1);
+}
+
+Nearest nearest_key(std::string_view name) {
+  // Longer names than any key cannot be typos of one; the distance would cost O(length).
+  if (name.size() > 64) return {};
   const std::string_view section = name.substr(0, name.find('.'));
-  const std::string_view leaf =
-      name.find('.') == std::string_view::npos ? name : name.substr(name.rfind('.') + 1);
-  std::string_view best;
-  std::size_t best_score = std::string_view::npos;
+  const std::string_view leaf = leaf_of(name);
+  Nearest best;
   for (const CaseKey& key : case_keys()) {
     // A right leaf in the wrong section (or no section) costs 2: `speed` → `process.speed`.
     const std::size_t leaf_score =
         edit_distance(leaf, key.leaf()) + (section == key.section() ? 0 : 2);
     const std::size_t score = std::min(edit_distance(name, key.name), leaf_score);
-    if (score < best_score) {
-      best_score = score;
-      best = key.name;
-    }
+    if (score < best.score) best = {key.name, score};
   }
   return best;
 }
 
-std::string_view closest_case_section(std::string_view name) {
-  std::string_view best;
-  std::size_t best_score = std::string_view::npos;
+Nearest nearest_section(std::string_view name) {
+  if (name.size() > 64) return {};
+  Nearest best;
   for (const CaseSection& section : case_sections()) {
     const std::size_t score = edit_distance(name, section.name);
-    if (score < best_score) {
-      best_score = score;
-      best = section.name;
-    }
+    if (score < best.score) best = {section.name, score};
   }
   return best;
+}
+
+/// A typo: two edits, or a third of the (leaf) name for long names.
+bool is_typo_distance(const Nearest& nearest, std::string_view typed) {
+  return nearest.score <= std::max<std::size_t>(2, typed.size() / 3);
+}
+
+} // namespace
+
+std::string_view closest_case_key(std::string_view name) {
+  return nearest_key(name).name;
+}
+
+std::string_view closest_case_section(std::string_view name) {
+  return nearest_section(name).name;
+}
+
+std::string unknown_key_hint(std::string_view name) {
+  const Nearest nearest = nearest_key(name);
+  if (!is_typo_distance(nearest, leaf_of(name)))
+    return "no key is close to it: `formflow case-reference` lists every key";
+  return "did you mean `" + std::string(nearest.name) + "`?";
+}
+
+std::string unknown_section_hint(std::string_view name) {
+  const Nearest nearest = nearest_section(name);
+  if (!is_typo_distance(nearest, name)) {
+    std::string sections;
+    for (const CaseSection& section : case_sections())
+      sections += (sections.empty() ? "" : ", ") + std::string(section.name);
+    return "no section is close to it; the sections are " + sections;
+  }
+  return "did you mean `[" + std::string(nearest.name) + "]`?";
 }
 
 std::optional<KeyProblem> check_key_value(const CaseKey& key, const KeyValue& value) {
@@ -171,6 +220,7 @@ std::optional<KeyProblem> check_key_value(const CaseKey& key, const KeyValue& va
   }
   case KeyType::StringList: return check_list(key, std::get<std::vector<std::string>>(value));
   case KeyType::PointList:
+    if (auto problem = check_entry_count(key, std::get<KeyPoints>(value).size())) return problem;
     for (const auto& point : std::get<KeyPoints>(value))
       if (!std::isfinite(point[0]) || !std::isfinite(point[1]))
         return KeyProblem{"a point is not finite", "give finite [x, y] pairs"};

@@ -24,4 +24,4 @@ std::vector<CaseKey> contact_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

@@ -31,17 +31,21 @@ KeySpec friction_parts_key() {
                   "and/or the die (its face and its land); [] = frictionless everywhere");
 }
 
-}  // namespace
+} // namespace
 
 std::vector<CaseKey> friction_keys() {
   return {
       real_key(
           "friction.mu", 0.0, [](auto& c) -> auto& { return c.friction.mu; })
-          .at_least(0)
+          .within(0, 10)
+          .why("μ_f σ̄_N beyond 10 σ̄_N exceeds any shear the metal can carry: the contact sticks; "
+               "the bound keeps τ_f finite")
           .doc("Coulomb coefficient μ_f of the nonlocal friction law τ_f = μ_f σ̄_N"),
       real_key(
           "friction.radius", 0.0, [](auto& c) -> auto& { return c.friction.radius; })
-          .at_least(0)
+          .zero_or_at_least(1e-6)
+          .at_most(1e6)
+          .why(length_range)
           .unit("length")
           .doc("mollifier radius h of the mean contact pressure σ̄_N; 0 = local pressure"),
       friction_parts_key(),
@@ -55,8 +59,8 @@ std::vector<CaseKey> friction_keys() {
                "(docs/friction.md)"),
       real_key(
           "friction.augmentation", 1.0, [](auto& c) -> auto& { return c.friction.augmentation; })
-          .above(0)
-          .at_most(1e6)
+          .within(1e-6, 1e6)
+          .why(factor_range)
           .unit("1/penalty.dN")
           .doc("exact friction with solver.method = \"secant\" (or a mixed formulation): "
                "augmentation r = value/d_N of λ_T = proj(λ_T + r u_T); "
@@ -64,8 +68,8 @@ std::vector<CaseKey> friction_keys() {
       real_key(
           "friction.newton_augmentation", 100.0,
           [](auto& c) -> auto& { return c.friction.newton_augmentation; })
-          .above(0)
-          .at_most(1e6)
+          .within(1e-6, 1e6)
+          .why(factor_range)
           .unit("1/penalty.dN")
           .doc("exact friction solved by Newton (solver.method = \"newton\"; penalty, or mixed "
                "with a condensed pressure): r = value/d_N; Newton's tangent carries the stick "
@@ -74,4 +78,4 @@ std::vector<CaseKey> friction_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys

@@ -42,4 +42,4 @@ std::vector<CaseKey> verification_keys() {
   };
 }
 
-}  // namespace formflow::io::keys
+} // namespace formflow::io::keys
