@@ -78,6 +78,9 @@ StudyPlan plan_study(const std::string& case_path, const std::string& vary,
       throw InputError("--vary", 0, plan.key, "empty value in the list",
                        "separate values by single commas: key=v1,v2,v3");
     plan.values.push_back(value);
+    if (plan.values.size() > max_study_rungs)
+      throw InputError("--vary", 0, plan.key, fmt::format("more than {} values", max_study_rungs),
+                       "a ladder needs a handful of rungs: each one is a whole solve");
     if (comma == std::string_view::npos) break;
     list.remove_prefix(comma + 1);
   }

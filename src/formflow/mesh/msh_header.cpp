@@ -36,7 +36,9 @@ std::vector<std::string_view> words(std::string_view line) {
 }
 
 std::string shown(std::string_view text) {
-  return "`" + printable_text(text, 60) + "`";
+  std::string quoted(1, '`'); // built in place: GCC 12 warns (-Wrestrict) on "`" + string&&
+  quoted += printable_text(text, 60);
+  return quoted += '`';
 }
 
 } // namespace

@@ -36,8 +36,9 @@ TEST(KeyRanges, EveryNumericKeyIsBoundedOnBothSidesWithAReason) {
     EXPECT_TRUE(std::isfinite(*key.lower.value) && std::isfinite(*key.upper.value));
     // The reason is in the reference, next to the range (integers and angles have
     // natural bounds that need no reason).
-    if (key.type == KeyType::Real && *key.upper.value - *key.lower.value > 1000)
+    if (key.type == KeyType::Real && *key.upper.value - *key.lower.value > 1000) {
       EXPECT_TRUE(has_text(valid_values_text(key), "(why: "));
+    }
   }
 }
 

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// Fuzz target: any bytes as a case file. An InputError is the expected answer to bad
+// input; anything else escaping load_case (or a crash, leak, hang) is a bug.
+#include "formflow/core/error.hpp"
+#include "formflow/io/case.hpp"
+#include "fuzz/fuzz_support.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static formflow::fuzz::ScratchFile file;
+  const std::string& path = file.write(formflow::fuzz::as_text(data, size));
+  try {
+    const formflow::io::Case case_ = formflow::io::load_case(path, {});
+    (void)case_;
+  } catch (const formflow::InputError& error) {
+    (void)error.what();
+  }
+  return 0;
+}
