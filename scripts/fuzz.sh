@@ -33,7 +33,8 @@ launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # Gmsh stays out: the fuzzers never hand bytes to Gmsh's script interpreter.
 cmake -S . -B build-fuzz -G Ninja "${launcher[@]}" -DCMAKE_CXX_COMPILER="$compiler" \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFORMFLOW_BUILD_FUZZERS=ON -DFORMFLOW_ENABLE_ASSERTS=ON \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
+  -DFORMFLOW_BUILD_FUZZERS=ON -DFORMFLOW_ENABLE_ASSERTS=ON \
   -DFORMFLOW_WITH_GMSH=OFF -DFORMFLOW_BUILD_TESTS=OFF -DFORMFLOW_BUILD_BENCH=OFF >/dev/null
 cmake --build build-fuzz -j"$(nproc)"
 

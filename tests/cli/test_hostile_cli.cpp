@@ -63,8 +63,8 @@ TEST_F(HostileCli, DeepNestingIsAnInputErrorNotACrash) {
   const CliResult file = run("run " + quoted(path.string()) + " -o " + quoted(output().string()));
   EXPECT_EQ(file.exit_code, 2) << file.err;
   EXPECT_TRUE(has_text(file.err, "error: " + path.string() + ":2: syntax: line longer"));
-  const CliResult set = run("run --set 'process.speed=" + std::string(2000, '[') +
-                            std::string(2000, ']') + "' -o " + quoted(output().string()));
+  const CliResult set = run("run --set 'process.speed=" + std::string(500, '[') +
+                            std::string(500, ']') + "' -o " + quoted(output().string()));
   EXPECT_EQ(set.exit_code, 2) << set.err;
   EXPECT_TRUE(has_text(set.err, "error: --set: process.speed: nesting deeper than 32 levels"));
   EXPECT_FALSE(fs::exists(output()));

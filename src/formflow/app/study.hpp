@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/io/case.hpp"
+#include "formflow/io/case_keys.hpp"
 #include "formflow/post/study_table.hpp"
 
 #include <functional>
@@ -31,6 +32,9 @@ inline constexpr std::size_t max_study_rungs = 64;
 /// Throws InputError.
 StudyPlan plan_study(const std::string& case_path, const std::string& vary,
                      const std::vector<io::Override>& overrides);
+
+/// The value of the real or integer `key` in `case_`, as a Real.
+Real numeric_key_value(const io::CaseKey& key, const io::Case& case_);
 
 /// Solves every rung in order. Rungs with the same mesh as the last one also
 /// get ‖u − u_last‖ (the last rung is the reference of a penalty or

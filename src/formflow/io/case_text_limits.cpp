@@ -141,7 +141,9 @@ void check_lines(std::string_view text, const std::string& file) {
     if (at - line_start >= max_case_line_bytes)
       throw InputError(file, line, "syntax",
                        fmt::format("line longer than {} bytes", max_case_line_bytes),
-                       "break long lists over several lines: TOML arrays may span lines");
+                       file == "--set" ? "put long lists in the case file, over several lines"
+                                       : "break long lists over several lines: TOML arrays may "
+                                         "span lines");
     const std::size_t length = utf8_sequence_length(text.substr(at));
     if (length == 0)
       throw InputError(file, line, "syntax",

@@ -9,14 +9,16 @@
 namespace formflow::io {
 
 /// Largest case file accepted, in bytes. A complete case with every key set is
-/// about 3 KB and a 1000-point die profile about 30 KB; 1 MiB leaves room for
-/// comments while bounding toml11's work on hostile input.
-inline constexpr std::size_t max_case_file_bytes = std::size_t{1} << 20;
+/// about 3 KB and a 1000-point die profile under 20 KB. toml11 spends about
+/// 2 µs per value, and a 64 KiB file holds at most 32 768 values: parsing the
+/// worst file stays near 0.1 s (docs/reliability.md), where 1 MiB took 2–5 s.
+inline constexpr std::size_t max_case_file_bytes = std::size_t{64} << 10;
 
 /// Longest line accepted, in bytes. toml11 rescans a value's whole line for
-/// comments once per value, so a line costs O(values × length) ≤ O(length²):
-/// 4 KiB bounds that at a few milliseconds; longer lists span several lines.
-inline constexpr std::size_t max_case_line_bytes = 4096;
+/// comments once per value, so a file costs O(size × line length) on top of
+/// its linear part: 1 KiB lines keep that below the linear part; longer lists
+/// span several lines.
+inline constexpr std::size_t max_case_line_bytes = 1024;
 
 /// Deepest nesting accepted: arrays, inline tables and dotted-key parts
 /// together. The deepest valid key, a die profile point, is 3 levels deep;

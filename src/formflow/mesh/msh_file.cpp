@@ -32,6 +32,12 @@ std::string read_msh_bytes(const std::string& path) {
                         "a relative mesh.file is taken from the case file's directory");
   if (!std::filesystem::is_regular_file(path, code))
     throw MeshFileError(Subject::File, "", "not a regular file: " + path, "give a .msh file");
+  const auto size = std::filesystem::file_size(path, code);
+  if (!code && size > max_msh_file_bytes)
+    throw MeshFileError(Subject::File, "",
+                        path + ": " + std::to_string(size) + " bytes, more than the limit of " +
+                            std::to_string(max_msh_file_bytes),
+                        "formflow's 2D meshes are far smaller: is this the right file?");
   std::ifstream stream(path, std::ios::binary);
   std::ostringstream content;
   if (!stream || !(content << stream.rdbuf()))
