@@ -6,10 +6,9 @@
 #include "fuzz/fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static formflow::fuzz::ScratchFile file;
-  const std::string& path = file.write(formflow::fuzz::as_text(data, size));
   try {
-    const formflow::io::Case case_ = formflow::io::load_case(path, {});
+    const formflow::io::Case case_ =
+        formflow::io::load_case_text(formflow::fuzz::as_text(data, size), "fuzz.toml", {});
     (void)case_;
   } catch (const formflow::InputError& error) {
     (void)error.what();

@@ -72,4 +72,9 @@ using Override = std::pair<std::string, std::string>;
 /// `overrides`. Throws InputError naming file, line, key and what would be valid.
 Case load_case(const std::string& path, const std::vector<Override>& overrides);
 
+/// As load_case, for a case file's `text` already in memory (the fuzz targets,
+/// tests); `source` stands for its path in errors and relative mesh paths.
+Case load_case_text(const std::string& text, const std::string& source,
+                    const std::vector<Override>& overrides);
+
 } // namespace formflow::io

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -66,10 +67,14 @@ std::string read_bounded(const std::string& path) {
   std::ifstream stream(path, std::ios::binary);
   if (!stream)
     throw InputError(path, 0, key, "cannot be opened for reading", "check its permissions");
-  // At most one byte past the limit, so a file that grew since file_size is still refused.
-  std::string text(max_case_file_bytes + 1, '\0');
+  // One byte past the size found (at most past the limit), so a file that grew
+  // since file_size is still refused.
+  const std::size_t expected = code ? max_case_file_bytes : static_cast<std::size_t>(size);
+  std::string text(std::min(expected, max_case_file_bytes) + 1, '\0');
   stream.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(stream.gcount()));
+  if (text.size() > expected && text.size() <= max_case_file_bytes)
+    throw InputError(path, 0, key, "changed while it was being read", "read it again");
   return text;
 }
 
@@ -81,7 +86,10 @@ toml::value parse_text(const std::string& text, const std::string& source) {
 } // namespace
 
 toml::value read_case_document(const std::string& path) {
-  const std::string text = read_bounded(path);
+  return parse_case_document(read_bounded(path), path);
+}
+
+toml::value parse_case_document(const std::string& text, const std::string& path) {
   check_case_text(text, path);
   try {
     return parse_text(text, path);

@@ -13,6 +13,10 @@ namespace formflow::io {
 /// or "syntax") naming the path and, where known, the line.
 toml::value read_case_document(const std::string& path);
 
+/// Parses `text` (the content of a case file) as TOML, bounded by
+/// check_case_text first; `source` names it in errors (a path). Throws InputError.
+toml::value parse_case_document(const std::string& text, const std::string& source);
+
 /// The `--set key=text` value as a TOML value; text that is not a TOML value
 /// is a bare-word string. The text is bounded like a case file's; a violation
 /// is an InputError("--set", 0, key, ...).

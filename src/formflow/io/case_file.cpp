@@ -601,13 +601,30 @@ void apply_override(CaseBuilder& builder, const Override& assignment) {
 
 } // namespace
 
-Case load_case(const std::string& path, const std::vector<Override>& overrides) {
+namespace {
+
+Case build_case(const toml::value* document, const std::string& path,
+                const std::vector<Override>& overrides) {
   CaseBuilder builder;
-  if (!path.empty()) apply_document(builder, read_case_document(path), path);
+  if (document) apply_document(builder, *document, path);
   for (const Override& assignment : overrides) apply_override(builder, assignment);
   builder.resolve_dependent_defaults();
   builder.check_cross_keys();
   return builder.finish(path.empty() ? "<default>" : path);
+}
+
+} // namespace
+
+Case load_case(const std::string& path, const std::vector<Override>& overrides) {
+  if (path.empty()) return build_case(nullptr, path, overrides);
+  const toml::value document = read_case_document(path);
+  return build_case(&document, path, overrides);
+}
+
+Case load_case_text(const std::string& text, const std::string& source,
+                    const std::vector<Override>& overrides) {
+  const toml::value document = parse_case_document(text, source);
+  return build_case(&document, source, overrides);
 }
 
 } // namespace formflow::io

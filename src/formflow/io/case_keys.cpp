@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <utility>
 
@@ -25,23 +24,33 @@ std::vector<CaseKey> make_table() {
   return table;
 }
 
+/// ASCII lower case (keys are ASCII; no locale lookup in the edit-distance loop).
 char lower_case(char c) {
-  return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
 }
 
-/// Levenshtein distance, ignoring letter case (so `penalty.dn` is next to `penalty.dN`).
-std::size_t edit_distance(std::string_view a, std::string_view b) {
+/// Levenshtein distance, ignoring letter case (so `penalty.dn` is next to `penalty.dN`),
+/// or any value above `limit` once the distance is known to exceed it: a hint
+/// only needs the keys nearer than the best so far, and an unknown key (every
+/// typo, and most fuzz inputs) compares against every key.
+std::size_t edit_distance(std::string_view a, std::string_view b,
+                          std::size_t limit = std::string_view::npos - 1) {
+  const std::size_t length_gap = a.size() > b.size() ? a.size() - b.size() : b.size() - a.size();
+  if (length_gap > limit) return limit + 1; // at least one edit per missing character
   std::vector<std::size_t> row(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
     std::size_t diagonal = row[0];
     row[0] = i;
+    std::size_t row_minimum = row[0];
     for (std::size_t j = 1; j <= b.size(); ++j) {
       const std::size_t substitution =
           diagonal + (lower_case(a[i - 1]) == lower_case(b[j - 1]) ? 0 : 1);
       diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+      row[j] = std::min(std::min(row[j], row[j - 1]) + 1, substitution);
+      row_minimum = std::min(row_minimum, row[j]);
     }
+    if (row_minimum > limit) return limit + 1; // rows never decrease below their minimum
   }
   return row[b.size()];
 }
@@ -150,10 +159,14 @@ Nearest nearest_key(std::string_view name) {
   const std::string_view leaf = leaf_of(name);
   Nearest best;
   for (const CaseKey& key : case_keys()) {
+    if (best.score == 0) break; // the name itself (up to letter case)
     // A right leaf in the wrong section (or no section) costs 2: `speed` → `process.speed`.
+    // Only distances below the best so far matter (limit = best − 1).
+    const std::size_t penalty = section == key.section() ? 0 : 2;
+    const std::size_t limit = best.score - 1;
     const std::size_t leaf_score =
-        edit_distance(leaf, key.leaf()) + (section == key.section() ? 0 : 2);
-    const std::size_t score = std::min(edit_distance(name, key.name), leaf_score);
+        penalty > limit ? limit + 1 : edit_distance(leaf, key.leaf(), limit - penalty) + penalty;
+    const std::size_t score = std::min(edit_distance(name, key.name, limit), leaf_score);
     if (score < best.score) best = {key.name, score};
   }
   return best;
@@ -163,7 +176,8 @@ Nearest nearest_section(std::string_view name) {
   if (name.size() > 64) return {};
   Nearest best;
   for (const CaseSection& section : case_sections()) {
-    const std::size_t score = edit_distance(name, section.name);
+    if (best.score == 0) break;
+    const std::size_t score = edit_distance(name, section.name, best.score - 1);
     if (score < best.score) best = {section.name, score};
   }
   return best;
