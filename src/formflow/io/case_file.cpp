@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Reading a TOML case file and `--set` overrides into a validated Case (toml11 v3).
 #include "formflow/core/error.hpp"
-#include "formflow/core/printable_text.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_document.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/mesh_memory.hpp"
-#include "formflow/io/number_literal.hpp"
+#include "formflow/io/toml_key_value.hpp"
 #include "formflow/io/toml_lines.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
 
@@ -37,100 +36,6 @@ std::string trimmed(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos) return {};
   return std::string(text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1));
-}
-
-std::string describe(const toml::value& value) {
-  switch (value.type()) {
-  case toml::value_t::boolean: return value.as_boolean() ? "boolean true" : "boolean false";
-  case toml::value_t::integer: return fmt::format("integer {}", value.as_integer());
-  case toml::value_t::floating: return "real " + format_key_value(value.as_floating());
-  case toml::value_t::string:
-    return "string " + format_key_value(printable_text(value.as_string().str, 80));
-  case toml::value_t::array: return "an array";
-  case toml::value_t::table: return "a table";
-  default: return "a date/time";
-  }
-}
-
-std::string expected_type(const CaseKey& key) {
-  switch (key.type) {
-  case KeyType::Real: return "a real number";
-  case KeyType::Integer: return "an integer";
-  case KeyType::Enum: return "a string";
-  case KeyType::StringList: return "a list of strings";
-  case KeyType::PointList: return "a list of [x, y] pairs";
-  case KeyType::Text: return "a string";
-  case KeyType::NameMap: return "a table of strings";
-  }
-  return "?";
-}
-
-/// The TOML value as this key's type; integers are accepted for real keys.
-std::optional<KeyValue> convert(const CaseKey& key, const toml::value& value) {
-  switch (key.type) {
-  case KeyType::Real:
-    if (value.is_floating()) return KeyValue{value.as_floating()};
-    if (value.is_integer()) return KeyValue{static_cast<Real>(value.as_integer())};
-    return std::nullopt;
-  case KeyType::Integer:
-    if (value.is_integer()) return KeyValue{std::int64_t{value.as_integer()}};
-    return std::nullopt;
-  case KeyType::Enum:
-    if (value.is_string()) return KeyValue{value.as_string().str};
-    return std::nullopt;
-  case KeyType::StringList: {
-    if (!value.is_array()) return std::nullopt;
-    std::vector<std::string> list;
-    for (const toml::value& entry : value.as_array()) {
-      if (!entry.is_string()) return std::nullopt;
-      list.push_back(entry.as_string().str);
-    }
-    return KeyValue{std::move(list)};
-  }
-  case KeyType::PointList: {
-    if (!value.is_array()) return std::nullopt;
-    KeyPoints points;
-    for (const toml::value& entry : value.as_array()) {
-      if (!entry.is_array() || entry.as_array().size() != 2) return std::nullopt;
-      std::array<Real, 2> point{};
-      for (std::size_t k = 0; k < 2; ++k) {
-        const toml::value& number = entry.as_array()[k];
-        if (number.is_floating())
-          point[k] = number.as_floating();
-        else if (number.is_integer())
-          point[k] = static_cast<Real>(number.as_integer());
-        else
-          return std::nullopt;
-      }
-      points.push_back(point);
-    }
-    return KeyValue{std::move(points)};
-  }
-  case KeyType::Text:
-    if (value.is_string()) return KeyValue{value.as_string().str};
-    return std::nullopt;
-  case KeyType::NameMap: {
-    if (!value.is_table()) return std::nullopt;
-    NameMap map;
-    for (const auto& [entry, text] : value.as_table()) {
-      if (!text.is_string()) return std::nullopt;
-      map[entry] = text.as_string().str;
-    }
-    return KeyValue{std::move(map)};
-  }
-  }
-  return std::nullopt;
-}
-
-/// A number in `value` (or in its arrays) that toml11 clamped or rounded to 0
-/// while reading; std::nullopt when every number reads as written.
-std::optional<std::string> clamped_number(const toml::value& value) {
-  if (value.is_floating() || value.is_integer())
-    return number_literal_problem(source_text(value), value.is_integer());
-  if (value.is_array())
-    for (const toml::value& entry : value.as_array())
-      if (auto problem = clamped_number(entry)) return problem;
-  return std::nullopt;
 }
 
 /// Suggests the nearest sizes that fit every length: "1.25 (= 10/8) or 2.5 (= 10/4)".
@@ -169,13 +74,14 @@ public:
       check_table_entries(key, value, file, lines);
     if (const auto problem = clamped_number(value))
       throw InputError(file, line, name, *problem, "must be " + valid_values_text(key));
-    const std::optional<KeyValue> converted = convert(key, value);
+    const std::optional<KeyValue> converted = convert_toml_value(key, value);
     if (!converted) {
       const std::string example = format_key_value(key.default_value);
-      throw InputError(file, line, name,
-                       fmt::format("expected {}, got {}", expected_type(key), describe(value)),
-                       file == "--set" ? fmt::format("e.g. --set {}={}", name, example)
-                                       : fmt::format("e.g. {} = {}", name, example));
+      throw InputError(
+          file, line, name,
+          fmt::format("expected {}, got {}", expected_type_text(key), describe_toml_value(value)),
+          file == "--set" ? fmt::format("e.g. --set {}={}", name, example)
+                          : fmt::format("e.g. {} = {}", name, example));
     }
     if (const auto problem = check_key_value(key, *converted))
       throw InputError(file, line, name, problem->message, problem->hint);
@@ -197,7 +103,8 @@ public:
       if (!entry_value.is_string())
         throw InputError(
             file, line_of(lines, entry_value), name,
-            fmt::format("entry \"{}\": expected a string, got {}", entry, describe(entry_value)),
+            fmt::format("entry \"{}\": expected a string, got {}", entry,
+                        describe_toml_value(entry_value)),
             fmt::format("e.g. {} = \"{}\"", entry, key.choices.empty() ? "" : key.choices.front()));
       if (const auto problem = check_key_value(key, NameMap{{entry, entry_value.as_string().str}}))
         throw InputError(file, line_of(lines, entry_value), name, problem->message, problem->hint);
@@ -569,7 +476,8 @@ void apply_document(CaseBuilder& builder, const toml::value& document, const std
                        did_you_mean(section));
     }
     if (!table->is_table())
-      throw InputError(path, line, section, "expected a section, got " + describe(*table),
+      throw InputError(path, line, section,
+                       "expected a section, got " + describe_toml_value(*table),
                        fmt::format("write `[{}]` on its own line, then its keys", section));
     for (const auto& [leaf, value] : in_file_order(*table, lines)) {
       const std::string name = section + "." + leaf;
