@@ -44,7 +44,7 @@ const BadCase bad_cases[] = {
     {"unknown-key.toml", 5, "friction.mue", "did you mean `friction.mu`?"},
     {"unknown-section.toml", 5, "frction", "did you mean `[friction]`?"},
     {"wrong-type.toml", 4, "mesh.size", "expected a real number"},
-    {"negative-mu.toml", 3, "friction.mu", "must be ≥ 0"},
+    {"negative-mu.toml", 3, "friction.mu", "must be 0 ≤ value ≤ 10"},
     {"mesh-size-unfit.toml", 4, "mesh.size", "0.3125 (= 10/32)"},
     {"mesh-too-large.toml", 5, "mesh.size", "1.5e+10 cells"},
     {"bad-element.toml", 3, "mesh.element", "valid values: \"Q1\", \"Q2\""},

@@ -148,7 +148,8 @@ TEST_F(MeshFile, TangledElement) {
   // (same connectivity and boundary), so its Jacobian changes sign inside.
   mesh.nodes[3] = {1.5, 0.3};
   const int code = run_with(mesh);
-  expect_input_error(code, 4, "mesh.file", "cell 0 (centre (0.875, 0.325)) is inverted or tangled");
+  expect_input_error(code, 4, "mesh.file",
+                     "cell 0 (centre (0.875, 0.325)) is inverted, tangled or degenerate");
 }
 
 TEST_F(MeshFile, DrivenEndMissing) {
@@ -164,6 +165,68 @@ TEST_F(MeshFile, InvalidPartName) {
   const int code = run_with(testing::two_squares(), "Q1", full_map + "extra = \"wall\"\n");
   expect_input_error(code, 11, "mesh.boundaries", "invalid value \"wall\" for \"extra\"");
   EXPECT_TRUE(has_text(error_, "\"rear\", \"free_entry\", \"container\""));
+}
+
+TEST_F(MeshFile, CollapsedEdgeIsRefusedBeforeTheSolve) {
+  // Node 4 moved onto node 1: the first cell's left edge has length 0. Its
+  // Jacobian vanishes along that edge only, so every Gauss point passed the
+  // check and the solve failed with "internal error"; the corners do not pass.
+  testing::TestMesh mesh = testing::two_squares();
+  mesh.nodes[3] = {0, 0};
+  const int code = run_with(mesh);
+  expect_input_error(code, 4, "mesh.file", "not positive at a node (a collapsed edge");
+}
+
+/// A mesh file is data: a script in its place is refused before Gmsh sees it,
+/// whatever its name, and nothing it asks for happens.
+class MeshFileIsData : public MeshFile {
+protected:
+  /// The marker file the hostile scripts below try to create.
+  fs::path marker() const { return scratch_ / "marker"; }
+  std::string script() const {
+    return "SystemCall \"touch " + marker().string() + "\";\nPrintf(\"x\") > \"" +
+           marker().string() + "\";\n";
+  }
+  /// Runs `formflow COMMAND case.toml` with case.toml reading `mesh_name` (line 4).
+  int run_command(const std::string& command, const std::string& mesh_name) {
+    const fs::path case_path = scratch_ / "case.toml";
+    std::ofstream(case_path) << "[mesh]\nsource = \"file\"\nelement = \"Q1\"\nfile = \""
+                             << mesh_name << "\"\n\n"
+                             << full_map;
+    const std::string output =
+        command == "run" ? " -q -o " + quoted((scratch_ / "out").string()) : std::string();
+    const testing::CliResult result =
+        testing::run_cli(command + " " + quoted(case_path.string()) + output, scratch_.path());
+    error_ = result.err;
+    return result.exit_code;
+  }
+};
+
+TEST_F(MeshFileIsData, AScriptNamedMshIsNotRun) {
+  // Before: `formflow check` ran the SystemCall (the marker existed afterwards).
+  for (const std::string command : {"check", "run"})
+    for (const std::string name : {"meshes/die.msh", "meshes/die.geo", "meshes/die"}) {
+      SCOPED_TRACE(command + " " + name);
+      std::ofstream(scratch_ / name) << script();
+      expect_input_error(run_command(command, name), 4, "mesh.file", "not a Gmsh MSH file");
+      EXPECT_TRUE(has_text(error_, "`$MeshFormat`"));
+      EXPECT_FALSE(fs::exists(marker())) << "the script ran";
+    }
+}
+
+TEST_F(MeshFileIsData, AHeaderWithAScriptAfterItIsRefused) {
+  std::ofstream(scratch_ / "meshes" / "m.msh") << "$MeshFormat\n" << script();
+  expect_input_error(run_command("check", "meshes/m.msh"), 4, "mesh.file",
+                     "unsupported MSH format line");
+  EXPECT_FALSE(fs::exists(marker()));
+}
+
+TEST_F(MeshFileIsData, AnOptionFileBesideTheMeshIsNotRun) {
+  // Gmsh runs `<file>.opt` as a script after opening <file>: it is given a private copy.
+  testing::write_test_mesh(testing::two_squares(), (scratch_ / "meshes" / "m.msh").string());
+  std::ofstream(scratch_ / "meshes" / "m.msh.opt") << script();
+  EXPECT_EQ(run_command("check", "meshes/m.msh"), 0) << error_;
+  EXPECT_FALSE(fs::exists(marker())) << "the .opt file ran";
 }
 
 } // namespace

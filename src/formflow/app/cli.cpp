@@ -7,6 +7,7 @@
 #include "formflow/app/stop_signals.hpp"
 #include "formflow/app/study.hpp"
 #include "formflow/core/error.hpp"
+#include "formflow/core/printable_text.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/io/output_directory.hpp"
@@ -18,6 +19,7 @@
 #include <fmt/ranges.h>
 
 #include <cstdio>
+#include <optional>
 
 namespace formflow::app {
 
@@ -49,11 +51,36 @@ int report_late_signal(const std::string& directory) {
   return signal_exit_code(stop_signal());
 }
 
+void print_warnings(const io::Case& case_) {
+  for (const std::string& warning : case_.warnings) fmt::print(stderr, "warning: {}\n", warning);
+}
+
+/// Refuses an empty case path, which would otherwise silently mean the default case.
+std::string non_empty_path(const std::string& path) {
+  return path.empty() ? "an empty path names no case file (omit it for the paper's benchmark)" : "";
+}
+
+constexpr const char* exit_codes = "Exit codes: 0 ok; 1 internal error (a bug: please report); "
+                                   "2 bad input or usage (nothing written); 3 not converged "
+                                   "(results written, marked converged: false); 130/143 stopped by "
+                                   "SIGINT/SIGTERM (the old results intact, or the new set "
+                                   "complete).";
+
+/// A first argument that is neither an option nor a subcommand: CLI11 would
+/// only say that a subcommand is required.
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return std::nullopt;
+  for (const CLI::App* command : app.get_subcommands({}))
+    if (command->check_name(argv[1])) return std::nullopt;
+  return std::string(argv[1]);
+}
+
 int run_case(const Options& options) {
   const io::Case case_ = io::load_case(options.case_path, parse_assignments(options.assignments));
+  print_warnings(case_);
   // Before the solve: a -o that cannot take the results costs nothing (exit 2).
   io::check_output_directory(options.output_directory, io::result_file_names());
-  Monitor monitor(stdout, case_.solver.tolerance);
+  Monitor monitor(stdout, case_.solver.tolerance, case_.solver.max_iterations);
   const bool show = !options.quiet && !options.json;
   if (show) {
     const std::string mesh_text = case_.mesh_source == mesh::MeshSource::File
@@ -111,12 +138,15 @@ int run_cli(int argc, char** argv) {
                "method of Angelov (2010)"};
   app.set_version_flag("--version", std::string("formflow ") + FORMFLOW_VERSION);
   app.require_subcommand(1);
+  app.footer(exit_codes);
   Options options;
 
   CLI::App* run = app.add_subcommand("run", "Solve a case and write results")
-                      ->footer("Example: formflow run cases/paper-q2-2x2-mesh2.toml -o results/q2 "
-                               "--set friction.mu=0.1");
-  run->add_option("case", options.case_path, "Case file (TOML); omitted: the paper's benchmark");
+                      ->footer(std::string("Example: formflow run cases/paper-q2-2x2-mesh2.toml -o "
+                                           "results/q2 --set friction.mu=0.1\n") +
+                               exit_codes);
+  run->add_option("case", options.case_path, "Case file (TOML); omitted: the paper's benchmark")
+      ->check(non_empty_path);
   run->add_option("-o,--output", options.output_directory, "Output directory")
       ->capture_default_str();
   run->add_option("--set", options.assignments, "Override a key, e.g. --set mesh.size=0.5")
@@ -124,9 +154,13 @@ int run_cli(int argc, char** argv) {
   run->add_flag("-q,--quiet", options.quiet, "No monitor lines");
   run->add_flag("--json", options.json, "Print summary.json to stdout");
 
-  CLI::App* check = app.add_subcommand("check", "Validate a case without solving")
-                        ->footer("Example: formflow check cases/paper-q2-2x2-mesh2.toml");
-  check->add_option("case", options.case_path, "Case file (TOML)")->required();
+  CLI::App* check =
+      app.add_subcommand("check", "Validate a case without solving")
+          ->footer(std::string("Example: formflow check cases/paper-q2-2x2-mesh2.toml\n") +
+                   exit_codes);
+  check->add_option("case", options.case_path, "Case file (TOML)")
+      ->required()
+      ->check(non_empty_path);
   check->add_option("--set", options.assignments, "Override a key")->allow_extra_args(false);
 
   StudyCommand study_options;
@@ -141,8 +175,10 @@ int run_cli(int argc, char** argv) {
                    "The last rung of a ladder that keeps the mesh (penalty.d, penalty.dT, "
                    "friction.radius, ...) is the reference u_ref of the difference norms.\n"
                    "Exit codes: 0 ok, 2 bad input (nothing written), 3 a rung did not converge.");
-  study->add_option("case", study_options.case_path,
-                    "Case file (TOML); omitted: the paper's benchmark");
+  study
+      ->add_option("case", study_options.case_path,
+                   "Case file (TOML); omitted: the paper's benchmark")
+      ->check(non_empty_path);
   study->add_option("--vary", study_options.vary, "key=v1,v2,... (values may be fractions n/m)")
       ->required();
   study->add_option("--set", study_assignments, "Override a key in every rung")
@@ -156,6 +192,13 @@ int run_cli(int argc, char** argv) {
   CLI::App* reference = app.add_subcommand(
       "case-reference", "Print the Markdown reference of every case key (docs/case-reference.md)");
 
+  if (const auto command = unknown_command(app, argc, argv)) {
+    fmt::print(stderr,
+               "error: unknown command '{}' (commands: run, check, study, "
+               "case-reference; see formflow --help)\n",
+               printable_text(*command, 80));
+    return BadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -168,6 +211,7 @@ int run_cli(int argc, char** argv) {
       const io::Case case_ =
           io::load_case(options.case_path, parse_assignments(options.assignments));
       // Meshing (or reading mesh.file) is part of the check: its errors are input errors too.
+      print_warnings(case_);
       const mesh::Mesh<2> mesh = io::load_mesh(case_);
       fmt::print("{}: valid ({} cells, {} nodes)\n", case_.source, mesh.n_cells(), mesh.n_nodes());
       return Ok;

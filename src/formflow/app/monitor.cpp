@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace formflow::app {
@@ -28,7 +29,9 @@ void Monitor::operator()(const solvers::IterationRecord& record) {
                         : 0.0;
   if (rate > 0 && rate < 1 && record.relative_change > tolerance_) {
     const Real remaining = std::log(tolerance_ / record.relative_change) / std::log(rate);
-    left = fmt::format("{:.2f}", remaining * record.seconds);
+    // The run stops at max_iterations whether or not it has converged by then.
+    const Real iterations_left = std::max(0, max_iterations_ - record.iteration);
+    left = fmt::format("{:.2f}", std::min(remaining, iterations_left) * record.seconds);
   }
   fmt::print(out_, "{:>5}  {:>12.4e}  {:>12.6f}  {:>9.3f}  {:>9}\n", record.iteration,
              record.relative_change, record.pressure, elapsed_, left);

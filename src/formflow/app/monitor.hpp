@@ -11,16 +11,19 @@ namespace formflow::app {
 
 /// Prints `iter  rel.change  pressure  time  left` lines to `out`; the time left
 /// is estimated from the observed contraction of the relative change over the
-/// last few iterations (one step's ratio is too noisy to extrapolate).
+/// last few iterations (one step's ratio is too noisy to extrapolate), and
+/// never exceeds what the iterations left before `max_iterations` would take.
 class Monitor {
 public:
-  Monitor(std::FILE* out, Real tolerance) : out_(out), tolerance_(tolerance) {}
+  Monitor(std::FILE* out, Real tolerance, int max_iterations)
+      : out_(out), tolerance_(tolerance), max_iterations_(max_iterations) {}
   void header() const;
   void operator()(const solvers::IterationRecord& record);
 
 private:
   std::FILE* out_;
   Real tolerance_;
+  int max_iterations_;
   std::deque<Real> recent_changes_; ///< the last few relative changes, oldest first
   Real elapsed_ = 0.0;
 };

@@ -4,6 +4,7 @@
 
 #include "formflow/app/simulation.hpp"
 #include "formflow/io/case.hpp"
+#include "formflow/io/case_keys.hpp"
 #include "formflow/post/study_table.hpp"
 
 #include <functional>
@@ -20,13 +21,21 @@ struct StudyPlan {
   std::string description; ///< "case, --set overrides" for the plot subtitle
 };
 
+/// Most values a study accepts: each is a whole solve (and a load_case while
+/// planning), and a log-log ladder needs a handful.
+inline constexpr std::size_t max_study_rungs = 64;
+
 /// Parses `vary` ("key=v1,v2,..."; a value may be a fraction "10/6") and loads
 /// the case with `overrides` and then key=value for every value, so that every
 /// input error surfaces before anything runs. The key must be a real or integer
-/// key, the values positive (they are the x axis of a log-log plot) and at least two.
+/// key, the values positive (they are the x axis of a log-log plot), at least two
+/// and at most max_study_rungs.
 /// Throws InputError.
 StudyPlan plan_study(const std::string& case_path, const std::string& vary,
                      const std::vector<io::Override>& overrides);
+
+/// The value of the real or integer `key` in `case_`, as a Real.
+Real numeric_key_value(const io::CaseKey& key, const io::Case& case_);
 
 /// Solves every rung in order. Rungs with the same mesh as the last one also
 /// get ‖u − u_last‖ (the last rung is the reference of a penalty or

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 namespace formflow::app {
 
@@ -26,6 +27,11 @@ int study_command(const StudyCommand& command) {
   const StudyPlan plan = plan_study(command.case_path, command.vary, command.overrides);
   // Before the first rung: a -o that cannot take the files costs nothing (exit 2).
   io::check_output_directory(command.output_directory, io::study_file_names());
+  // Rungs share the case file and --set keys, and mostly their warnings: print each once.
+  std::set<std::string> warnings;
+  for (const io::Case& rung : plan.cases)
+    for (const std::string& warning : rung.warnings)
+      if (warnings.insert(warning).second) fmt::print(stderr, "warning: {}\n", warning);
   if (!command.quiet)
     fmt::print(
         "formflow study of {} over {} rungs ({})\n{:>12} {:>9} {:>5} {:>11} {:>12} {:>12} {:>10}\n",

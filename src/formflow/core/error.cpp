@@ -2,16 +2,22 @@
 // Formatting of input errors and assertion failures.
 #include "formflow/core/error.hpp"
 
+#include "formflow/core/printable_text.hpp"
+
 #include <fmt/format.h>
 
 namespace formflow {
 
 namespace {
+// Every field may echo what the user typed (a 100 KB key, raw bytes): each is
+// escaped and bounded so that a message stays one readable line.
 std::string render(const std::string& file, int line, const std::string& key,
                    const std::string& message, const std::string& hint) {
-  std::string where = line > 0 ? fmt::format("{}:{}", file, line) : file;
-  std::string text = fmt::format("{}: {}: {}", where, key, message);
-  if (!hint.empty()) text += fmt::format(" ({})", hint);
+  const std::string path = printable_text(file, 400);
+  std::string where = line > 0 ? fmt::format("{}:{}", path, line) : path;
+  std::string text =
+      fmt::format("{}: {}: {}", where, printable_text(key, 100), printable_text(message, 600));
+  if (!hint.empty()) text += fmt::format(" ({})", printable_text(hint, 600));
   return text;
 }
 } // namespace

@@ -59,6 +59,10 @@ struct Case {
   /// By dotted key name; entries of a table key as "key.entry" ("mesh.boundaries.ram").
   /// Keys left at their defaults are absent.
   std::map<std::string, KeyLocation> key_locations;
+
+  /// Lines for stderr about valid but doubtful choices ("file:line: ..."),
+  /// e.g. a locking complete volumetric rule with Q1.
+  std::vector<std::string> warnings;
 };
 
 /// One `--set key=value` override, in command-line order.
@@ -67,5 +71,10 @@ using Override = std::pair<std::string, std::string>;
 /// Reads and validates `path` (empty: the embedded default case), then applies
 /// `overrides`. Throws InputError naming file, line, key and what would be valid.
 Case load_case(const std::string& path, const std::vector<Override>& overrides);
+
+/// As load_case, for a case file's `text` already in memory (the fuzz targets,
+/// tests); `source` stands for its path in errors and relative mesh paths.
+Case load_case_text(const std::string& text, const std::string& source,
+                    const std::vector<Override>& overrides);
 
 } // namespace formflow::io

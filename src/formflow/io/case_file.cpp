@@ -2,9 +2,12 @@
 // Reading a TOML case file and `--set` overrides into a validated Case (toml11 v3).
 #include "formflow/core/error.hpp"
 #include "formflow/io/case.hpp"
+#include "formflow/io/case_document.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/mesh_memory.hpp"
 #include "formflow/io/problem_shape.hpp"
+#include "formflow/io/toml_key_value.hpp"
+#include "formflow/io/toml_lines.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
 
 #include <fmt/format.h>
@@ -12,11 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 
 namespace formflow::io {
 
@@ -29,96 +29,14 @@ struct Origin {
   int order = 0;
 };
 
-int line_of(const toml::value& value) {
-  return static_cast<int>(value.location().line());
+int line_of(TomlLines& lines, const toml::value& value) {
+  return static_cast<int>(lines.position(value).line);
 }
 
 std::string trimmed(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos) return {};
   return std::string(text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1));
-}
-
-std::string describe(const toml::value& value) {
-  switch (value.type()) {
-  case toml::value_t::boolean: return value.as_boolean() ? "boolean true" : "boolean false";
-  case toml::value_t::integer: return fmt::format("integer {}", value.as_integer());
-  case toml::value_t::floating: return "real " + format_key_value(value.as_floating());
-  case toml::value_t::string: return "string " + format_key_value(value.as_string().str);
-  case toml::value_t::array: return "an array";
-  case toml::value_t::table: return "a table";
-  default: return "a date/time";
-  }
-}
-
-std::string expected_type(const CaseKey& key) {
-  switch (key.type) {
-  case KeyType::Real: return "a real number";
-  case KeyType::Integer: return "an integer";
-  case KeyType::Enum: return "a string";
-  case KeyType::StringList: return "a list of strings";
-  case KeyType::PointList: return "a list of [x, y] pairs";
-  case KeyType::Text: return "a string";
-  case KeyType::NameMap: return "a table of strings";
-  }
-  return "?";
-}
-
-/// The TOML value as this key's type; integers are accepted for real keys.
-std::optional<KeyValue> convert(const CaseKey& key, const toml::value& value) {
-  switch (key.type) {
-  case KeyType::Real:
-    if (value.is_floating()) return KeyValue{value.as_floating()};
-    if (value.is_integer()) return KeyValue{static_cast<Real>(value.as_integer())};
-    return std::nullopt;
-  case KeyType::Integer:
-    if (value.is_integer()) return KeyValue{std::int64_t{value.as_integer()}};
-    return std::nullopt;
-  case KeyType::Enum:
-    if (value.is_string()) return KeyValue{value.as_string().str};
-    return std::nullopt;
-  case KeyType::StringList: {
-    if (!value.is_array()) return std::nullopt;
-    std::vector<std::string> list;
-    for (const toml::value& entry : value.as_array()) {
-      if (!entry.is_string()) return std::nullopt;
-      list.push_back(entry.as_string().str);
-    }
-    return KeyValue{std::move(list)};
-  }
-  case KeyType::PointList: {
-    if (!value.is_array()) return std::nullopt;
-    KeyPoints points;
-    for (const toml::value& entry : value.as_array()) {
-      if (!entry.is_array() || entry.as_array().size() != 2) return std::nullopt;
-      std::array<Real, 2> point{};
-      for (std::size_t k = 0; k < 2; ++k) {
-        const toml::value& number = entry.as_array()[k];
-        if (number.is_floating())
-          point[k] = number.as_floating();
-        else if (number.is_integer())
-          point[k] = static_cast<Real>(number.as_integer());
-        else
-          return std::nullopt;
-      }
-      points.push_back(point);
-    }
-    return KeyValue{std::move(points)};
-  }
-  case KeyType::Text:
-    if (value.is_string()) return KeyValue{value.as_string().str};
-    return std::nullopt;
-  case KeyType::NameMap: {
-    if (!value.is_table()) return std::nullopt;
-    NameMap map;
-    for (const auto& [entry, text] : value.as_table()) {
-      if (!text.is_string()) return std::nullopt;
-      map[entry] = text.as_string().str;
-    }
-    return KeyValue{std::move(map)};
-  }
-  }
-  return std::nullopt;
 }
 
 /// Suggests the nearest sizes that fit every length: "1.25 (= 10/8) or 2.5 (= 10/4)".
@@ -138,7 +56,8 @@ std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size)
   return "no size near this one fits every length: make the lengths multiples of one size";
 }
 
-std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table);
+std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table,
+                                                                      TomlLines& lines);
 
 /// Accumulates keys into a Case (starting from the table's defaults), remembering
 /// where each was set, so that cross-key errors can point at the key set last.
@@ -148,17 +67,22 @@ public:
     for (const CaseKey& key : case_keys()) key.set(case_, key.default_value);
   }
 
-  void set(const CaseKey& key, const toml::value& value, const std::string& file, int line) {
+  /// Sets `key` from `value`, found at `file`:`line`; `lines` places the entries of a table.
+  void set(const CaseKey& key, const toml::value& value, const std::string& file, int line,
+           TomlLines& lines) {
     const std::string name(key.name);
     if (key.type == KeyType::NameMap && value.is_table() && file != "--set")
-      check_table_entries(key, value, file);
-    const std::optional<KeyValue> converted = convert(key, value);
+      check_table_entries(key, value, file, lines);
+    if (const auto problem = clamped_number(value))
+      throw InputError(file, line, name, *problem, "must be " + valid_values_text(key));
+    const std::optional<KeyValue> converted = convert_toml_value(key, value);
     if (!converted) {
       const std::string example = format_key_value(key.default_value);
-      throw InputError(file, line, name,
-                       fmt::format("expected {}, got {}", expected_type(key), describe(value)),
-                       file == "--set" ? fmt::format("e.g. --set {}={}", name, example)
-                                       : fmt::format("e.g. {} = {}", name, example));
+      throw InputError(
+          file, line, name,
+          fmt::format("expected {}, got {}", expected_type_text(key), describe_toml_value(value)),
+          file == "--set" ? fmt::format("e.g. --set {}={}", name, example)
+                          : fmt::format("e.g. {} = {}", name, example));
     }
     if (const auto problem = check_key_value(key, *converted))
       throw InputError(file, line, name, problem->message, problem->hint);
@@ -167,24 +91,45 @@ public:
     if (value.is_table()) // entries of a table key, so later errors can name their line
       for (const auto& [entry, entry_value] : value.as_table())
         origins_[name + "." + entry] =
-            Origin{file, file == "--set" ? line : line_of(entry_value), n_set_};
+            Origin{file, file == "--set" ? line : line_of(lines, entry_value), n_set_};
   }
 
   /// A bad entry of a table of strings is blamed on its own line, not on the
   /// table's header line, which may be far above it.
   static void check_table_entries(const CaseKey& key, const toml::value& table,
-                                  const std::string& file) {
-    for (const auto& [entry, pointer] : in_file_order(table)) {
+                                  const std::string& file, TomlLines& lines) {
+    for (const auto& [entry, pointer] : in_file_order(table, lines)) {
       const toml::value& entry_value = *pointer;
       const std::string name(key.name);
       if (!entry_value.is_string())
         throw InputError(
-            file, line_of(entry_value), name,
-            fmt::format("entry \"{}\": expected a string, got {}", entry, describe(entry_value)),
+            file, line_of(lines, entry_value), name,
+            fmt::format("entry \"{}\": expected a string, got {}", entry,
+                        describe_toml_value(entry_value)),
             fmt::format("e.g. {} = \"{}\"", entry, key.choices.empty() ? "" : key.choices.front()));
       if (const auto problem = check_key_value(key, NameMap{{entry, entry_value.as_string().str}}))
-        throw InputError(file, line_of(entry_value), name, problem->message, problem->hint);
+        throw InputError(file, line_of(lines, entry_value), name, problem->message, problem->hint);
     }
+  }
+
+  /// Keys whose default depends on another key's value: integration.volumetric
+  /// is the element's reduced rule unless set (the complete rule locks Q1,
+  /// paper Remark 5.1); an explicit complete rule with Q1 gets a warning.
+  void resolve_dependent_defaults() {
+    const bool q1 = case_.element == fem::ElementKind::Q1;
+    if (origin("integration.volumetric").order == 0) {
+      case_.volumetric_points = q1 ? 1 : 2;
+      return;
+    }
+    const Origin where = origin("integration.volumetric");
+    if (q1 && case_.volumetric_points >= 2 &&
+        case_.formulation.type == assembly::FormulationType::Penalty)
+      case_.warnings.push_back(fmt::format(
+          "{}{}: integration.volumetric = {} with mesh.element = \"Q1\" imposes the "
+          "incompressibility at {} points per cell: the penalty solution locks (the load grows "
+          "like 1/d); integration.volumetric = 1 is the reduced rule that does not",
+          where.file, where.line > 0 ? fmt::format(":{}", where.line) : "", case_.volumetric_points,
+          case_.volumetric_points * case_.volumetric_points));
   }
 
   void check_cross_keys() const {
@@ -212,6 +157,18 @@ private:
     return found == origins_.end() ? Origin{} : found->second;
   }
 
+  /// The key to blame for a problem found at `primary`: `primary` itself when
+  /// the user set it, else whichever of `related` was set last (a key left at
+  /// its default is not what the user should change).
+  std::string responsible(const std::string& primary,
+                          std::initializer_list<std::string> related) const {
+    if (origin(primary).order > 0) return primary;
+    std::string blamed = primary;
+    for (const std::string& name : related)
+      if (origin(name).order > origin(blamed).order) blamed = name;
+    return blamed;
+  }
+
   Real real_value(const std::string& name) const {
     return std::get<Real>(find_case_key(name)->get(case_));
   }
@@ -233,17 +190,45 @@ private:
 
   /// Condition (2.11) of the whole law; blames the material key set last.
   void check_flow_law() const {
-    const auto violation = physics::check_flow_law(case_.material.selected());
+    const auto non_finite = non_finite_law(); // first: (2.11) cannot be judged on inf or NaN
+    const auto violation =
+        non_finite ? non_finite : physics::check_flow_law(case_.material.selected());
     if (!violation) return;
     std::string blamed = "material.law";
     for (const CaseKey& key : case_keys())
       if (key.section() == "material" && origin(std::string(key.name)).order > origin(blamed).order)
         blamed = key.name;
     const Origin where = origin(blamed);
+    if (non_finite)
+      throw InputError(where.file, where.line, blamed,
+                       "the flow law cannot be evaluated: " + *non_finite,
+                       "choose parameters whose σ_p is a finite stress between rate1/10 and "
+                       "10 rate2 (e.g. a smaller |m1 T| or |m4/ε| of hensel_spittel)");
     throw InputError(where.file, where.line, blamed,
                      "the flow law violates condition (2.11): " + *violation,
                      "choose parameters with σ_p increasing and σ_p′ ≤ σ_p/ε̄̇ (rate exponent in "
                      "(0, 1])");
+  }
+
+  /// Where σ_p, σ_p/ε̄̇ or σ_p′ is not a finite, positive (or for σ_p′
+  /// non-negative) number over the rates the solver can meet: [rate1/10,
+  /// 10 rate2] and the first iterate's solver.initial_rate.
+  std::optional<std::string> non_finite_law() const {
+    const physics::FlowLaw law = case_.material.selected();
+    const Real low = law.rate1 / 10, high = law.rate2 * 10;
+    std::vector<Real> rates = {case_.solver.initial_rate};
+    for (int k = 0; k <= 8; ++k) rates.push_back(low * std::pow(high / low, k / 8.0));
+    for (const Real rate : rates) {
+      const Real stress = law.yield_stress(rate);
+      const auto [viscosity, derivative] = law.secant_viscosity_and_derivative(rate);
+      const bool normal = std::isnormal(stress) && stress > 0 && std::isnormal(viscosity) &&
+                          viscosity > 0 && std::isfinite(derivative) && derivative >= 0;
+      if (!normal)
+        return fmt::format("σ_p({}) = {}, σ_p/ε̄̇ = {}, σ_p′ = {}: not finite and positive",
+                           format_key_value(rate), format_key_value(stress),
+                           format_key_value(viscosity), format_key_value(derivative));
+    }
+    return std::nullopt;
   }
 
   /// Pairs and exact constraints the solver can honour (docs/mixed.md).
@@ -320,14 +305,11 @@ private:
   /// A manufactured solution lives on the unit square; the smooth map must stay one-to-one.
   void check_verification() const {
     if (case_.manufactured == physics::ManufacturedSolution::None) return;
-    if (mesh::cells_along(1.0, case_.mesh_size) <= 0) {
-      const Origin where = origin("mesh.size");
-      throw InputError(where.file, where.line, "mesh.size",
-                       fmt::format("value {} does not divide the unit square of "
-                                   "verification.solution",
-                                   format_key_value(case_.mesh_size)),
-                       "use 1/n, e.g. 0.25 or 0.125");
-    }
+    if (mesh::cells_along(1.0, case_.mesh_size) <= 0)
+      die_error("mesh.size",
+                fmt::format("value {} does not divide the unit square of verification.solution",
+                            format_key_value(case_.mesh_size)),
+                "use 1/n, e.g. 0.25 or 0.125", {"verification.solution"});
     if (case_.distortion.kind == mesh::Distortion::Smooth && case_.distortion.amplitude > 0.1) {
       const Origin where = origin("verification.amplitude");
       throw InputError(where.file, where.line, "verification.amplitude",
@@ -340,13 +322,25 @@ private:
   /// A mesh that cannot fit in this machine's memory is refused now, not by the allocator.
   void check_mesh_memory() const {
     if (const auto problem = mesh_memory_problem(case_, machine_memory_bytes()))
-      die_error("mesh.size", problem->message, problem->hint);
+      die_error("mesh.size", problem->message, problem->hint,
+                {"mesh.element", "geometry.container_length", "geometry.entry_half_height",
+                 "geometry.exit_half_height", "geometry.exit_length", "geometry.land_length",
+                 "geometry.die", "geometry.die_angle", "geometry.die_radius",
+                 "geometry.die_profile", "verification.solution"});
   }
 
+  /// Throws for `name`, or (when `name` is at its default) for the key of
+  /// `related` set last; the message then says which value of `name` is meant.
   [[noreturn]] void die_error(const std::string& name, const std::string& message,
-                              const std::string& hint) const {
-    const Origin where = origin(name);
-    throw InputError(where.file, where.line, name, message, hint);
+                              const std::string& hint,
+                              std::initializer_list<std::string> related = {}) const {
+    const std::string blamed = responsible(name, related);
+    const Origin where = origin(blamed);
+    const std::string text =
+        blamed == name ? message
+                       : fmt::format("with {} = {} (its default): {}", name,
+                                     format_key_value(find_case_key(name)->get(case_)), message);
+    throw InputError(where.file, where.line, blamed, text, hint);
   }
 
   /// The die face must join the entry and exit heights monotonically.
@@ -359,7 +353,8 @@ private:
                 fmt::format("value {} does not leave a free exit: geometry.exit_length = {}",
                             format_key_value(geometry.land_length),
                             format_key_value(geometry.exit_length)),
-                "the square die's land is part of the exit: make it shorter than exit_length");
+                "the square die's land is part of the exit: make it shorter than exit_length",
+                {"geometry.exit_length", "geometry.die"});
     if (geometry.die == mesh::DieShape::Arc && geometry.die_radius < drop)
       die_error("geometry.die_radius",
                 fmt::format("value {} cannot reach from the exit half height {} to the entry "
@@ -368,22 +363,33 @@ private:
                             format_key_value(geometry.exit_half_height),
                             format_key_value(geometry.entry_half_height)),
                 fmt::format("die_radius must be ≥ entry_half_height − exit_half_height = {}",
-                            format_key_value(drop)));
+                            format_key_value(drop)),
+                {"geometry.die", "geometry.entry_half_height", "geometry.exit_half_height"});
     if (geometry.die != mesh::DieShape::Polyline) return;
     const std::string name = "geometry.die_profile";
     const auto& points = geometry.die_profile;
     const std::string shape = "[[0, H_in], ..., [x_n, H_out]] with x increasing, y non-increasing";
-    if (points.size() < 2) die_error(name, "a polyline die needs at least two points", shape);
+    const std::initializer_list<std::string> profile_related = {
+        "geometry.die", "geometry.entry_half_height", "geometry.exit_half_height"};
+    if (points.size() < 2)
+      die_error(name, "a polyline die needs at least two points", shape, profile_related);
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (std::abs(points[k][0]) > 1e6 || std::abs(points[k][1]) > 1e6)
+        die_error(name,
+                  fmt::format("point {} ([{}, {}]) is farther than 1e6 from the die entry", k + 1,
+                              points[k][0], points[k][1]),
+                  "coordinates are lengths: |x|, |y| ≤ 1e6, like every length");
     if (points.front()[0] != 0 || points.front()[1] != geometry.entry_half_height)
       die_error(name,
                 fmt::format("the first point [{}, {}] is not the die entry [0, {}]",
                             points.front()[0], points.front()[1], geometry.entry_half_height),
-                "start the profile at x = 0 (the die entry) and y = geometry.entry_half_height");
+                "start the profile at x = 0 (the die entry) and y = geometry.entry_half_height",
+                profile_related);
     if (points.back()[1] != geometry.exit_half_height)
       die_error(name,
                 fmt::format("the last point ends at y = {}, not at the exit half height {}",
                             points.back()[1], geometry.exit_half_height),
-                "end the profile at y = geometry.exit_half_height");
+                "end the profile at y = geometry.exit_half_height", profile_related);
     for (std::size_t k = 1; k < points.size(); ++k) {
       if (!(points[k][0] > points[k - 1][0]))
         die_error(name,
@@ -434,98 +440,52 @@ private:
   int n_set_ = 0;
 };
 
-/// One-line message and hint from toml11's multi-line, underlined syntax error.
-InputError syntax_error(const std::string& path, const toml::syntax_error& error) {
-  std::istringstream lines(error.what());
-  std::string line, summary, annotation;
-  std::getline(lines, summary);
-  for (const std::string prefix : {"[error] ", "toml::"})
-    if (summary.rfind(prefix, 0) == 0) summary.erase(0, prefix.size());
-  if (const auto colon = summary.find(": ");
-      colon != std::string::npos && summary.find(' ') > colon)
-    summary.erase(0, colon + 2); // toml::parse_table: → drop the parser function name
-  while (std::getline(lines, line)) {
-    const auto bar = line.find(" | ");
-    if (bar == std::string::npos) continue;
-    const auto mark = line.find_first_not_of(' ', bar + 3);
-    if (mark == std::string::npos || (line[mark] != '^' && line[mark] != '~')) continue;
-    const auto text = line.find_first_not_of("^~- ", mark);
-    if (text != std::string::npos) annotation = line.substr(text);
-  }
-  std::string message = "invalid TOML: " + summary;
-  if (!annotation.empty() && annotation != "here") message += ": " + annotation;
-  std::string hint = "in `" + trimmed(error.location().line_str()) + "`";
-  if (summary.find("unknown value") != std::string::npos) hint += "; strings need quotes";
-  return InputError(path, static_cast<int>(error.location().line()), "syntax", message, hint);
-}
-
-toml::value read_document(const std::string& path) {
-  std::error_code code;
-  const std::string key = "case file";
-  if (!std::filesystem::exists(path, code))
-    throw InputError(path, 0, key, "no such file",
-                     "check the path; without a case file the paper's benchmark is run");
-  if (!std::filesystem::is_regular_file(path, code))
-    throw InputError(path, 0, key, "not a regular file", "give the path of a .toml file");
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream)
-    throw InputError(path, 0, key, "cannot be opened for reading", "check its permissions");
-  try {
-    return toml::parse(stream, path);
-  } catch (const toml::syntax_error& error) {
-    throw syntax_error(path, error);
-  } catch (const toml::exception& error) {
-    throw InputError(path, static_cast<int>(error.location().line()), "syntax",
-                     "invalid TOML: " + trimmed(error.what()), "");
-  }
-}
-
 std::string did_you_mean(std::string_view name) {
-  return fmt::format("did you mean `{}`?", closest_case_key(name));
+  return unknown_key_hint(name);
 }
 
-std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table) {
+/// The entries of `table` in the order they appear in the file: each position is
+/// found once (O(log n)), then the entries are sorted by it.
+std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table,
+                                                                      TomlLines& lines) {
+  std::vector<std::pair<TomlPosition, std::pair<std::string, const toml::value*>>> placed;
+  for (const auto& [name, value] : table.as_table())
+    placed.push_back({lines.position(value), {name, &value}});
+  std::sort(placed.begin(), placed.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::pair<std::string, const toml::value*>> entries;
-  for (const auto& [name, value] : table.as_table()) entries.emplace_back(name, &value);
-  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
-    const auto la = a.second->location(), lb = b.second->location();
-    return std::pair(la.line(), la.column()) < std::pair(lb.line(), lb.column());
-  });
+  for (auto& [position, entry] : placed) entries.push_back(std::move(entry));
   return entries;
 }
 
 void apply_document(CaseBuilder& builder, const toml::value& document, const std::string& path) {
-  for (const auto& [section, table] : in_file_order(document)) {
-    const int line = line_of(*table);
+  TomlLines lines;
+  for (const auto& [section, table] : in_file_order(document, lines)) {
+    const int line = line_of(lines, *table);
     if (!is_case_section(section)) {
       if (table->is_table())
-        throw InputError(path, line, section, "unknown section",
-                         fmt::format("did you mean `[{}]`?", closest_case_section(section)));
+        throw InputError(path, line, section, "unknown section", unknown_section_hint(section));
       throw InputError(path, line, section, "unknown key (every key belongs in a section)",
                        did_you_mean(section));
     }
     if (!table->is_table())
-      throw InputError(path, line, section, "expected a section, got " + describe(*table),
+      throw InputError(path, line, section,
+                       "expected a section, got " + describe_toml_value(*table),
                        fmt::format("write `[{}]` on its own line, then its keys", section));
-    for (const auto& [leaf, value] : in_file_order(*table)) {
+    for (const auto& [leaf, value] : in_file_order(*table, lines)) {
       const std::string name = section + "." + leaf;
       const CaseKey* key = find_case_key(name);
-      if (!key) throw InputError(path, line_of(*value), name, "unknown key", did_you_mean(name));
-      builder.set(*key, *value, path, line_of(*value));
+      const int key_line = line_of(lines, *value);
+      if (!key) throw InputError(path, key_line, name, "unknown key", did_you_mean(name));
+      builder.set(*key, *value, path, key_line, lines);
     }
   }
 }
 
-/// The override text as a TOML value; text that is not a TOML value is a string.
-toml::value parse_override_value(const std::string& text) {
-  try {
-    std::istringstream stream("value = " + text + "\n");
-    const toml::value document = toml::parse(stream, "--set");
-    if (document.as_table().size() == 1 && document.contains("value")) return document.at("value");
-  } catch (const toml::exception&) {
-    // not TOML: a bare word
-  }
-  return toml::value(trimmed(text));
+std::string_view first_key_of(std::string_view section) {
+  for (const CaseKey& key : case_keys())
+    if (key.section() == section) return key.name;
+  return section;
 }
 
 void apply_override(CaseBuilder& builder, const Override& assignment) {
@@ -534,19 +494,38 @@ void apply_override(CaseBuilder& builder, const Override& assignment) {
   const CaseKey* key = find_case_key(name);
   if (!key && is_case_section(name))
     throw InputError(file, 0, name, "is a section, not a key",
-                     fmt::format("set one of its keys, e.g. `{}`", closest_case_key(name + ".")));
+                     fmt::format("set one of its keys, e.g. `{}`", first_key_of(name)));
   if (!key) throw InputError(file, 0, name, "unknown key", did_you_mean(name));
-  builder.set(*key, parse_override_value(assignment.second), file, 0);
+  TomlLines lines; // a --set value has no lines worth naming: all errors say `--set`
+  builder.set(*key, parse_override_value(name, assignment.second), file, 0, lines);
+}
+
+} // namespace
+
+namespace {
+
+Case build_case(const toml::value* document, const std::string& path,
+                const std::vector<Override>& overrides) {
+  CaseBuilder builder;
+  if (document) apply_document(builder, *document, path);
+  for (const Override& assignment : overrides) apply_override(builder, assignment);
+  builder.resolve_dependent_defaults();
+  builder.check_cross_keys();
+  return builder.finish(path.empty() ? "<default>" : path);
 }
 
 } // namespace
 
 Case load_case(const std::string& path, const std::vector<Override>& overrides) {
-  CaseBuilder builder;
-  if (!path.empty()) apply_document(builder, read_document(path), path);
-  for (const Override& assignment : overrides) apply_override(builder, assignment);
-  builder.check_cross_keys();
-  return builder.finish(path.empty() ? "<default>" : path);
+  if (path.empty()) return build_case(nullptr, path, overrides);
+  const toml::value document = read_case_document(path);
+  return build_case(&document, path, overrides);
+}
+
+Case load_case_text(const std::string& text, const std::string& source,
+                    const std::vector<Override>& overrides) {
+  const toml::value document = parse_case_document(text, source);
+  return build_case(&document, source, overrides);
 }
 
 } // namespace formflow::io

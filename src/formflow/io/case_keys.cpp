@@ -3,8 +3,9 @@
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/keys/key_spec.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <utility>
 
@@ -23,23 +24,33 @@ std::vector<CaseKey> make_table() {
   return table;
 }
 
+/// ASCII lower case (keys are ASCII; no locale lookup in the edit-distance loop).
 char lower_case(char c) {
-  return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
 }
 
-/// Levenshtein distance, ignoring letter case (so `penalty.dn` is next to `penalty.dN`).
-std::size_t edit_distance(std::string_view a, std::string_view b) {
+/// Levenshtein distance, ignoring letter case (so `penalty.dn` is next to `penalty.dN`),
+/// or any value above `limit` once the distance is known to exceed it: a hint
+/// only needs the keys nearer than the best so far, and an unknown key (every
+/// typo, and most fuzz inputs) compares against every key.
+std::size_t edit_distance(std::string_view a, std::string_view b,
+                          std::size_t limit = std::string_view::npos - 1) {
+  const std::size_t length_gap = a.size() > b.size() ? a.size() - b.size() : b.size() - a.size();
+  if (length_gap > limit) return limit + 1; // at least one edit per missing character
   std::vector<std::size_t> row(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
     std::size_t diagonal = row[0];
     row[0] = i;
+    std::size_t row_minimum = row[0];
     for (std::size_t j = 1; j <= b.size(); ++j) {
       const std::size_t substitution =
           diagonal + (lower_case(a[i - 1]) == lower_case(b[j - 1]) ? 0 : 1);
       diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+      row[j] = std::min(std::min(row[j], row[j - 1]) + 1, substitution);
+      row_minimum = std::min(row_minimum, row[j]);
     }
+    if (row_minimum > limit) return limit + 1; // rows never decrease below their minimum
   }
   return row[b.size()];
 }
@@ -51,7 +62,8 @@ std::optional<KeyProblem> check_number(const CaseKey& key, Real value, const std
                                                                    : value >= *key.upper.value);
   if (!std::isfinite(value))
     return KeyProblem{"value " + text + " is not finite", "must be " + valid_values_text(key)};
-  if (below_lower || above_upper)
+  const bool too_small = key.smallest_nonzero && value != 0 && value < *key.smallest_nonzero;
+  if (below_lower || above_upper || too_small)
     return KeyProblem{"value " + text + " is out of range", "must be " + valid_values_text(key)};
   return std::nullopt;
 }
@@ -63,7 +75,14 @@ std::string quoted_choices(const CaseKey& key) {
   return text;
 }
 
+std::optional<KeyProblem> check_entry_count(const CaseKey& key, std::size_t count) {
+  if (key.max_entries == 0 || count <= key.max_entries) return std::nullopt;
+  return KeyProblem{fmt::format("{} entries, more than the limit of {}", count, key.max_entries),
+                    "must be " + valid_values_text(key)};
+}
+
 std::optional<KeyProblem> check_list(const CaseKey& key, const std::vector<std::string>& list) {
+  if (auto problem = check_entry_count(key, list.size())) return problem;
   for (std::size_t i = 0; i < list.size(); ++i) {
     if (std::find(key.choices.begin(), key.choices.end(), list[i]) == key.choices.end())
       return KeyProblem{"invalid entry \"" + list[i] + "\"",
@@ -121,36 +140,80 @@ bool is_case_section(std::string_view name) {
                      [name](const CaseSection& section) { return section.name == name; });
 }
 
-std::string_view closest_case_key(std::string_view name) {
+namespace {
+
+/// A suggestion and how many edits away from the name it is.
+struct Nearest {
+  std::string_view name;
+  std::size_t score = std::string_view::npos;
+};
+
+std::string_view leaf_of(std::string_view name) {
+  return name.find('.') == std::string_view::npos ? name : name.substr(name.rfind('.') + 1);
+}
+
+Nearest nearest_key(std::string_view name) {
+  // Longer names than any key cannot be typos of one; the distance would cost O(length).
+  if (name.size() > 64) return {};
   const std::string_view section = name.substr(0, name.find('.'));
-  const std::string_view leaf =
-      name.find('.') == std::string_view::npos ? name : name.substr(name.rfind('.') + 1);
-  std::string_view best;
-  std::size_t best_score = std::string_view::npos;
+  const std::string_view leaf = leaf_of(name);
+  Nearest best;
   for (const CaseKey& key : case_keys()) {
+    if (best.score == 0) break; // the name itself (up to letter case)
     // A right leaf in the wrong section (or no section) costs 2: `speed` → `process.speed`.
+    // Only distances below the best so far matter (limit = best − 1).
+    const std::size_t penalty = section == key.section() ? 0 : 2;
+    const std::size_t limit = best.score - 1;
     const std::size_t leaf_score =
-        edit_distance(leaf, key.leaf()) + (section == key.section() ? 0 : 2);
-    const std::size_t score = std::min(edit_distance(name, key.name), leaf_score);
-    if (score < best_score) {
-      best_score = score;
-      best = key.name;
-    }
+        penalty > limit ? limit + 1 : edit_distance(leaf, key.leaf(), limit - penalty) + penalty;
+    const std::size_t score = std::min(edit_distance(name, key.name, limit), leaf_score);
+    if (score < best.score) best = {key.name, score};
   }
   return best;
 }
 
-std::string_view closest_case_section(std::string_view name) {
-  std::string_view best;
-  std::size_t best_score = std::string_view::npos;
+Nearest nearest_section(std::string_view name) {
+  if (name.size() > 64) return {};
+  Nearest best;
   for (const CaseSection& section : case_sections()) {
-    const std::size_t score = edit_distance(name, section.name);
-    if (score < best_score) {
-      best_score = score;
-      best = section.name;
-    }
+    if (best.score == 0) break;
+    const std::size_t score = edit_distance(name, section.name, best.score - 1);
+    if (score < best.score) best = {section.name, score};
   }
   return best;
+}
+
+/// A typo: two edits, or a third of the (leaf) name for long names.
+bool is_typo_distance(const Nearest& nearest, std::string_view typed) {
+  return nearest.score <= std::max<std::size_t>(2, typed.size() / 3);
+}
+
+} // namespace
+
+std::string_view closest_case_key(std::string_view name) {
+  return nearest_key(name).name;
+}
+
+std::string_view closest_case_section(std::string_view name) {
+  return nearest_section(name).name;
+}
+
+std::string unknown_key_hint(std::string_view name) {
+  const Nearest nearest = nearest_key(name);
+  if (!is_typo_distance(nearest, leaf_of(name)))
+    return "no key is close to it: `formflow case-reference` lists every key";
+  return "did you mean `" + std::string(nearest.name) + "`?";
+}
+
+std::string unknown_section_hint(std::string_view name) {
+  const Nearest nearest = nearest_section(name);
+  if (!is_typo_distance(nearest, name)) {
+    std::string sections;
+    for (const CaseSection& section : case_sections())
+      sections += (sections.empty() ? "" : ", ") + std::string(section.name);
+    return "no section is close to it; the sections are " + sections;
+  }
+  return "did you mean `[" + std::string(nearest.name) + "]`?";
 }
 
 std::optional<KeyProblem> check_key_value(const CaseKey& key, const KeyValue& value) {
@@ -171,6 +234,7 @@ std::optional<KeyProblem> check_key_value(const CaseKey& key, const KeyValue& va
   }
   case KeyType::StringList: return check_list(key, std::get<std::vector<std::string>>(value));
   case KeyType::PointList:
+    if (auto problem = check_entry_count(key, std::get<KeyPoints>(value).size())) return problem;
     for (const auto& point : std::get<KeyPoints>(value))
       if (!std::isfinite(point[0]) || !std::isfinite(point[1]))
         return KeyProblem{"a point is not finite", "give finite [x, y] pairs"};

@@ -49,6 +49,13 @@ struct CaseKey {
   KeyValue default_value;
   Bound lower; ///< Real/Integer only
   Bound upper; ///< Real/Integer only
+  /// Real only: when set, a value other than 0 must be at least this (0 itself
+  /// is a special value, e.g. an exact constraint).
+  std::optional<Real> smallest_nonzero;
+  /// Why the range is what it is (every range keeps the solver's scales finite).
+  std::string_view range_reason;
+  /// PointList/StringList only: most entries accepted; 0 = no limit.
+  std::size_t max_entries = 0;
   std::vector<std::string_view> choices;
   std::string_view constraint;
   std::string_view unit;
@@ -94,6 +101,15 @@ std::string_view closest_case_key(std::string_view name);
 
 /// The section nearest to `name` by edit distance.
 std::string_view closest_case_section(std::string_view name);
+
+/// The hint for an unknown key: "did you mean `friction.mu`?" when the closest
+/// key is within a typo's distance of `name` (at most 2 edits, or a third of
+/// the part after the dot for long names), otherwise a pointer to the reference
+/// (a far-off name gets no arbitrary suggestion).
+std::string unknown_key_hint(std::string_view name);
+
+/// The hint for an unknown section, by the same rule as unknown_key_hint.
+std::string unknown_section_hint(std::string_view name);
 
 /// Checks `value` (already of the key's type) against the key's own range or
 /// choices; std::nullopt when valid. Cross-key constraints are not checked here.

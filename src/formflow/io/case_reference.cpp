@@ -114,7 +114,10 @@ std::string valid_values_text(const CaseKey& key) {
   switch (key.type) {
   case KeyType::Real:
   case KeyType::Integer:
-    if (key.lower.value && key.upper.value)
+    if (key.smallest_nonzero && key.upper.value)
+      text = fmt::format("0, or {} ≤ value {} {}", *key.smallest_nonzero,
+                         key.upper.inclusive ? "≤" : "<", *key.upper.value);
+    else if (key.lower.value && key.upper.value)
       text = fmt::format("{} {} value {} {}", *key.lower.value, key.lower.inclusive ? "≤" : "<",
                          key.upper.inclusive ? "≤" : "<", *key.upper.value);
     else if (key.lower.value)
@@ -132,7 +135,9 @@ std::string valid_values_text(const CaseKey& key) {
   case KeyType::Text: text = "a path"; break;
   case KeyType::NameMap: text = "entries `name = part`, part one of " + choices_text(key); break;
   }
+  if (key.max_entries > 0) text += fmt::format(", at most {}", key.max_entries);
   if (!key.constraint.empty()) text += fmt::format("; {}", key.constraint);
+  if (!key.range_reason.empty()) text += fmt::format(" (why: {})", key.range_reason);
   return text;
 }
 

@@ -37,20 +37,27 @@ std::string resolved_mesh_path(const Case& case_) {
   return (std::filesystem::path(set_in).parent_path() / path).string();
 }
 
-/// Checks the Jacobian at the Gauss points of the full rule, where the solver evaluates it.
+/// Checks the Jacobian at the Gauss points of the full rule, where the solver
+/// evaluates it, and at the cell's nodes: a collapsed edge (two corners in one
+/// place) or a corner angle of 180° or more has det J ≤ 0 at a corner only,
+/// while every Gauss point can still be positive.
 void check_jacobians(const Case& case_, const mesh::Mesh<2>& mesh) {
-  fem::CellValues<2> values(mesh.order, fem::gauss_rule<2>(mesh.order + 1));
+  fem::CellValues<2> at_gauss(mesh.order, fem::gauss_rule<2>(mesh.order + 1));
+  fem::CellValues<2> at_nodes(mesh.order, fem::nodal_rule<2>(mesh.order + 1));
   fem::CellValues<2>::Gradients coordinates(2, mesh.nodes_per_cell());
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
-    if (values.reinit(coordinates)) continue;
+    const bool gauss_valid = at_gauss.reinit(coordinates);
+    if (gauss_valid && at_nodes.reinit(coordinates)) continue;
     const Point<2> centre = coordinates.rowwise().mean();
     const Case::KeyLocation where = location_of(case_, "mesh.file");
     throw InputError(where.file, where.line, "mesh.file",
-                     fmt::format("cell {} (centre ({:.6g}, {:.6g})) is inverted or tangled: its "
-                                 "Jacobian is not positive at a Gauss point",
-                                 cell, centre.x(), centre.y()),
+                     fmt::format("{}: cell {} (centre ({:.6g}, {:.6g})) is inverted, tangled or "
+                                 "degenerate: its Jacobian is not positive at a {}",
+                                 case_.mesh_file, cell, centre.x(), centre.y(),
+                                 gauss_valid ? "node (a collapsed edge or a corner angle ≥ 180°)"
+                                             : "Gauss point"),
                      "fix the mesh: every quadrilateral must be convex enough that its "
                      "isoparametric map is one-to-one");
   }

@@ -102,10 +102,15 @@ std::optional<Real> parse_mem_total(std::string_view meminfo) {
 }
 
 Real machine_memory_bytes() {
-  std::ifstream stream("/proc/meminfo");
-  std::stringstream text;
-  text << stream.rdbuf();
-  return parse_mem_total(text.str()).value_or(fallback_memory_bytes);
+  // MemTotal is fixed while formflow runs: read once, not on every load_case
+  // (a study plans dozens of cases, a fuzzer millions).
+  static const Real total = [] {
+    std::ifstream stream("/proc/meminfo");
+    std::stringstream text;
+    text << stream.rdbuf();
+    return parse_mem_total(text.str()).value_or(fallback_memory_bytes);
+  }();
+  return total;
 }
 
 std::optional<KeyProblem> mesh_memory_problem(const Case& case_, Real memory_bytes) {

@@ -37,7 +37,7 @@ std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real s
 /// MemTotal from `meminfo` (the text of /proc/meminfo) in bytes.
 std::optional<Real> parse_mem_total(std::string_view meminfo);
 
-/// This machine's MemTotal in bytes, or fallback_memory_bytes.
+/// This machine's MemTotal in bytes (read once per process), or fallback_memory_bytes.
 Real machine_memory_bytes();
 
 /// Why the case's mesh cannot run in `memory_bytes`: the cell count, the

@@ -29,7 +29,10 @@ NearestFittingSizes nearest_fitting_sizes(std::span<const Real> lengths, Real si
         if (!out.smaller || length / n > out.smaller->size()) out.smaller = FittingSize{length, n};
         break;
       }
-    for (int n = static_cast<int>(std::floor(length / size)); n >= 1; --n)
+    // Both searches look at most `search` cell counts away: with ~1e7 cells
+    // along a length an unbounded downward search took seconds per hint.
+    const int finest = static_cast<int>(std::floor(length / size));
+    for (int n = finest; n >= std::max(1, finest - search); --n)
       if (fits_all(length / n)) {
         if (!out.larger || length / n < out.larger->size()) out.larger = FittingSize{length, n};
         break;

@@ -2,12 +2,13 @@
 // Conversion of a Gmsh model (quad-4/quad-9 cells, physical curve groups) to Mesh<2>.
 #include "formflow/mesh/gmsh_mesh.hpp"
 
+#include "formflow/mesh/msh_file.hpp"
+
 #include <fmt/format.h>
 #include <gmsh.h>
 
 #include <algorithm>
 #include <array>
-#include <filesystem>
 #include <map>
 #include <unordered_map>
 
@@ -327,18 +328,18 @@ Mesh<2> mesh_from_gmsh_model(const GmshSession& session,
 
 Mesh<2> read_gmsh_mesh(const std::string& path, const std::vector<PhysicalBoundary>& boundaries,
                        int order) {
-  std::error_code code;
-  if (!std::filesystem::exists(path, code))
-    throw MeshFileError(Subject::File, "", "no such file: " + path,
-                        "a relative mesh.file is taken from the case file's directory");
-  if (!std::filesystem::is_regular_file(path, code))
-    throw MeshFileError(Subject::File, "", "not a regular file: " + path, "give a .msh file");
+  // Gmsh would run a file that is not a mesh as a script: check first, then
+  // let Gmsh read only a private copy of the checked bytes (mesh/msh_file.hpp).
+  const PrivateMshCopy copy(read_msh_bytes(path));
   GmshSession session;
   try {
-    session.call([&] { gmsh::open(path); });
+    session.call([&] { gmsh::open(copy.path()); });
   } catch (const GmshFailure& failure) {
-    throw MeshFileError(Subject::File, "",
-                        fmt::format("Gmsh cannot read {}: {}", path, failure.what()),
+    std::string message = failure.what();
+    for (auto at = message.find(copy.path()); at != std::string::npos;
+         at = message.find(copy.path(), at + path.size()))
+      message.replace(at, copy.path().size(), path); // name the user's file, not the copy
+    throw MeshFileError(Subject::File, "", fmt::format("Gmsh cannot read {}: {}", path, message),
                         "give a Gmsh .msh file (format 4.1 or 2.2, ASCII or binary)");
   }
   return mesh_from_gmsh_model(session, boundaries, order);

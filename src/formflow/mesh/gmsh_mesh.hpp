@@ -53,8 +53,10 @@ Mesh<2> mesh_from_gmsh_model(const GmshSession& session,
                              const std::vector<PhysicalBoundary>& boundaries, int order);
 
 /// Reads a mesh file through Gmsh (.msh 4.1 or 2.2, ASCII or binary) and
-/// converts it as mesh_from_gmsh_model does. A missing or unreadable file is a
-/// MeshFileError with Subject::File.
+/// converts it as mesh_from_gmsh_model does. The file is data, never a
+/// script: its header is checked first (mesh/msh_header.hpp) and Gmsh reads a
+/// private copy (mesh/msh_file.hpp). A missing or unreadable file, or one that
+/// is not MSH, is a MeshFileError with Subject::File.
 Mesh<2> read_gmsh_mesh(const std::string& path, const std::vector<PhysicalBoundary>& boundaries,
                        int order);
 

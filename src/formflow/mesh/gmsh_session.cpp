@@ -25,6 +25,9 @@ GmshSession::GmshSession(bool verbose) {
   gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
   // Errors throw (as std::string) instead of being only logged.
   gmsh::option::setNumber("General.AbortOnError", 2);
+  // Gmsh 4.8 has no option that stops a script it opens from running shell
+  // commands (SystemCall) or writing files: a user's file therefore never
+  // reaches Gmsh, only a checked private copy (mesh/msh_file.hpp).
 }
 
 GmshSession::~GmshSession() {

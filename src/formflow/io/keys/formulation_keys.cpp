@@ -36,22 +36,23 @@ std::vector<CaseKey> formulation_keys() {
       real_key(
           "formulation.augmentation", 1e3,
           [](auto& c) -> auto& { return c.formulation.augmentation; })
-          .above(0)
-          .at_most(1e8)
+          .within(1e-6, 1e8)
+          .why(factor_range)
           .doc("ρ of the augmented-Lagrangian term for d = 0: r = ρ × the cell's mean secant "
                "viscosity; larger = fewer Uzawa steps, worse conditioning"),
       real_key(
           "formulation.contact_augmentation", 1e6,
           [](auto& c) -> auto& { return c.formulation.contact_augmentation; })
-          .above(0)
-          .at_most(1e12)
+          .within(1e-6, 1e12)
+          .why(penalty_range)
           .unit("stress·time/length")
           .doc("r_N of the augmented-Lagrangian contact term for dN = 0 (plays the role of 1/d_N)"),
       real_key(
           "formulation.uzawa_tolerance", 1e-8,
           [](auto& c) -> auto& { return c.formulation.uzawa_tolerance; })
-          .above(0)
+          .at_least(1e-15)
           .below(1)
+          .why(tolerance_range)
           .doc("Uzawa steps (d = 0 or dN = 0) end when the multipliers change by less than "
                "this, relative, or stop changing at a round-off floor below its square root"),
       integer_key(

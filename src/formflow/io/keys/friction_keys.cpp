@@ -48,18 +48,23 @@ std::vector<CaseKey> friction_keys() {
                "shear yield stress at the surface point; hybrid = min(coulomb, tresca)"),
       real_key(
           "friction.mu", 0.0, [](auto& c) -> auto& { return c.friction.mu; })
-          .at_least(0)
+          .within(0, 10)
+          .why("μ_f σ̄_N beyond 10 σ̄_N exceeds any shear the metal can carry: the contact sticks; "
+               "the bound keeps τ_f finite")
           .doc("Coulomb coefficient μ_f of the nonlocal friction law τ_f = μ_f σ̄_N "
                "(friction.law = \"coulomb\" or \"hybrid\")"),
       real_key(
           "friction.m", 0.0, [](auto& c) -> auto& { return c.friction.m; })
-          .at_least(0)
-          .at_most(1)
+          .within(0, 1)
+          .why("a fraction of the shear yield stress k: 0 frictionless, 1 the interface shears "
+               "like the metal")
           .doc("Tresca friction factor m of τ_f = m k (friction.law = \"tresca\" or "
                "\"hybrid\"): 0 frictionless, 1 the interface shears like the metal"),
       real_key(
           "friction.radius", 0.0, [](auto& c) -> auto& { return c.friction.radius; })
-          .at_least(0)
+          .zero_or_at_least(1e-6)
+          .at_most(1e6)
+          .why(length_range)
           .unit("length")
           .doc("mollifier radius h of the mean contact pressure σ̄_N; 0 = local pressure"),
       friction_parts_key(),
@@ -73,8 +78,8 @@ std::vector<CaseKey> friction_keys() {
                "(docs/friction.md)"),
       real_key(
           "friction.augmentation", 1.0, [](auto& c) -> auto& { return c.friction.augmentation; })
-          .above(0)
-          .at_most(1e6)
+          .within(1e-6, 1e6)
+          .why(factor_range)
           .unit("1/penalty.dN")
           .doc("exact friction with solver.method = \"secant\" (or a mixed formulation): "
                "augmentation r = value/d_N of λ_T = proj(λ_T + r u_T); "
@@ -82,8 +87,8 @@ std::vector<CaseKey> friction_keys() {
       real_key(
           "friction.newton_augmentation", 100.0,
           [](auto& c) -> auto& { return c.friction.newton_augmentation; })
-          .above(0)
-          .at_most(1e6)
+          .within(1e-6, 1e6)
+          .why(factor_range)
           .unit("1/penalty.dN")
           .doc("exact friction solved by Newton (solver.method = \"newton\"; penalty, or mixed "
                "with a condensed pressure): r = value/d_N; Newton's tangent carries the stick "

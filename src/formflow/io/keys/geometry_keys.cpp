@@ -19,6 +19,10 @@ KeySpec die_shape_key() {
            "arc (geometry.die_radius) or polyline (geometry.die_profile)");
 }
 
+/// A die face is a handful of straight pieces; 1000 points follow any curve
+/// to well below the mesh size, and keep parsing and meshing fast.
+constexpr std::size_t max_die_profile_points = 1000;
+
 KeySpec die_profile_key() {
   KeySpec spec("geometry.die_profile", KeyType::PointList, KeyPoints{});
   spec.key.set = [](Case& case_, const KeyValue& value) {
@@ -26,8 +30,11 @@ KeySpec die_profile_key() {
   };
   spec.key.get = [](const Case& case_) -> KeyValue { return case_.geometry.die_profile; };
   return spec.unit("length")
+      .at_most_entries(max_die_profile_points)
+      .why("coordinates within 1e6 like every length; a face needs few points, and toml11 "
+           "parses long lists slowly")
       .constraint("polyline die: starts at [0, H_in], ends at y = H_out, x increasing, y "
-                  "non-increasing")
+                  "non-increasing, |x|, |y| ≤ 1e6")
       .doc("polyline die face as [x, y] points, x measured from the die entry x = L_c");
 }
 
@@ -38,27 +45,31 @@ std::vector<CaseKey> geometry_keys() {
       real_key(
           "geometry.container_length", 10.0,
           [](auto& c) -> auto& { return c.geometry.container_length; })
-          .above(0)
+          .within(1e-6, 1e6)
+          .why(length_range)
           .constraint("a multiple of mesh.size")
           .unit("length")
           .doc("L_c: the container part is x ∈ [0, L_c]"),
       real_key(
           "geometry.entry_half_height", 10.0,
           [](auto& c) -> auto& { return c.geometry.entry_half_height; })
-          .above(0)
+          .within(1e-6, 1e6)
+          .why(length_range)
           .constraint("> geometry.exit_half_height; a multiple of mesh.size")
           .unit("length")
           .doc("H_in: half thickness of the billet in the container"),
       real_key(
           "geometry.exit_half_height", 5.0,
           [](auto& c) -> auto& { return c.geometry.exit_half_height; })
-          .above(0)
+          .within(1e-6, 1e6)
+          .why(length_range)
           .constraint("< geometry.entry_half_height; a multiple of mesh.size")
           .unit("length")
           .doc("H_out: half thickness of the product after the die"),
       real_key(
           "geometry.exit_length", 10.0, [](auto& c) -> auto& { return c.geometry.exit_length; })
-          .above(0)
+          .within(1e-6, 1e6)
+          .why(length_range)
           .constraint("a multiple of mesh.size")
           .unit("length")
           .doc("L_e: the exit part is x ∈ [L_c, L_c + L_e]"),
@@ -72,7 +83,8 @@ std::vector<CaseKey> geometry_keys() {
                "(L_c + (H_in − H_out)/tan α, H_out)"),
       real_key(
           "geometry.die_radius", 10.0, [](auto& c) -> auto& { return c.geometry.die_radius; })
-          .above(0)
+          .within(1e-6, 1e6)
+          .why(length_range)
           .constraint("≥ geometry.entry_half_height − geometry.exit_half_height")
           .unit("length")
           .doc("arc die: radius of the circular face, tangent to the exit direction at the die "
@@ -80,7 +92,9 @@ std::vector<CaseKey> geometry_keys() {
       die_profile_key(),
       real_key(
           "geometry.land_length", 0.0, [](auto& c) -> auto& { return c.geometry.land_length; })
-          .at_least(0)
+          .zero_or_at_least(1e-6)
+          .at_most(1e6)
+          .why(length_range)
           .constraint("a multiple of mesh.size; < geometry.exit_length for the square die")
           .unit("length")
           .doc("die land: a straight contact part y = H_out after the die face (Γ3; it counts "

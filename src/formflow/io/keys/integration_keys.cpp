@@ -14,7 +14,9 @@ std::vector<CaseKey> integration_keys() {
           .unit("points")
           .doc("Gauss points per direction of the volumetric penalty term (complete: 2 for "
                "Q1, 3 for Q2; reduced: 1, or 2 for Q2); the viscous term always uses the "
-               "complete rule"),
+               "complete rule. Not set: the element's reduced rule, 2 for Q2 and 1 for Q1 (the "
+               "complete rule locks Q1: asked for explicitly, it is kept with a warning); "
+               "summary.json's case records the rule used"),
   };
 }
 

@@ -23,6 +23,15 @@ struct KeySpec {
   KeySpec& at_least(Real value) { return lower({value, true}); }
   KeySpec& below(Real value) { return upper({value, false}); }
   KeySpec& at_most(Real value) { return upper({value, true}); }
+  /// 0, or a value ≥ `value` (0 is the key's special case, e.g. an exact constraint).
+  KeySpec& zero_or_at_least(Real value) {
+    key.smallest_nonzero = value;
+    return lower({0.0, true});
+  }
+  /// Both bounds at once: low ≤ value ≤ high.
+  KeySpec& within(Real low, Real high) { return at_least(low).at_most(high); }
+  KeySpec& at_most_entries(std::size_t count) { return key.max_entries = count, *this; }
+  KeySpec& why(std::string_view text) { return assign(key.range_reason, text); }
   KeySpec& unit(std::string_view text) { return assign(key.unit, text); }
   KeySpec& constraint(std::string_view text) { return assign(key.constraint, text); }
   KeySpec& doc(std::string_view text) { return assign(key.doc, text); }
@@ -76,6 +85,28 @@ KeySpec enum_key(std::string_view name, std::string_view default_value,
   };
   return spec;
 }
+
+// Why the ranges are what they are; each range keeps every scale the solver
+// forms (strain rates, viscosities σ_p/ε̄̇, penalties 1/d, areas, powers) a
+// finite, normal double: no product of a few of them can overflow or underflow.
+inline constexpr std::string_view length_range =
+    "lengths within 1e-6…1e6 keep coordinates, Jacobians, areas and strain rates finite";
+inline constexpr std::string_view rate_range =
+    "strain rates within 1e-12…1e12 keep σ_p, σ_p/ε̄̇ and their products finite";
+inline constexpr std::string_view stress_range =
+    "stresses within 1e-12…1e12 keep viscosities, pressures and powers finite";
+inline constexpr std::string_view penalty_range =
+    "1/d ≤ 1e15: the penalty term stays finite next to the viscous one (0 is the exact "
+    "constraint)";
+inline constexpr std::string_view exponent_range =
+    "a rate exponent in (0, 1] (condition 2.11); ≥ 1e-6 keeps ε̄̇^(exponent − 1) finite";
+inline constexpr std::string_view factor_range =
+    "a dimensionless factor within 1e-6…1e6 of its scale keeps the augmented terms finite";
+inline constexpr std::string_view law_parameter_range =
+    "bounded so that σ_p can be evaluated; a combination whose σ_p is not finite and "
+    "positive over [rate1/10, 10 rate2] is refused at load time";
+inline constexpr std::string_view tolerance_range =
+    "a relative change below 1e-15 is round-off: no iteration could ever meet it";
 
 /// The rows of one section, in reference order (each in io/keys/<section>_keys.cpp).
 std::vector<CaseKey> process_keys();

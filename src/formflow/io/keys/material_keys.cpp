@@ -39,60 +39,79 @@ std::vector<CaseKey> material_keys() {
                "A ε̄̇^α (paper eq. 5.4); norton_hoff √3 K (√3 ε̄̇)^m; hensel_spittel "
                "A e^(m1 T) ε^m2 e^(m4/ε) ε̄̇^(m3 + m8 T); perfectly_plastic σ0"),
       real_key("material.A", 1.7320508075688772, law_parameter(&PiecewisePower::A))
-          .above(0)
+          .within(1e-12, 1e12)
+          .why(stress_range)
           .unit("stress·time^α")
           .doc("A of σ_p = A ε̄̇^α (paper eq. 5.4); √3 gives the shear yield k ≈ 1"),
       real_key("material.alpha", 1e-3, law_parameter(&PiecewisePower::alpha))
-          .above(0)
-          .at_most(1)
+          .within(1e-6, 1)
+          .why(exponent_range)
           .doc("strain-rate sensitivity α"),
       real_key(
           "material.rate1", 1e-3, [](auto& c) -> auto& { return c.material.rate1; })
-          .above(0)
+          .within(1e-12, 1e12)
+          .why(rate_range)
           .constraint("< material.rate2")
           .unit("1/time")
           .doc("ε̄̇₁: below it σ_p is continued linearly through the origin"),
       real_key(
           "material.rate2", 1e3, [](auto& c) -> auto& { return c.material.rate2; })
-          .above(0)
+          .within(1e-12, 1e12)
+          .why(rate_range)
           .constraint("> material.rate1")
           .unit("1/time")
           .doc("ε̄̇₂: above it σ_p is continued linearly through the origin"),
       real_key("material.K", 1.0, law_parameter(&NortonHoff::K))
-          .above(0)
+          .within(1e-12, 1e12)
+          .why(stress_range)
           .unit("stress·time^m")
           .doc("norton_hoff: consistency K of s = 2K(√3 ε̄̇)^(m−1) ė"),
       real_key("material.m", 0.1, law_parameter(&NortonHoff::m))
-          .above(0)
-          .at_most(1)
+          .within(1e-6, 1)
+          .why(exponent_range)
           .doc("norton_hoff: strain-rate sensitivity m (1 = linear viscous)"),
       real_key("material.sigma0", 1.7320508075688772, law_parameter(&PerfectlyPlastic::sigma0))
-          .above(0)
+          .within(1e-12, 1e12)
+          .why(stress_range)
           .unit("stress")
           .doc("perfectly_plastic: the rate-independent yield stress σ0"),
       real_key("material.hs_A", 1.7320508075688772, law_parameter(&HenselSpittel::A))
-          .above(0)
+          .within(1e-12, 1e12)
+          .why(stress_range)
           .unit("stress·time^(m3+m8 T)")
           .doc("hensel_spittel: A"),
       real_key("material.hs_m1", 0.0, law_parameter(&HenselSpittel::m1))
+          .within(-10, 10)
+          .why(law_parameter_range)
           .unit("1/temperature")
           .doc("hensel_spittel: temperature factor e^(m1 T)"),
       real_key("material.hs_m2", 0.0, law_parameter(&HenselSpittel::m2))
+          .within(-10, 10)
+          .why(law_parameter_range)
           .doc("hensel_spittel: strain-hardening exponent of ε^m2"),
       real_key("material.hs_m3", 0.1, law_parameter(&HenselSpittel::m3))
+          .within(-10, 10)
+          .why(law_parameter_range)
           .constraint("0 < m3 + m8 T ≤ 1")
           .doc("hensel_spittel: strain-rate exponent m3 of ε̄̇^(m3 + m8 T)"),
       real_key("material.hs_m4", 0.0, law_parameter(&HenselSpittel::m4))
+          .within(-10, 10)
+          .why(law_parameter_range)
           .doc("hensel_spittel: softening term e^(m4/ε)"),
       real_key("material.hs_m8", 0.0, law_parameter(&HenselSpittel::m8))
+          .within(-1, 1)
+          .why(law_parameter_range)
           .unit("1/temperature")
           .constraint("0 < m3 + m8 T ≤ 1")
           .doc("hensel_spittel: temperature dependence m8 T of the strain-rate exponent"),
       real_key("material.temperature", 0.0, law_parameter(&HenselSpittel::temperature))
+          .within(-10000.0, 10000.0)
+          .why(law_parameter_range)
           .unit("temperature")
           .doc("hensel_spittel: the (uniform, constant) temperature T of the isothermal form"),
       real_key("material.strain", 1.0, law_parameter(&HenselSpittel::strain))
-          .above(0)
+          .within(1e-6, 1e6)
+          .why(law_parameter_range)
           .doc("hensel_spittel: the reference equivalent strain ε at which the law is taken "
                "(the steady model carries no strain history)"),
   };

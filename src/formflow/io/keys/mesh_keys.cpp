@@ -42,7 +42,8 @@ std::vector<CaseKey> mesh_keys() {
           .doc("velocity element: Q1 (4-node bilinear) or Q2 (9-node biquadratic)"),
       real_key(
           "mesh.size", 1.0, [](auto& c) -> auto& { return c.mesh_size; })
-          .above(0)
+          .within(1e-6, 1e6)
+          .why(length_range)
           .constraint("divides every geometry length when mesh.source = \"structured\"; the "
                       "mesh's estimated memory fits in this machine's (docs/benchmarks.md)")
           .unit("length")

@@ -17,7 +17,9 @@ std::vector<CaseKey> process_keys() {
                "drawing: the front end Γ5 is pulled"),
       real_key(
           "process.speed", 1.0, [](auto& c) -> auto& { return c.process.speed; })
-          .above(0)
+          .within(1e-6, 1e6)
+          .why("with lengths within 1e-6…1e6 it keeps strain rates within 1e-12…1e12, where "
+               "σ_p and σ_p/ε̄̇ are finite")
           .unit("length/time")
           .doc("prescribed normal speed u⁰ on Γ1 (extrusion) or Γ5 (drawing)"),
       enum_key(

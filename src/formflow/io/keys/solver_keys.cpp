@@ -9,8 +9,9 @@ std::vector<CaseKey> solver_keys() {
   return {
       real_key(
           "solver.tolerance", 1e-4, [](auto& c) -> auto& { return c.solver.tolerance; })
-          .above(0)
+          .at_least(1e-15)
           .below(1)
+          .why(tolerance_range)
           .doc("δ: the secant iteration stops when ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < δ"),
       integer_key(
           "solver.max_iterations", 500, [](auto& c) -> auto& { return c.solver.max_iterations; })
@@ -19,7 +20,8 @@ std::vector<CaseKey> solver_keys() {
           .doc("iteration limit; reaching it is a result (not converged, exit 3), not an error"),
       real_key(
           "solver.initial_rate", 1.0, [](auto& c) -> auto& { return c.solver.initial_rate; })
-          .above(0)
+          .within(1e-12, 1e12)
+          .why(rate_range)
           .unit("1/time")
           .doc("ε̄̇ whose secant viscosity σ_p(ε̄̇)/ε̄̇ gives the constant-viscosity first "
                "iterate"),
@@ -42,7 +44,8 @@ std::vector<CaseKey> solver_keys() {
                "secant: the paper's secant-modulus (Kachanov) iteration (eq. 5.2–5.3)"),
       real_key(
           "solver.newton_start", 0.5, [](auto& c) -> auto& { return c.solver.newton_start; })
-          .above(0)
+          .within(1e-15, 1e6)
+          .why("a relative change: below 1e-15 it is round-off, above 1e6 Newton starts at once")
           .doc("newton only: secant steps are taken while the relative change exceeds this "
                "(safeguard far from the solution)"),
       integer_key(

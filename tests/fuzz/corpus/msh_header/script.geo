@@ -1,0 +1,2 @@
+SystemCall "touch /tmp/x";
+Merge "other.geo";

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// The monitor's estimate of the time left never exceeds what the iteration limit allows.
+#include "formflow/app/monitor.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace formflow::app {
+namespace {
+
+/// The "left[s]" column of each line the monitor printed for `changes`, one
+/// iteration per second.
+std::vector<std::string> time_left(const std::vector<Real>& changes, Real tolerance,
+                                   int max_iterations) {
+  std::FILE* out = std::tmpfile();
+  Monitor monitor(out, tolerance, max_iterations);
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    solvers::IterationRecord record;
+    record.iteration = static_cast<int>(k) + 1;
+    record.relative_change = changes[k];
+    record.seconds = 1.0;
+    monitor(record);
+  }
+  std::rewind(out);
+  std::string text;
+  for (int c; (c = std::fgetc(out)) != EOF;) text += static_cast<char>(c);
+  std::fclose(out);
+  std::istringstream lines(text);
+  std::vector<std::string> left;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string word, last;
+    while (words >> word) last = word;
+    left.push_back(last);
+  }
+  return left;
+}
+
+TEST(Monitor, TimeLeftIsBoundedByTheIterationLimit) {
+  // A contraction of 0.999 per step needs ~9 200 more steps to reach 1e-4:
+  // the estimate alone said 23 398 s at the last of 10 allowed iterations.
+  std::vector<Real> changes;
+  for (int k = 0; k < 10; ++k) changes.push_back(std::pow(0.999, k));
+  const std::vector<std::string> left = time_left(changes, 1e-4, 10);
+  ASSERT_EQ(left.size(), 10u);
+  for (std::size_t k = 1; k < left.size(); ++k) {
+    SCOPED_TRACE(k);
+    ASSERT_NE(left[k], "-");
+    // After iteration k + 1 of 10, at 1 s each, at most 10 − (k + 1) s remain.
+    EXPECT_LE(std::stod(left[k]), 10.0 - static_cast<double>(k + 1) + 1e-9);
+  }
+  EXPECT_EQ(std::stod(left.back()), 0.0);
+}
+
+TEST(Monitor, FastConvergenceKeepsItsOwnEstimate) {
+  // Contraction 0.1 per step from 1: 1e-4 is 2 steps away after the third line.
+  const std::vector<std::string> left = time_left({1.0, 0.1, 0.01}, 1e-4, 500);
+  EXPECT_NEAR(std::stod(left.back()), 2.0, 1e-9);
+}
+
+} // namespace
+} // namespace formflow::app
