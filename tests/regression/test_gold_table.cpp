@@ -47,9 +47,9 @@ std::ostream& operator<<(std::ostream& out, const GoldCase& row) {
 }
 
 /// Relative tolerance of the δ = 1e-10 reactions (file comment). Measured spread of
-/// the table against this machine's default kernel (SkylakeX): OPENBLAS_CORETYPE =
-/// Haswell 3.1e-10, Sandybridge 2.3e-10, Prescott 3.0e-11 (all in the Uzawa rows, whose
-/// inner loop stops on a multiplier-change test), OPENBLAS_NUM_THREADS = 1 7e-12;
+/// the table against this machine's default kernel (Cooperlake; SkylakeX gives the same bits):
+/// OPENBLAS_CORETYPE = Haswell 3.1e-10, Sandybridge 2.3e-10, Prescott 3.0e-11 (all in the Uzawa
+/// rows, whose inner loop stops on a multiplier-change test), OPENBLAS_NUM_THREADS = 1 7e-12;
 /// iteration counts identical.
 constexpr double kGoldTolerance = 1e-9;
 
