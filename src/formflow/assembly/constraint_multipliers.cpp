@@ -79,56 +79,6 @@ template <int dim> VectorX ConstraintMultipliers<dim>::cell_pressure(Index cell)
 }
 
 template <int dim>
-void ConstraintMultipliers<dim>::add_cell_terms(Index cell, std::span<const Real> viscosity,
-                                                MatrixX& local_matrix, VectorX& local_load) {
-  const MatrixX& divergence = divergence_[cell];
-  if (has_global_pressure()) {
-    local_load.noalias() -= divergence.transpose() * cell_pressure(cell); // −Bᵀ p
-    return;
-  }
-  Real weight = 0.0;
-  if (is_exact_pressure()) {
-    const Real mean_viscosity = std::accumulate(viscosity.begin(), viscosity.end(), 0.0) /
-                                static_cast<Real>(viscosity.size());
-    weight = augmentation_[cell] = formulation_.augmentation * mean_viscosity;
-    local_load.noalias() -= divergence.transpose() * multiplier_[cell]; // −Bᵀ λ
-  } else {
-    weight = 1.0 / penalty_.d;
-  }
-  local_matrix.noalias() += weight * divergence.transpose() * inverse_mass_[cell] * divergence;
-}
-
-template <int dim>
-void ConstraintMultipliers<dim>::add_cell_force(Index cell,
-                                                const Eigen::Ref<const VectorX>& velocity,
-                                                Eigen::Ref<VectorX> force) const {
-  FF_ASSERT(is_condensed_penalty(), "the force of the condensed pressure needs d > 0");
-  // At most 8 pressure functions per cell (Q1disc in 3D): no heap in the cell loop.
-  using CellPressure = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 8, 1>;
-  const CellPressure divergence = divergence_[cell] * velocity;
-  const CellPressure pressure = inverse_mass_[cell] * divergence / penalty_.d;
-  force.noalias() += divergence_[cell].transpose() * pressure; // Bᵀ c, c = (1/d) M⁻¹ B u
-}
-
-template <int dim>
-void ConstraintMultipliers<dim>::add_contact_terms(Index first_point,
-                                                   const fem::FacetValues<dim>& values,
-                                                   MatrixX& local_matrix, VectorX& local_load) {
-  const int n = static_cast<int>(values.shape(0).size());
-  CellVector normal_row(n * dim);
-  for (int q = 0; q < values.n_points(); ++q) {
-    for (int a = 0; a < n; ++a)
-      for (int i = 0; i < dim; ++i)
-        normal_row[a * dim + i] = values.shape(q)[a] * values.normal(q)[i];
-    const Index k = first_point + q;
-    contact_weight_[k] = values.JxW(q);
-    local_matrix.noalias() += (formulation_.contact_augmentation * values.JxW(q)) * normal_row *
-                              normal_row.transpose(); // r_N u_N v_N dΓ
-    local_load.noalias() -= (contact_multiplier_[k] * values.JxW(q)) * normal_row; // −λ v_N dΓ
-  }
-}
-
-template <int dim>
 VectorX ConstraintMultipliers<dim>::cell_velocity(Index cell, const VectorX& u) const {
   VectorX local(mesh_.nodes_per_cell() * dim);
   for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
@@ -166,24 +116,22 @@ Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> 
 }
 
 template <int dim>
-VectorX ConstraintMultipliers<dim>::pressure_coefficients(Index cell, const VectorX& u) const {
+VectorX ConstraintMultipliers<dim>::cell_pressure_coefficients(
+    Index cell, const Eigen::Ref<const VectorX>& velocity) const {
   if (has_global_pressure()) return cell_pressure(cell); // solved for, not a function of u
-  const VectorX projected_divergence =
-      inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u));
+  const VectorX projected_divergence = inverse_mass_[cell] * (divergence_[cell] * velocity);
   if (is_exact_pressure()) return multiplier_[cell] + augmentation_[cell] * projected_divergence;
   return projected_divergence / penalty_.d; // σ_H = (1/d) P div u (eq. 3.6 in the pressure space)
 }
 
 template <int dim>
-Real ConstraintMultipliers<dim>::pressure_integral(Index cell, const VectorX& u) const {
-  return basis_integral_[cell].dot(pressure_coefficients(cell, u));
+VectorX ConstraintMultipliers<dim>::pressure_coefficients(Index cell, const VectorX& u) const {
+  return cell_pressure_coefficients(cell, cell_velocity(cell, u));
 }
 
-template <int dim> Real ConstraintMultipliers<dim>::pressure_power(const VectorX& u) const {
-  Real power = 0.0;
-  for (Index cell = 0; cell < mesh_.n_cells(); ++cell)
-    power += pressure_coefficients(cell, u).dot(divergence_[cell] * cell_velocity(cell, u));
-  return power;
+template <int dim>
+Real ConstraintMultipliers<dim>::pressure_integral(Index cell, const VectorX& u) const {
+  return basis_integral_[cell].dot(pressure_coefficients(cell, u));
 }
 
 template <int dim>

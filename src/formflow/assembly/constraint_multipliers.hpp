@@ -76,19 +76,25 @@ public:
   /// −λ_N v_N, or the global pressure's −Bᵀp).
   bool has_cell_loads() const { return needs_uzawa() || has_global_pressure(); }
 
-  /// Adds the condensed pressure term of `cell` (and its load when d = 0); for the
-  /// global pressure only its load −Bᵀp (the saddle-point system holds B).
-  /// `viscosity` is the secant viscosity at the cell's full-rule points; it fixes
-  /// r_e, remembered for the next update (so call update after assembling).
-  void add_cell_terms(Index cell, std::span<const Real> viscosity, MatrixX& local_matrix,
-                      VectorX& local_load);
-  /// The condensed pressure's force on `cell`, (1/d) Bᵀ M⁻¹ B u_e, added to `force`
-  /// for the cell's velocities `velocity` (node-major local dofs); is_condensed_penalty only.
-  void add_cell_force(Index cell, const Eigen::Ref<const VectorX>& velocity,
-                      Eigen::Ref<VectorX> force) const;
-  /// Exact contact on one Γ3 face whose first quadrature point is `first_point`.
-  void add_contact_terms(Index first_point, const fem::FacetValues<dim>& values,
-                         MatrixX& local_matrix, VectorX& local_load);
+  /// The weak-form terms of these multipliers (assembly/terms/*_pressure_term.cpp,
+  /// augmented_contact_term.cpp) read the per-cell matrices and multipliers here.
+  /// M⁻¹ of `cell`.
+  const MatrixX& cell_inverse_mass(Index cell) const { return inverse_mass_[cell]; }
+  /// ∫ ψ_i dx of `cell`.
+  const VectorX& cell_basis_integral(Index cell) const { return basis_integral_[cell]; }
+  /// λ_e of `cell` (d = 0).
+  const VectorX& cell_multiplier(Index cell) const { return multiplier_[cell]; }
+  /// d = 0: sets and returns r_e = ρ ν̄_e for the cell's mean secant viscosity ν̄_e,
+  /// remembered for the next update (so update after assembling).
+  Real record_augmentation(Index cell, Real mean_viscosity) {
+    return augmentation_[cell] = formulation_.augmentation * mean_viscosity;
+  }
+  /// σ_H coefficients of `cell` for its node-major local velocity.
+  VectorX cell_pressure_coefficients(Index cell, const Eigen::Ref<const VectorX>& velocity) const;
+  /// Exact contact: λ_k at Γ3 point k, and its quadrature weight, recorded by the
+  /// assembly for the L² norm of the update.
+  Real contact_multiplier(Index k) const { return contact_multiplier_[k]; }
+  void record_contact_weight(Index k, Real weight) { contact_weight_[k] = weight; }
 
   /// One Uzawa step from velocity `u` and the Γ3 normal velocities
   /// (contact_state order). Returns the relative change of the multipliers
@@ -99,12 +105,12 @@ public:
   VectorX pressure_coefficients(Index cell, const VectorX& u) const;
   /// ∫_cell σ_H dx at velocity `u`.
   Real pressure_integral(Index cell, const VectorX& u) const;
-  /// Σ_cells ∫ σ_H div u dx: the power of the pressure term (→ 0 when d = 0).
-  Real pressure_power(const VectorX& u) const;
   /// Contact pressure −σ_N at Γ3 point `k` with normal velocity `normal_velocity`.
   Real contact_pressure(Index k, Real normal_velocity) const;
   fem::PressureSpace pressure_space() const { return formulation_.pressure; }
 
+  /// Global pressure: σ_H coefficients of `cell` (its vertex values).
+  VectorX cell_pressure(Index cell) const;
   /// Global pressure (has_global_pressure only). Pressure dof of the cell's basis
   /// function i (vertex i, lexicographic; length pressure_functions_per_cell).
   std::span<const Index> cell_pressure_dofs(Index cell) const {
@@ -125,7 +131,6 @@ private:
   VectorX cell_velocity(Index cell, const VectorX& u) const;
   /// Global pressure: numbers the cell vertices (on first sight) into pressure_dofs_.
   void number_vertices();
-  VectorX cell_pressure(Index cell) const;
 
   const mesh::Mesh<dim>& mesh_;
   physics::Penalty penalty_;

@@ -2,8 +2,6 @@
 // Cell and contact-face loops of the secant system K(w) u = F.
 #include "formflow/assembly/forming_problem.hpp"
 
-#include "formflow/assembly/kernels/fixed_size.hpp"
-#include "formflow/assembly/kernels/kernels.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/fem/dof_map.hpp"
 #include "formflow/physics/kinematics.hpp"
@@ -51,7 +49,9 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
           mesh,
           DiscretisationSettings{settings.symmetry, settings.volumetric_points, settings.contact,
                                  settings.friction.radius},
-          std::move(constraints))) {}
+          std::move(constraints))) {
+  choose_terms();
+}
 
 template <int dim>
 std::vector<ContactPoint<dim>>
@@ -122,129 +122,40 @@ FormingProblem<dim>::contact_state(const VectorX& u,
   return state;
 }
 
+template <int dim> void FormingProblem<dim>::choose_terms() {
+  // Exact friction's augmentation r = friction.augmentation / d_N (used only by it).
+  const Real augmentation =
+      settings_.penalty.d_n > 0 ? settings_.friction.augmentation / settings_.penalty.d_n : 0.0;
+  terms_ = make_terms<dim>(settings_, *discretisation_, multipliers_, body_force_, augmentation);
+  assembler_ = std::make_unique<Assembler<dim>>(*discretisation_, settings_.law, terms_);
+}
+
 template <int dim>
 void FormingProblem<dim>::assemble(const VectorX* w, LinearSystem& system,
                                    const FrictionMultipliers<dim>* multipliers) const {
   ScatterPlan::clear(system);
-  const bool with_friction = w && !physics::friction_vanishes(settings_.friction);
+  // The constant-viscosity start has no friction (τ_f(0) = 0), hence no contact state.
   std::vector<ContactPoint<dim>> state;
-  if (with_friction) state = contact_state(*w, multipliers);
-
-  fem::CellValues<dim> full_values(mesh_.order, full_rule());
-  fem::CellValues<dim> volumetric_values(mesh_.order, volumetric_rule());
-  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
-  typename fem::CellValues<dim>::Gradients coordinates, velocities;
-  const int n_local = mesh_.nodes_per_cell() * dim;
-  MatrixX local_matrix(n_local, n_local);
-  VectorX local_load(n_local);
-  std::vector<Real> viscosity(full_rule().size());
-  const Real initial_viscosity = settings_.law.secant_viscosity(settings_.initial_rate);
-
-  for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
-    gather(cell, w, coordinates, velocities);
-    load_cell(cell, full_values, &volumetric_values);
-    for (int q = 0; q < full_values.n_points(); ++q) {
-      if (!w) {
-        viscosity[q] = initial_viscosity;
-        continue;
-      }
-      const Tensor3 rate = strain_rate_at(full_values, velocities, q);
-      viscosity[q] = settings_.law.secant_viscosity(physics::equivalent_strain_rate(rate));
-    }
-    local_matrix.setZero();
-    local_load.setZero();
-    add_viscous_term<dim>(full_values, viscosity, settings_.viscous_strain, local_matrix);
-    if constexpr (dim == 2) {
-      if (axisymmetric()) {
-        add_hoop_viscous_term(full_values, viscosity, settings_.viscous_strain, local_matrix);
-        add_volumetric_penalty_axisymmetric(volumetric_values, settings_.penalty.d, local_matrix);
-      }
-    }
-    if (multipliers_ && multipliers_->has_pressure_space())
-      multipliers_->add_cell_terms(cell, viscosity, local_matrix, local_load);
-    else if (!axisymmetric())
-      add_volumetric_penalty<dim>(volumetric_values, settings_.penalty.d, local_matrix);
-    assemble_contact(cell, with_friction ? &state : nullptr, coordinates, facet_values,
-                     local_matrix, local_load);
-    plan().scatter(cell, local_matrix, constraints().values, system);
-    if (multipliers_ && multipliers_->has_cell_loads()) scatter_load(cell, local_load, system);
-    if (with_friction && has_exact_friction())
-      add_friction_loads(cell, state, coordinates, facet_values, system);
-    if (body_force_) {
-      add_body_force(full_values, local_load);
-      plan().scatter_load(cell, local_load, system);
-    }
-  }
+  if (w && !physics::friction_vanishes(settings_.friction)) state = contact_state(*w, multipliers);
+  AssemblyRequest<dim> request;
+  request.pass = AssemblyPass::Secant;
+  request.velocity = w;
+  request.initial_viscosity = settings_.law.secant_viscosity(settings_.initial_rate);
+  request.contact = state;
+  ScatterSink<dim> sink(mesh_, plan(), constraints().values, &system, nullptr);
+  assembler_->run(request, &sink);
 }
 
 template <int dim>
-void FormingProblem<dim>::add_body_force(const fem::CellValues<dim>& values,
-                                         VectorX& local_load) const {
-  local_load.setZero(values.n_nodes() * dim);
-  for (int q = 0; q < values.n_points(); ++q) {
-    const Point<dim> force = body_force_(values.point(q));
-    for (int a = 0; a < values.n_nodes(); ++a) // ∫ f·φ_a e_i dx
-      local_load.template segment<dim>(a * dim) += values.shape(q)[a] * values.JxW(q) * force;
-  }
-}
-
-template <int dim>
-void FormingProblem<dim>::add_friction_loads(
-    Index cell, const std::vector<ContactPoint<dim>>& state,
-    const typename fem::CellValues<dim>::Gradients& coordinates,
-    fem::FacetValues<dim>& facet_values, LinearSystem& system) const {
-  // The friction load moves to the right-hand side: F −= ∫_Γ3 s λ_T·v dΓ. On
-  // prescribed dofs (the ram corner of the container wall) it is part of the reaction.
-  const int n_q = facet_rule().size();
-  for (const Index position : discretisation_->cell_contact_faces(cell)) {
-    reinit_contact(facet_values, coordinates, position);
-    for (int q = 0; q < n_q; ++q) {
-      const ContactPoint<dim>& point = state[position * n_q + q];
-      if (point.friction_load.isZero(0.0)) continue;
-      for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
-        for (int i = 0; i < dim; ++i) {
-          const Real load = point.friction_load[i] * facet_values.shape(q)[a] * facet_values.JxW(q);
-          const Index dof = fem::dof_of<dim>(mesh_.cells(a, cell), i);
-          if (const Index row = plan().free_index(dof); row >= 0)
-            system.rhs[row] -= load;
-          else
-            system.prescribed_loads[plan().prescribed_index(dof)] -= load;
-        }
-    }
-  }
-}
-
-template <int dim>
-void FormingProblem<dim>::assemble_contact(
-    Index cell, const std::vector<ContactPoint<dim>>* state,
-    const typename fem::CellValues<dim>::Gradients& coordinates,
-    fem::FacetValues<dim>& facet_values, MatrixX& local_matrix, VectorX& local_load) const {
-  const int n_q = facet_rule().size();
-  std::vector<Real> weight(n_q, 0.0);
-  for (const Index position : discretisation_->cell_contact_faces(cell)) {
-    reinit_contact(facet_values, coordinates, position);
-    if (multipliers_ && multipliers_->is_exact_contact())
-      multipliers_->add_contact_terms(position * n_q, facet_values, local_matrix, local_load);
-    else
-      add_contact_penalty<dim>(facet_values, settings_.penalty.d_n, local_matrix);
-    if (!state) continue;
-    for (int q = 0; q < n_q; ++q) weight[q] = (*state)[position * n_q + q].friction_weight;
-    add_friction_term<dim>(facet_values, weight, local_matrix);
-  }
-}
-
-template <int dim>
-void FormingProblem<dim>::scatter_load(Index cell, const VectorX& local_load,
-                                       LinearSystem& system) const {
-  for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
-    for (int i = 0; i < dim; ++i) {
-      const Index dof = fem::dof_of<dim>(mesh_.cells(a, cell), i);
-      const Real load = local_load[a * dim + i];
-      if (const Index free = plan().free_index(dof); free >= 0)
-        system.rhs[free] += load;
-      else
-        system.prescribed_loads[plan().prescribed_index(dof)] += load;
-    }
+PowerTerms FormingProblem<dim>::powers(const VectorX& u,
+                                       const std::vector<ContactPoint<dim>>& contact) const {
+  AssemblyRequest<dim> request;
+  request.pass = AssemblyPass::Power;
+  request.velocity = &u;
+  request.contact = contact;
+  PowerTerms power;
+  assembler_->run(request, nullptr, &power);
+  return power;
 }
 
 template <int dim>

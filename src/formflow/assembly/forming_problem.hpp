@@ -3,12 +3,16 @@
 // linearisation K(w) u = F (eq. 5.3): assembly of the global system for a given w.
 #pragma once
 
+#include "formflow/assembly/assembler.hpp"
 #include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/assembly/constraints.hpp"
 #include "formflow/assembly/contact_normals.hpp"
 #include "formflow/assembly/discretisation.hpp"
 #include "formflow/assembly/friction_multipliers.hpp"
+#include "formflow/assembly/problem_settings.hpp"
 #include "formflow/assembly/sparsity.hpp"
+#include "formflow/assembly/terms/term.hpp"
+#include "formflow/assembly/terms/term_set.hpp"
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/fem/values_cache.hpp"
 #include "formflow/physics/flow_law.hpp"
@@ -21,84 +25,6 @@
 
 namespace formflow::assembly {
 
-/// Everything the discrete problem depends on besides the mesh.
-struct ProblemSettings {
-  physics::Process process;
-  physics::FlowLaw law;
-  physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
-  physics::Penalty penalty;
-  physics::Friction friction;
-  int volumetric_points = 2; ///< Gauss points per direction of the (1/d) term
-  Real initial_rate = 1.0;   ///< ε̄̇ of the constant viscosity that starts the iteration
-  physics::Symmetry symmetry = physics::Symmetry::Plane; ///< axisymmetric: dim = 2 only
-  ContactSettings contact; ///< face or nodal contact normals (assembly/contact_normals.hpp)
-};
-
-/// State of the contact boundary Γ3 at one face quadrature point for a velocity w.
-template <int dim> struct ContactPoint {
-  Index facet = 0; ///< index into Mesh::facets
-  Point<dim> position = Point<dim>::Zero();
-  Point<dim> normal = Point<dim>::Zero();
-  Real weight = 0.0;        ///< JxW
-  Real normal_velocity = 0; ///< u_N = u·n (> 0: penetration into the die)
-  Point<dim> tangential_velocity = Point<dim>::Zero(); ///< u_T
-  Real contact_pressure = 0;                           ///< −σ_N = u_N/d_N
-  Real mean_contact_pressure = 0;                      ///< σ̄_N, mollified over radius h
-  Real friction_threshold = 0; ///< τ_f of friction.law (μ_f max(σ̄_N, 0), m k, …); 0 where off
-  Real threshold_pressure_slope = 0; ///< ∂τ_f/∂σ̄_N at the point (Newton's dτ_f coupling)
-  Real shear_yield = 0;     ///< k = σ_p(max(ε̄̇, rate1))/√3 (for laws that need it, else 0)
-  Real friction_weight = 0; ///< τ_f/√(|u_T|² + d_T²); exact friction: s·r (see below)
-  /// Exact friction only: the lagged part s·λ_T of the traction, a load in K u = F.
-  Point<dim> friction_load = Point<dim>::Zero();
-  /// λ_T = friction_weight·u_T + friction_load: the friction traction resisting the
-  /// slip (σ_T = −λ_T). Regularised: τ_f u_T/√(|u_T|² + d_T²); exact: proj(λ + r u_T).
-  Point<dim> friction_traction = Point<dim>::Zero();
-  /// Regularised: |λ_T| < 0.99 τ_f (|u_T| < 7 d_T); exact: |λ + r u_T| ≤ τ_f. Never
-  /// where τ_f = 0.
-  bool sticking = false;
-};
-
-/// Exact friction at one point for the frozen multiplier λ̂ (its tangential part)
-/// and τ_f = point.friction_threshold: friction_traction = proj(λ̂_T + r u_T) = s t,
-/// friction_weight = s r, friction_load = s λ̂_T, sticking = |t| ≤ τ_f (τ_f > 0).
-template <int dim>
-void exact_friction_point(const Point<dim>& multiplier, Real augmentation,
-                          ContactPoint<dim>& point);
-
-/// Dual variables of the primal–dual Newton linearisation (assembly/newton_system.cpp):
-/// the viscous stress w ≈ ν ė per cell and full-rule point (cell-major) and the slip
-/// direction λ ≈ u_T/√(|u_T|² + d_T²) per Γ3 point (contact_state() order). Empty:
-/// the primal choice at the current velocity, i.e. the exact tangent.
-template <int dim> struct NewtonDuals {
-  std::vector<Tensor3> stress;
-  std::vector<Point<dim>> slip;
-  bool empty() const { return stress.empty(); }
-  void clear() { stress.clear(), slip.clear(); }
-};
-
-/// The unsymmetric part of the Newton Jacobian (assembly/newton_system.cpp), applied
-/// matrix free; the symmetric rest is the assembled tangent.
-///  * the paper's full-ε̇ a-form: ∫ c ε̇_V(v) (ė(u):ε̇(δu)) dx, kept per full-rule
-///    point where c ≠ 0 as c·JxW, the divergence row ε̇_V(φ) and the row
-///    ė(u):ε̇(φ) over the cell's local dofs (a·dim + i);
-///  * the nonlocal friction threshold: ∫_Γ3 dτ_f[δu] (u_T/s)·v_T dΓ with
-///    dτ_f = μ_f dσ̄_N where σ̄_N > 0, kept per Γ3 point as μ_f u_T/s (0 elsewhere).
-template <int dim> struct UnsymmetricTangent {
-  int n_local = 0;
-  std::vector<Index> cells;               ///< cell of each kept point
-  std::vector<Real> coefficients;         ///< c·JxW per kept point
-  std::vector<Real> rows;                 ///< per kept point: divergence row, then ė(u) row
-  std::vector<Point<dim>> threshold_slip; ///< per Γ3 point (contact_state() order)
-  bool has_friction = false;              ///< some threshold_slip ≠ 0
-  void clear() {
-    cells.clear(), coefficients.clear(), rows.clear(), threshold_slip.clear(), has_friction = false;
-  }
-  bool empty() const { return cells.empty() && !has_friction; }
-};
-
-/// A volume load f(x) per unit volume (manufactured solutions): adds ∫ f·v dx to F.
-template <int dim> using BodyForce = std::function<Point<dim>(const Point<dim>&)>;
-
 template <int dim> class FormingProblem {
 public:
   /// The forming process: Dirichlet data from settings.process, no volume load.
@@ -106,6 +32,9 @@ public:
   /// Any Dirichlet data and an optional body force (verification problems).
   FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSettings& settings,
                  DirichletConstraints constraints, BodyForce<dim> body_force);
+  /// The terms and the assembler refer to the settings and the discretisation held here.
+  FormingProblem(const FormingProblem&) = delete;
+  FormingProblem& operator=(const FormingProblem&) = delete;
 
   /// Assembles K(w) and F into `system`. Without `w` the viscosity is the
   /// constant σ_p(initial_rate)/initial_rate and there is no friction (τ_f(0) = 0).
@@ -165,6 +94,16 @@ public:
   std::vector<ContactPoint<dim>>
   contact_state(const VectorX& u, const FrictionMultipliers<dim>* multipliers = nullptr) const;
 
+  /// The power of every term at `u` for its Γ3 state `contact` (contact_state(u, …)).
+  PowerTerms powers(const VectorX& u, const std::vector<ContactPoint<dim>>& contact) const;
+  /// σ_H of `cell` at `u`: its integral over the cell and its nodal values, from the
+  /// term that carries the pressure (the penalty's ε̇_V/d or the pressure space).
+  CellPressure cell_pressure(Index cell, const VectorX& u) const {
+    return assembler_->pressure(cell, u);
+  }
+  /// The problem's weak-form terms (terms/term_set.cpp).
+  const TermSet<dim>& terms() const { return terms_; }
+
   /// Augmentation r of exact friction, friction.augmentation / d_N (stress·time/length).
   Real augmentation() const { return settings_.friction.augmentation / settings_.penalty.d_n; }
   bool has_exact_friction() const {
@@ -178,7 +117,10 @@ public:
   /// Mixed formulation and exact constraints (issue 5): the pressure term and
   /// the contact term come from `multipliers` (not owned; may be null = the
   /// penalty terms of eq. 3.8). Assembly records each cell's augmentation in it.
-  void attach_multipliers(ConstraintMultipliers<dim>* multipliers) { multipliers_ = multipliers; }
+  void attach_multipliers(ConstraintMultipliers<dim>* multipliers) {
+    multipliers_ = multipliers;
+    choose_terms();
+  }
   ConstraintMultipliers<dim>* multipliers() const { return multipliers_; }
   /// The fixed part of the problem: mesh, pattern, rules, caches, Γ3, kinematics.
   const Discretisation<dim>& discretisation() const { return *discretisation_; }
@@ -229,18 +171,8 @@ private:
   void update_exact_slip_duals(const VectorX& u, const VectorX& step, bool primal,
                                const FrictionMultipliers<dim>* friction_multipliers,
                                std::vector<Point<dim>>& slip_duals) const;
-  void assemble_contact(Index cell, const std::vector<ContactPoint<dim>>* state,
-                        const typename fem::CellValues<dim>::Gradients& coordinates,
-                        fem::FacetValues<dim>& facet_values, MatrixX& local_matrix,
-                        VectorX& local_load) const;
-  /// Adds a cell's load vector (node-major local dofs) to the rhs and, on
-  /// prescribed dofs, to LinearSystem::prescribed_loads.
-  void scatter_load(Index cell, const VectorX& local_load, LinearSystem& system) const;
-  void add_friction_loads(Index cell, const std::vector<ContactPoint<dim>>& state,
-                          const typename fem::CellValues<dim>::Gradients& coordinates,
-                          fem::FacetValues<dim>& facet_values, LinearSystem& system) const;
-
-  void add_body_force(const fem::CellValues<dim>& values, VectorX& local_load) const;
+  /// Chooses the terms for the current multipliers (terms/term_set.cpp).
+  void choose_terms();
   void reinit_contact(fem::FacetValues<dim>& values, const Gradients& coordinates,
                       Index position) const {
     discretisation_->reinit_contact(values, coordinates, position);
@@ -251,6 +183,8 @@ private:
   BodyForce<dim> body_force_;
   std::unique_ptr<Discretisation<dim>> discretisation_;
   ConstraintMultipliers<dim>* multipliers_ = nullptr;
+  TermSet<dim> terms_;
+  std::unique_ptr<Assembler<dim>> assembler_;
 };
 
 } // namespace formflow::assembly

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Integration-point quantities averaged to nodes, and cell means.
 #include "formflow/fem/lagrange.hpp"
-#include "formflow/fem/pressure_space.hpp"
 #include "formflow/physics/kinematics.hpp"
 #include "formflow/post/post_process.hpp"
 
@@ -30,16 +29,9 @@ template <int dim>
 Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX& u,
                     const std::vector<assembly::ContactPoint<dim>>& contact) {
   const auto& mesh = problem.discretisation().mesh();
-  const Real d = problem.settings().penalty.d;
-  const assembly::ConstraintMultipliers<dim>* mixed =
-      problem.multipliers() && problem.multipliers()->has_pressure_space() ? problem.multipliers()
-                                                                           : nullptr;
   const int n = mesh.nodes_per_cell();
   fem::CellValues<dim> at_nodes(mesh.order, node_rule<dim>(mesh.order, n));
   fem::CellValues<dim> full_values(mesh.order, problem.discretisation().full_rule());
-  fem::CellValues<dim> volumetric_values(mesh.order, problem.discretisation().volumetric_rule());
-  const MatrixX pressure_to_nodes =
-      fem::gauss_to_nodes<dim>(mesh.order, problem.settings().volumetric_points);
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
 
   Fields fields;
@@ -49,7 +41,6 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   fields.cell_equivalent_strain_rate = VectorX::Zero(mesh.n_cells());
   fields.cell_hydrostatic_stress = VectorX::Zero(mesh.n_cells());
   VectorX count = VectorX::Zero(mesh.n_nodes());
-  VectorX stress_at_points(volumetric_values.n_points());
   auto rate_at = [&](const fem::CellValues<dim>& values, int q) {
     return physics::equivalent_strain_rate(
         problem.discretisation().strain_rate_at(values, velocities, q));
@@ -58,35 +49,17 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
     problem.discretisation().gather(cell, &u, coordinates, velocities);
     at_nodes.reinit(coordinates);
     problem.discretisation().reinit(full_values, coordinates);
-    problem.discretisation().reinit(volumetric_values, coordinates);
     Real area = 0.0;
     for (int q = 0; q < full_values.n_points(); ++q) {
       fields.cell_equivalent_strain_rate[cell] += rate_at(full_values, q) * full_values.JxW(q);
       area += full_values.JxW(q);
     }
     fields.cell_equivalent_strain_rate[cell] /= area;
-    VectorX nodal_stress;
-    if (mixed) {
-      // σ_H from the pressure space: its cell mean, and its values at the nodes.
-      fields.cell_hydrostatic_stress[cell] = mixed->pressure_integral(cell, u) / area;
-      const VectorX coefficients = mixed->pressure_coefficients(cell, u);
-      nodal_stress.resize(n);
-      for (int a = 0; a < n; ++a)
-        nodal_stress[a] = fem::tabulate_pressure<dim>(mixed->pressure_space(),
-                                                      fem::reference_node<dim>(mesh.order, a))
-                              .dot(coefficients);
-    } else {
-      for (int q = 0; q < volumetric_values.n_points(); ++q) {
-        // σ_H = ε̇_V/d (eq. 3.6), the Lagrange multiplier of incompressibility.
-        stress_at_points[q] =
-            (velocities.cwiseProduct(volumetric_values.gradients(q)).sum() +
-             problem.discretisation().hoop_rate_at(volumetric_values, velocities, q)) /
-            d;
-        fields.cell_hydrostatic_stress[cell] +=
-            stress_at_points[q] * volumetric_values.JxW(q) / area;
-      }
-      nodal_stress = pressure_to_nodes * stress_at_points;
-    }
+    // σ_H from the term that carries it (ε̇_V/d, or the pressure space): its cell mean
+    // and its values at the nodes.
+    const assembly::CellPressure pressure = problem.cell_pressure(cell, u);
+    fields.cell_hydrostatic_stress[cell] = pressure.integral / area;
+    const VectorX& nodal_stress = pressure.at_nodes;
     for (int a = 0; a < n; ++a) {
       const Index node = mesh.cells(a, cell);
       fields.equivalent_strain_rate[node] += rate_at(at_nodes, a);

@@ -2,6 +2,7 @@
 // Everything a solve produces: iteration outcome, load measures and fields.
 #pragma once
 
+#include "formflow/assembly/terms/term.hpp"
 #include "formflow/core/timer.hpp"
 #include "formflow/core/types.hpp"
 #include "formflow/solvers/stop_reason.hpp"
@@ -22,15 +23,9 @@ struct Pressures {
   Real mean_hydrostatic_near_ram = 0.0;
 };
 
-/// Powers (per unit depth of the half model) of each discrete term at the final velocity.
-struct PowerTerms {
-  Real plastic_dissipation = 0.0; ///< ∫ σ_p(ε̄̇) ε̄̇ dx
-  Real viscous_form = 0.0;        ///< a(u; u, u) (≥ dissipation when the full ε̇ is used)
-  Real volumetric_penalty = 0.0;  ///< ∫ ε̇_V²/d dx
-  Real contact_penalty = 0.0;     ///< ∫_Γ3 u_N²/d_N dΓ
-  Real friction = 0.0; ///< ∫_Γ3 λ_T·u_T dΓ (regularised: τ_f |u_T|²/√(|u_T|² + d_T²))
-  Real total() const { return viscous_form + volumetric_penalty + contact_penalty + friction; }
-};
+/// Powers (per unit depth of the half model) of each discrete term at the final velocity:
+/// the sum over the weak-form terms (assembly/terms/term.hpp).
+using PowerTerms = assembly::PowerTerms;
 
 /// One sample of the contact boundary Γ3 (a facet quadrature point), ordered by arc length.
 struct ContactSample {

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+// The cell loop shared by every pass: gather, map (from the geometry cache), evaluate
+// the flow law once per point, then ask each term.
+#include "formflow/assembly/assembler.hpp"
+
+#include "formflow/core/error.hpp"
+#include "formflow/physics/kinematics.hpp"
+
+namespace formflow::assembly {
+
+template <int dim>
+void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink,
+                         PowerTerms* powers) const {
+  const AssemblyPass pass = request.pass;
+  FF_ASSERT(request.velocity || pass == AssemblyPass::Secant, "only the start has no velocity");
+  FF_ASSERT((pass == AssemblyPass::Power) == (sink == nullptr), "a sink for every pass but Power");
+  const mesh::Mesh<dim>& mesh = discretisation_.mesh();
+  const int n_q = discretisation_.full_rule().size();
+  const int n_face_q = discretisation_.facet_rule().size();
+  const int n_local = mesh.nodes_per_cell() * dim;
+  const bool with_force = pass == AssemblyPass::Force || pass == AssemblyPass::Tangent;
+  const bool tangent = pass == AssemblyPass::Tangent;
+  const bool with_loads = terms_.has_loads();
+  const bool primal = !request.duals || request.duals->empty();
+  FF_ASSERT(!with_force || terms_.newton_ready(), "Newton covers these terms only");
+
+  fem::CellValues<dim> full(mesh.order, discretisation_.full_rule());
+  fem::CellValues<dim> volumetric(mesh.order, discretisation_.volumetric_rule());
+  fem::FacetValues<dim> face_values(mesh.order, discretisation_.facet_rule());
+  typename fem::CellValues<dim>::Gradients coordinates, velocities;
+  MatrixX matrix(n_local, n_local);
+  VectorX load(n_local);
+  CellVector force(n_local);
+  std::vector<Real> viscosity(n_q), a(n_q), b(n_q);
+  std::vector<Tensor3> rates(n_q), deviators(n_q), duals(n_q);
+  CellState<dim> cell_state{0,          full,      volumetric, coordinates,
+                            velocities, viscosity, rates,      {deviators, duals, a, b}};
+
+  // Each face term's view of face `position` (values mapped by the caller).
+  auto face_state = [&](Index cell, Index position) {
+    std::span<const ContactPoint<dim>> points;
+    if (!request.contact.empty()) points = request.contact.subspan(position * n_face_q, n_face_q);
+    std::span<const Point<dim>> slip;
+    if (tangent && !primal)
+      slip =
+          std::span<const Point<dim>>(request.duals->slip).subspan(position * n_face_q, n_face_q);
+    return FaceState<dim>{cell, position, face_values, velocities, points, slip};
+  };
+
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    discretisation_.gather(cell, request.velocity, coordinates, velocities);
+    discretisation_.load_cell(cell, full, &volumetric);
+    cell_state.cell = cell;
+    for (int q = 0; q < n_q; ++q) {
+      if (!request.velocity) {
+        viscosity[q] = request.initial_viscosity;
+        continue;
+      }
+      const Tensor3 rate = discretisation_.strain_rate_at(full, velocities, q);
+      const Real equivalent = physics::equivalent_strain_rate(rate);
+      if (pass == AssemblyPass::Secant) {
+        viscosity[q] = law_.secant_viscosity(equivalent);
+        continue;
+      }
+      rates[q] = rate;
+      if (!tangent) {
+        viscosity[q] = law_.secant_viscosity(equivalent);
+        continue;
+      }
+      const auto [secant, derivative] = law_.secant_viscosity_and_derivative(equivalent);
+      viscosity[q] = secant;
+      deviators[q] = physics::deviator(rate);
+      duals[q] = primal ? Tensor3(secant * deviators[q]) : request.duals->stress[cell * n_q + q];
+      // a = (4/9) σ_p′/ε̄̇², b = −(4/9)/ε̄̇² (kernels/tangent_kernels.hpp); at ε̄̇ = 0 the
+      // law is on its linear branch and the secant matrix is already the tangent.
+      const Real scale = equivalent > 0 ? 4.0 / 9.0 / (equivalent * equivalent) : 0.0;
+      a[q] = scale * derivative;
+      b[q] = -scale;
+    }
+    const auto faces = discretisation_.cell_contact_faces(cell);
+
+    if (pass == AssemblyPass::Power) {
+      for (const auto& term : terms_.cell) term->add_power(cell_state, *powers);
+      for (const Index position : faces) {
+        discretisation_.reinit_contact(face_values, coordinates, position);
+        for (const auto& term : terms_.face) term->add_power(face_state(cell, position), *powers);
+      }
+      continue;
+    }
+    if (pass == AssemblyPass::Force) {
+      force.setZero(n_local);
+      for (const auto& term : terms_.cell) term->add_force(cell_state, force);
+      for (const Index position : faces) {
+        discretisation_.reinit_contact(face_values, coordinates, position);
+        for (const auto& term : terms_.face) term->add_force(face_state(cell, position), force);
+      }
+      sink->add_force(cell, force);
+      continue;
+    }
+
+    // Secant and tangent: the secant matrix K_e and loads F_e first.
+    matrix.setZero();
+    load.setZero();
+    for (const auto& term : terms_.cell) term->add_secant(cell_state, matrix, load);
+    for (const Index position : faces) {
+      discretisation_.reinit_contact(face_values, coordinates, position);
+      for (const auto& term : terms_.face)
+        term->add_secant(face_state(cell, position), matrix, load);
+    }
+    if (!tangent) {
+      sink->add_matrix(cell, matrix);
+      if (with_loads) sink->add_load(cell, load);
+      continue;
+    }
+    // The secant matrix at u gives the force K_e(u) u_e − F_e; the tangent adds to it.
+    force.noalias() = matrix * cell_state.local_velocity() - load;
+    for (const auto& term : terms_.cell) term->add_tangent(cell_state, matrix);
+    for (const Index position : faces) {
+      discretisation_.reinit_contact(face_values, coordinates, position);
+      for (const auto& term : terms_.face) term->add_tangent(face_state(cell, position), matrix);
+    }
+    sink->add_matrix(cell, matrix);
+    sink->add_force(cell, force);
+    if (request.coupling)
+      for (const auto& term : terms_.cell) term->add_coupling(cell_state, *request.coupling);
+  }
+}
+
+template <int dim> CellPressure Assembler<dim>::pressure(Index cell, const VectorX& u) const {
+  const mesh::Mesh<dim>& mesh = discretisation_.mesh();
+  fem::CellValues<dim> full(mesh.order, discretisation_.full_rule());
+  fem::CellValues<dim> volumetric(mesh.order, discretisation_.volumetric_rule());
+  typename fem::CellValues<dim>::Gradients coordinates, velocities;
+  discretisation_.gather(cell, &u, coordinates, velocities);
+  discretisation_.load_cell(cell, full, &volumetric);
+  const CellState<dim> state{cell, full, volumetric, coordinates, velocities, {}, {}, {}};
+  return terms_.pressure().pressure(state);
+}
+
+template class Assembler<2>;
+template class Assembler<3>;
+
+} // namespace formflow::assembly

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// The one assembly loop: over the cells (and their Γ3 faces), every weak-form term of
+// the problem's TermSet, into a sink. The secant system, Newton's residual and
+// tangent, the powers and σ_H are passes of this loop, not loops of their own.
+#pragma once
+
+#include "formflow/assembly/assembly_sink.hpp"
+#include "formflow/assembly/discretisation.hpp"
+#include "formflow/assembly/terms/term_set.hpp"
+
+#include <span>
+
+namespace formflow::assembly {
+
+enum class AssemblyPass {
+  Secant,  ///< K(w) and F (add_matrix, add_load)
+  Force,   ///< f(u) = K(u) u − F only (add_force): one pass over the points, no matrix
+  Tangent, ///< f(u) and the symmetric Jacobian part (add_force, add_matrix) + the coupling
+  Power,   ///< the terms' powers at u (no sink)
+};
+
+template <int dim> struct AssemblyRequest {
+  AssemblyPass pass = AssemblyPass::Secant;
+  /// Full dof vector; null only for Secant: the constant viscosity `initial_viscosity`.
+  const VectorX* velocity = nullptr;
+  Real initial_viscosity = 0.0;
+  /// Γ3 points in contact_state() order; empty: none (the face terms that need them skip).
+  std::span<const ContactPoint<dim>> contact;
+  const NewtonDuals<dim>* duals = nullptr;     ///< Tangent: null or empty is the primal choice
+  UnsymmetricTangent<dim>* coupling = nullptr; ///< Tangent: the unsymmetric rest, if wanted
+};
+
+template <int dim> class Assembler {
+public:
+  Assembler(const Discretisation<dim>& discretisation, const physics::FlowLaw& law,
+            const TermSet<dim>& terms)
+      : discretisation_(discretisation), law_(law), terms_(terms) {}
+
+  /// Runs `request.pass` over every cell into `sink` (null for Power) and, for Power,
+  /// adds the terms' powers to `powers`.
+  void run(const AssemblyRequest<dim>& request, AssemblySink* sink,
+           PowerTerms* powers = nullptr) const;
+  /// σ_H of `cell` at the velocity `u`, from the pressure term.
+  CellPressure pressure(Index cell, const VectorX& u) const;
+
+private:
+  const Discretisation<dim>& discretisation_;
+  const physics::FlowLaw& law_;
+  const TermSet<dim>& terms_;
+};
+
+} // namespace formflow::assembly

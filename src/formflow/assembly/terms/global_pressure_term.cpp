@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+// A continuous pressure (Taylor–Hood Q2–Q1): its vertex values p are unknowns of the
+// saddle-point system (assembly/saddle_point_system.hpp), which holds B and −dM; the
+// velocity system gets only the load −Bᵀ p of the current pressure.
+#include "formflow/assembly/terms/pressure_space_term.hpp"
+#include "formflow/core/error.hpp"
+
+namespace formflow::assembly {
+
+namespace {
+
+template <int dim> class GlobalPressureTerm final : public PressureSpaceTerm<dim> {
+public:
+  using PressureSpaceTerm<dim>::PressureSpaceTerm;
+  std::string_view name() const override { return "global pressure"; }
+
+  void add_secant(const CellState<dim>& cell, MatrixX&, VectorX& load) const override {
+    load.noalias() -= this->multipliers_.cell_divergence(cell.cell).transpose() *
+                      this->multipliers_.cell_pressure(cell.cell); // −Bᵀ p
+  }
+  void add_force(const CellState<dim>&, CellVector&) const override {
+    FF_ASSERT(false, "Newton does not solve the saddle-point system (solvers/capabilities)");
+  }
+  bool has_loads() const override { return true; }
+  bool newton_ready() const override { return false; }
+};
+
+} // namespace
+
+template <int dim>
+std::unique_ptr<CellTerm<dim>> make_global_pressure_term(ConstraintMultipliers<dim>& pressure,
+                                                         int order, int nodes_per_cell) {
+  return std::make_unique<GlobalPressureTerm<dim>>(pressure, order, nodes_per_cell);
+}
+
+template std::unique_ptr<CellTerm<2>> make_global_pressure_term<2>(ConstraintMultipliers<2>&, int,
+                                                                   int);
+template std::unique_ptr<CellTerm<3>> make_global_pressure_term<3>(ConstraintMultipliers<3>&, int,
+                                                                   int);
+
+} // namespace formflow::assembly
