@@ -48,8 +48,9 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
   auto solver = solvers::make_cholmod_solver();
   PhaseTimes times;
   const bool newton = case_.solver.method == solvers::NonlinearMethod::Newton;
+  solvers::FormingNonlinearProblem<2> nonlinear(*solve.problem);
   if (app::make_solve_plan(case_).loop == solvers::LoopKind::AugmentedNewton) {
-    auto outcome = solvers::augmented_newton<2>(*solve.problem, *solver, case_.solver, {}, times);
+    auto outcome = solvers::augmented_newton<2>(nonlinear, *solver, case_.solver, {}, times);
     solve.velocity = outcome.solve.velocity;
     solve.stop_reason = outcome.solve.stop_reason;
     solve.iterations = static_cast<int>(outcome.solve.history.size());
@@ -57,9 +58,7 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
     solve.augmentations = outcome.augmentations;
     solve.multiplier_change = outcome.multiplier_change;
   } else if (solve.problem->has_exact_friction()) {
-    auto outcome = solvers::augmented_lagrangian<2>(
-        *solve.problem, solvers::secant_inner_solve<2>(*solve.problem, *solver, times),
-        case_.solver, {});
+    auto outcome = solvers::augmented_lagrangian<2>(nonlinear, *solver, case_.solver, {}, times);
     solve.velocity = outcome.solve.velocity;
     solve.stop_reason = outcome.solve.stop_reason;
     solve.iterations = static_cast<int>(outcome.solve.history.size());
@@ -67,12 +66,12 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
     solve.augmentations = outcome.augmentations;
     solve.multiplier_change = outcome.multiplier_change;
   } else if (newton) {
-    auto outcome = solvers::newton_iteration<2>(*solve.problem, *solver, case_.solver, {}, times);
+    auto outcome = solvers::newton_iteration(nonlinear, *solver, case_.solver, {}, times);
     solve.velocity = outcome.velocity;
     solve.stop_reason = outcome.stop_reason;
     solve.iterations = static_cast<int>(outcome.history.size());
   } else {
-    auto outcome = solvers::secant_iteration<2>(*solve.problem, *solver, case_.solver, {}, times);
+    auto outcome = solvers::secant_iteration(nonlinear, *solver, case_.solver, {}, times);
     solve.velocity = outcome.velocity;
     solve.stop_reason = outcome.stop_reason;
     solve.iterations = static_cast<int>(outcome.history.size());

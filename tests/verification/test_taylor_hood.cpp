@@ -230,8 +230,11 @@ TEST(TaylorHood, ConstantPressureModeIsPinnedOnlyWhenEveryBoundaryVelocityIsPres
 
   auto solver = solvers::make_umfpack_solver();
   PhaseTimes times;
-  const solvers::SecantOutcome outcome = solvers::saddle_point_secant_iteration(
-      problem, *solver, solvers::IterationControl{}, {}, times);
+  solvers::FormingNonlinearProblem<2> nonlinear(problem);
+  solvers::TimedLinearStep linear(*solver, times);
+  solvers::SaddlePointSolve<2> saddle(nonlinear, linear);
+  const solvers::SecantOutcome outcome =
+      solvers::secant_iteration(nonlinear, saddle, solvers::IterationControl{}, {});
   ASSERT_EQ(outcome.stop_reason, solvers::StopReason::Converged);
   const VectorX& pressure = multipliers.global_pressure();
   ASSERT_TRUE(pressure.allFinite());

@@ -47,6 +47,7 @@ template <class Make> post::StudyTable mesh_ladder(const std::vector<Real>& size
 
 #include "formflow/app/simulation.hpp"
 #include "formflow/post/post_process.hpp"
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
 namespace formflow::testing {
@@ -62,8 +63,9 @@ inline Solved solve_on(const mesh::Mesh<2>& mesh, const io::Case& case_,
   const assembly::FormingProblem<2> problem(mesh, app::problem_settings(case_));
   auto solver = solvers::make_cholmod_solver();
   PhaseTimes times;
+  solvers::FormingNonlinearProblem<2> nonlinear(problem);
   solvers::SecantOutcome outcome =
-      solvers::secant_iteration<2>(problem, *solver, case_.solver, {}, times, nullptr, start);
+      solvers::secant_iteration(nonlinear, *solver, case_.solver, {}, times, start);
   Solved solved{outcome.velocity, {}};
   solved.results.stop_reason = outcome.stop_reason;
   solved.results.iterations = static_cast<int>(outcome.history.size());

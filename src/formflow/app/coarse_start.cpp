@@ -7,6 +7,7 @@
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
 
@@ -78,8 +79,9 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
     }
     auto solver = solvers::make_linear_solver(make_solve_plan(case_).linear,
                                               solvers::MatrixStorage::SymmetricLower);
+    solvers::FormingNonlinearProblem<2> nonlinear(*problem);
     solvers::SecantOutcome outcome = solvers::newton_iteration(
-        *problem, *solver, coarse.solver, {}, times, level < levels ? &guess : nullptr);
+        nonlinear, *solver, coarse.solver, {}, times, level < levels ? &guess : nullptr);
     start.mesh_sizes.push_back(coarse.mesh_size);
     start.iterations.push_back(static_cast<int>(outcome.history.size()));
     start.converged = start.converged && outcome.stop_reason == solvers::StopReason::Converged;

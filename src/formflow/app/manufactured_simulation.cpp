@@ -6,6 +6,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/mesh/box_mesh.hpp"
 #include "formflow/post/post_process.hpp"
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
 #include <chrono>
@@ -40,8 +41,9 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
         assembly::make_boundary_constraints<2>(simulation.mesh, velocity), body_force);
   }
   auto solver = solvers::make_cholmod_solver();
+  solvers::FormingNonlinearProblem<2> nonlinear(*problem);
   solvers::SecantOutcome outcome =
-      solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+      solvers::secant_iteration(nonlinear, *solver, case_.solver, on_iteration, results.timing);
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());

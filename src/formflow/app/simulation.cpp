@@ -9,10 +9,10 @@
 #include "formflow/solvers/augmented_lagrangian.hpp"
 #include "formflow/solvers/augmented_newton.hpp"
 #include "formflow/solvers/condition_estimate.hpp"
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/saddle_point_iteration.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
-#include "formflow/solvers/uzawa_iteration.hpp"
 
 #include <chrono>
 
@@ -84,47 +84,50 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     }
   }
   const VectorX* start_velocity = coarse ? &coarse->velocity : nullptr;
+  // Each loop is a driver (secant or Newton) over the problem's nonlinear
+  // interface, its linear step swapped (Uzawa steps, the saddle point) or the
+  // whole driver wrapped by exact friction's augmentation.
+  solvers::FormingNonlinearProblem<2> nonlinear(*problem);
+  solvers::TimedLinearStep linear(*solver, results.timing);
+  const auto take_augmented = [&](solvers::AugmentedOutcome<2>&& augmented) {
+    outcome = std::move(augmented.solve);
+    multipliers = std::move(augmented.multipliers);
+    results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+  };
   switch (plan.loop) {
-  case solvers::LoopKind::AugmentedNewton: {
+  case solvers::LoopKind::AugmentedNewton:
     // Exact Coulomb friction by Newton, multipliers updated between its steps
     // (solvers/augmented_newton.hpp).
-    auto augmented = solvers::augmented_newton(*problem, *solver, case_.solver, on_iteration,
-                                               results.timing, start_velocity);
-    outcome = std::move(augmented.solve);
-    multipliers = std::move(augmented.multipliers);
-    results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+    take_augmented(solvers::augmented_newton(nonlinear, *solver, case_.solver, on_iteration,
+                                             results.timing, start_velocity));
     break;
-  }
-  case solvers::LoopKind::AugmentedSecant: {
+  case solvers::LoopKind::AugmentedSecant:
     // Exact friction, the paper's method (or a mixed formulation): the
-    // augmented-Lagrangian loop with secant inner solves.
-    auto augmented = solvers::augmented_lagrangian(
-        *problem, solvers::secant_inner_solve(*problem, *solver, results.timing), case_.solver,
-        on_iteration);
-    outcome = std::move(augmented.solve);
-    multipliers = std::move(augmented.multipliers);
-    results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+    // augmentation around the secant iteration, an update per converged inner solve.
+    take_augmented(solvers::augmented_lagrangian(nonlinear, *solver, case_.solver, on_iteration,
+                                                 results.timing));
     break;
-  }
-  case solvers::LoopKind::SaddlePointSecant:
+  case solvers::LoopKind::SaddlePointSecant: {
     // Taylor–Hood: a continuous pressure cannot be condensed; the saddle-point
     // system is indefinite (an LU back-end, solvers/capabilities.hpp).
-    outcome = solvers::saddle_point_secant_iteration(*problem, *solver, case_.solver, on_iteration,
-                                                     results.timing);
+    solvers::SaddlePointSolve<2> saddle(nonlinear, linear);
+    outcome = solvers::secant_iteration(nonlinear, saddle, case_.solver, on_iteration);
     break;
-  case solvers::LoopKind::UzawaSecant:
-    outcome = solvers::uzawa_secant_iteration(*problem, *solver, case_.solver, on_iteration,
-                                              results.timing);
+  }
+  case solvers::LoopKind::UzawaSecant: {
+    solvers::SecantSolve uzawa(nonlinear, linear, /*uzawa_steps=*/true);
+    outcome = solvers::secant_iteration(nonlinear, uzawa, case_.solver, on_iteration);
     break;
+  }
   case solvers::LoopKind::Newton:
     // The penalty problem (plane and axisymmetric) and the mixed one with its
     // pressure condensed at d > 0 (the condensation is linear in u).
-    outcome = solvers::newton_iteration(*problem, *solver, case_.solver, on_iteration,
+    outcome = solvers::newton_iteration(nonlinear, *solver, case_.solver, on_iteration,
                                         results.timing, start_velocity);
     break;
   case solvers::LoopKind::Secant:
     outcome =
-        solvers::secant_iteration(*problem, *solver, case_.solver, on_iteration, results.timing);
+        solvers::secant_iteration(nonlinear, *solver, case_.solver, on_iteration, results.timing);
     break;
   }
   results.method = plan.name(coarse.has_value());

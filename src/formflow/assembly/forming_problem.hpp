@@ -68,27 +68,6 @@ public:
   void apply_coupling(const UnsymmetricTangent<dim>& coupling, const VectorX& x_free,
                       VectorX& y_free) const;
 
-  /// Newton (assembly/newton_system.cpp): the duals after the full step `step`
-  /// from `u`, the iterate being `next`: Newton's update of w = ν ė and of
-  /// λ = u_T/s, then the caps √(⅔ w:w) ≤ σ_p(ε̄̇(next)) and |λ| ≤ 1 that keep the
-  /// tangent positive semi-definite; w = ν ė where the law is linear.
-  /// Exact friction: the slip dual is the scaled traction λ ≈ proj(t)/τ_f, t = λ̂ + r u_T
-  /// for the frozen `friction_multipliers` λ̂ (null: 0), Newton-updated and capped the same way.
-  void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
-                    NewtonDuals<dim>& duals,
-                    const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
-
-  /// Newton (assembly/newton_system.cpp): the duals after a secant step from
-  /// `previous` to `next`: the stress that step balanced, w = ν(ε̄̇(previous)) ė(next),
-  /// and the slip direction u_T(next)/s(previous), with the caps of update_duals
-  /// (previous = nullptr: the constant-viscosity start, w = ν(initial_rate) ė, λ = 0).
-  /// Where the rate has collapsed (near-rigid zones) w stays far below the yield
-  /// stress and the tangent stays close to the secant matrix there.
-  /// Exact friction: λ = t(next)/max(τ_f, |t|)(previous), capped (the traction that
-  /// secant step used, over τ_f).
-  void secant_duals(const VectorX* previous, const VectorX& next, NewtonDuals<dim>& duals,
-                    const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
-
   /// Γ3 quadrature-point state for the velocity `u` (full dof vector); with exact
   /// friction the traction is proj(λ_T + r u_T) for the given (or zero) multipliers.
   std::vector<ContactPoint<dim>>
@@ -162,15 +141,6 @@ public:
   }
 
 private:
-  void update_slip_duals(const VectorX& u, const VectorX& step, bool primal,
-                         std::vector<Point<dim>>& slip_duals) const;
-  /// Exact friction's trial tractions t = λ̂_T + r u_T at the Γ3 points of `state`.
-  std::vector<Point<dim>>
-  trial_tractions(const std::vector<ContactPoint<dim>>& state,
-                  const FrictionMultipliers<dim>* friction_multipliers) const;
-  void update_exact_slip_duals(const VectorX& u, const VectorX& step, bool primal,
-                               const FrictionMultipliers<dim>* friction_multipliers,
-                               std::vector<Point<dim>>& slip_duals) const;
   /// Chooses the terms for the current multipliers (terms/term_set.cpp).
   void choose_terms();
   void reinit_contact(fem::FacetValues<dim>& values, const Gradients& coordinates,

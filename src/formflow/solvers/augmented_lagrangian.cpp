@@ -6,8 +6,8 @@
 // τ_f depends nonlocally on u through σ̄_N, so a semismooth Newton tangent would be
 // unsymmetric and dense along Γ3. Frozen λᵏ turn friction into a load plus a stick
 // penalty s·r ≤ r (s = τ_f/|λᵏ + r w_T| when slipping, 1 when sticking): the inner
-// systems stay symmetric positive definite, so the existing Cholesky secant loop
-// solves them unchanged. The Uzawa update is a proximal-point step on the dual and
+// systems stay symmetric positive definite, so the existing Cholesky secant (or
+// Newton) driver solves them unchanged. The Uzawa update is a proximal-point step on the dual and
 // converges for every r > 0; with r = 1/d_N (the default) the stick penalty is as
 // stiff as the normal contact penalty, so after the first outer step the friction is
 // already that of the regularised law with d_T ≈ τ_f d_N, and the later steps only
@@ -52,75 +52,62 @@ Real update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
 }
 
 template <int dim>
-AugmentedOutcome<dim>
-augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSolve<dim>& inner,
-                     const IterationControl& control, const IterationObserver& on_iteration) {
+AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
+                                       AugmentationSchedule schedule,
+                                       const IterationControl& control, const InnerDriver& driver) {
   AugmentedOutcome<dim> outcome;
-  SecantOutcome& solve = outcome.solve;
-  int used = 0;
-  bool warm = false;
-  while (true) {
-    IterationControl inner_control = control;
-    inner_control.max_iterations = control.max_iterations - used;
-    if (inner_control.max_iterations <= 0) {
-      solve.stop_reason = StopReason::MaxIterations;
-      return outcome;
-    }
-    // One history and one monitor for the whole run: number the inner iterations on.
-    const int offset = used;
-    const IterationObserver renumbered = [&](const IterationRecord& record) {
-      IterationRecord shifted = record;
-      shifted.iteration += offset;
-      if (on_iteration) on_iteration(shifted);
-    };
-    SecantOutcome step =
-        inner(outcome.multipliers, warm ? &solve.velocity : nullptr, inner_control, renumbered);
-    for (IterationRecord& record : step.history) {
-      record.iteration += offset;
-      solve.history.push_back(record);
-    }
-    used += static_cast<int>(step.history.size());
-    solve.velocity = std::move(step.velocity);
-    solve.stop_reason = step.stop_reason;
-    warm = true;
-    ++outcome.augmentations;
-    if (step.stop_reason != StopReason::Converged) return outcome;
-
-    outcome.multiplier_change =
-        update_friction_multipliers(problem, solve.velocity, outcome.multipliers);
-    if (!std::isfinite(outcome.multiplier_change)) {
-      solve.stop_reason = StopReason::NonFinite;
-      return outcome;
-    }
-    if (outcome.multiplier_change < control.tolerance) return outcome; // Converged
-  }
+  const bool every_iteration = schedule == AugmentationSchedule::EveryIteration;
+  int updates = 0;
+  int inner_solves = 1; // ConvergedIterate: the first inner solve starts with the driver
+  problem.set_friction_multipliers(&outcome.multipliers);
+  problem.set_after_iteration(
+      [&](const IterationState& state) -> AfterIteration {
+        // ConvergedIterate: the inner solve with λᵏ frozen goes on until it converges.
+        if (!every_iteration && !state.converged) return {false, std::nullopt};
+        outcome.multiplier_change =
+            update_friction_multipliers(problem.forming(), *state.velocity, outcome.multipliers);
+        ++updates;
+        if (!std::isfinite(outcome.multiplier_change)) return {false, StopReason::NonFinite};
+        const bool settled = outcome.multiplier_change < control.tolerance;
+        // An unsettled update starts the next inner solve, if an iteration is left for it.
+        if (!settled && state.iteration < control.max_iterations) ++inner_solves;
+        return {settled, std::nullopt};
+      },
+      true);
+  outcome.solve = driver(problem);
+  // The hook and the frozen multipliers refer to this call's locals.
+  problem.set_after_iteration({}, false);
+  problem.set_friction_multipliers(nullptr);
+  outcome.augmentations = every_iteration ? updates : inner_solves;
+  return outcome;
 }
 
 template <int dim>
-InnerSolve<dim> secant_inner_solve(const assembly::FormingProblem<dim>& problem,
-                                   LinearSolver& solver, PhaseTimes& times) {
-  return [&problem, &solver, &times](const assembly::FrictionMultipliers<dim>& multipliers,
-                                     const VectorX* start, const IterationControl& control,
-                                     const IterationObserver& on_iteration) {
-    return secant_iteration(problem, solver, control, on_iteration, times, &multipliers, start);
-  };
+AugmentedOutcome<dim> augmented_lagrangian(FormingNonlinearProblem<dim>& problem,
+                                           LinearSolver& solver, const IterationControl& control,
+                                           const IterationObserver& on_iteration,
+                                           PhaseTimes& times) {
+  return augment_friction(problem, AugmentationSchedule::ConvergedIterate, control,
+                          [&](NonlinearProblem& inner) {
+                            return secant_iteration(inner, solver, control, on_iteration, times);
+                          });
 }
 
 template struct AugmentedOutcome<2>;
 template struct AugmentedOutcome<3>;
-template AugmentedOutcome<2> augmented_lagrangian<2>(const assembly::FormingProblem<2>&,
-                                                     const InnerSolve<2>&, const IterationControl&,
-                                                     const IterationObserver&);
-template AugmentedOutcome<3> augmented_lagrangian<3>(const assembly::FormingProblem<3>&,
-                                                     const InnerSolve<3>&, const IterationControl&,
-                                                     const IterationObserver&);
+template AugmentedOutcome<2> augment_friction<2>(FormingNonlinearProblem<2>&, AugmentationSchedule,
+                                                 const IterationControl&, const InnerDriver&);
+template AugmentedOutcome<3> augment_friction<3>(FormingNonlinearProblem<3>&, AugmentationSchedule,
+                                                 const IterationControl&, const InnerDriver&);
+template AugmentedOutcome<2> augmented_lagrangian<2>(FormingNonlinearProblem<2>&, LinearSolver&,
+                                                     const IterationControl&,
+                                                     const IterationObserver&, PhaseTimes&);
+template AugmentedOutcome<3> augmented_lagrangian<3>(FormingNonlinearProblem<3>&, LinearSolver&,
+                                                     const IterationControl&,
+                                                     const IterationObserver&, PhaseTimes&);
 template Real update_friction_multipliers<2>(const assembly::FormingProblem<2>&, const VectorX&,
                                              assembly::FrictionMultipliers<2>&);
 template Real update_friction_multipliers<3>(const assembly::FormingProblem<3>&, const VectorX&,
                                              assembly::FrictionMultipliers<3>&);
-template InnerSolve<2> secant_inner_solve<2>(const assembly::FormingProblem<2>&, LinearSolver&,
-                                             PhaseTimes&);
-template InnerSolve<3> secant_inner_solve<3>(const assembly::FormingProblem<3>&, LinearSolver&,
-                                             PhaseTimes&);
 
 } // namespace formflow::solvers

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Exact Coulomb friction by an augmented Lagrangian (Uzawa) loop around an inner
-// nonlinear solve in which the friction multipliers are frozen.
+// Exact Coulomb friction by an augmented Lagrangian (Uzawa) wrapper around an inner
+// nonlinear driver in which the friction multipliers are frozen.
 #pragma once
 
 #include "formflow/assembly/forming_problem.hpp"
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 #include "formflow/solvers/stop_reason.hpp"
@@ -12,18 +13,21 @@
 
 namespace formflow::solvers {
 
-/// Callback receiving each iteration record (the monitor).
-using IterationObserver = std::function<void(const IterationRecord&)>;
+/// When the wrapper updates the multipliers. Both stop as the loop of Uzawa and
+/// Alart–Curnier does: an iteration changed u by < δ with λ̂ frozen AND the update
+/// it produced changed λ̂ by < δ relative in L²(Γ3).
+enum class AugmentationSchedule {
+  /// After every iteration of the inner driver (Newton: an inexact augmented
+  /// Lagrangian; one driver run, duals and analysis carried on).
+  EveryIteration,
+  /// Only after an iteration that converged with λ̂ frozen: an inner solve to δ per
+  /// update, continued from its last iterate (the secant AL loop).
+  ConvergedIterate,
+};
 
-/// The inner nonlinear solve: with `multipliers` frozen, iterate from `start`
-/// (null: the solver's own first iterate) under `control`, reporting every
-/// iteration. Any solver that passes the multipliers to FormingProblem::assemble
-/// fits (the secant iteration below; a Newton iteration later).
-template <int dim>
-using InnerSolve =
-    std::function<SecantOutcome(const assembly::FrictionMultipliers<dim>& multipliers,
-                                const VectorX* start, const IterationControl& control,
-                                const IterationObserver& on_iteration)>;
+/// An inner driver run over the problem the wrapper prepared (its multipliers
+/// frozen in every assembly, its after-iteration hook installed).
+using InnerDriver = std::function<SecantOutcome(NonlinearProblem& problem)>;
 
 template <int dim> struct AugmentedOutcome {
   /// Final velocity, stop reason and the inner iterations of all outer steps, numbered on.
@@ -34,16 +38,26 @@ template <int dim> struct AugmentedOutcome {
   Real multiplier_change = 0.0; ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
 };
 
-/// Uzawa iteration of the augmented Lagrangian for λ_T (Alart–Curnier form):
-///   solve the problem with λᵏ frozen → uᵏ;  λᵏ⁺¹ = proj_{|λ| ≤ τ_f(uᵏ)}(λᵏ + r uᵏ_T);
-/// from λ⁰ = 0, each inner solve warm-started from the last velocity. Stops when the
-/// inner solve has converged (velocity relative change < δ) and the multipliers
-/// changed by less than δ relative in L²(Γ3); `control.max_iterations` bounds the
-/// inner iterations of all outer steps together.
+/// Uzawa iteration of the augmented Lagrangian for λ_T (Alart–Curnier form), one
+/// wrapper around any inner driver (secant or Newton):
+///   iterate with λᵏ frozen → uᵏ;  λᵏ⁺¹ = proj_{|λ| ≤ τ_f(uᵏ)}(λᵏ + r uᵏ_T)
+/// from λ⁰ = 0, on `schedule`. The driver runs once over `problem`; its iteration
+/// history is the run's, `control.max_iterations` bounds all its iterations, and a
+/// non-finite multiplier change stops it (NonFinite). `augmentations` counts the
+/// outer steps: the updates (EveryIteration) or the inner solves begun
+/// (ConvergedIterate, the last one included when it did not converge).
 template <int dim>
-AugmentedOutcome<dim>
-augmented_lagrangian(const assembly::FormingProblem<dim>& problem, const InnerSolve<dim>& inner,
-                     const IterationControl& control, const IterationObserver& on_iteration);
+AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
+                                       AugmentationSchedule schedule,
+                                       const IterationControl& control, const InnerDriver& driver);
+
+/// Exact friction by the paper's secant method: augment_friction around the plain
+/// secant iteration, an update per converged inner solve.
+template <int dim>
+AugmentedOutcome<dim> augmented_lagrangian(FormingNonlinearProblem<dim>& problem,
+                                           LinearSolver& solver, const IterationControl& control,
+                                           const IterationObserver& on_iteration,
+                                           PhaseTimes& times);
 
 /// One Uzawa update λᵏ⁺¹ = proj_{|λ| ≤ τ_f(u)}(λᵏ + r u_T) at `velocity`, in place;
 /// returns ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3) (0 where there is no friction at all).
@@ -51,10 +65,5 @@ template <int dim>
 Real update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
                                  const VectorX& velocity,
                                  assembly::FrictionMultipliers<dim>& multipliers);
-
-/// The secant-modulus iteration as the inner solve (same solver and timers throughout).
-template <int dim>
-InnerSolve<dim> secant_inner_solve(const assembly::FormingProblem<dim>& problem,
-                                   LinearSolver& solver, PhaseTimes& times);
 
 } // namespace formflow::solvers

@@ -3,8 +3,8 @@
 //
 // Design (measured on mesh II, docs/friction.md "Cost"; numbers there):
 //  * One Newton loop, the multipliers λ̂ updated after every iteration, rather
-//    than a Newton solve to δ per update (augmented_lagrangian with a Newton
-//    InnerSolve): every inner solve costs at least one factorisation, so an
+//    than a Newton solve to δ per update (the ConvergedIterate schedule around
+//    Newton): every inner solve costs at least one factorisation, so an
 //    update per Newton iteration is the cheapest the outer loop can be, and the
 //    Newton duals and the symbolic analysis carry over. Updating only once the
 //    velocity change is below 1e-2 or 1e-3 gave the same or more iterations.
@@ -26,28 +26,20 @@
 namespace formflow::solvers {
 
 template <int dim>
-AugmentedOutcome<dim> augmented_newton(const assembly::FormingProblem<dim>& problem,
-                                       LinearSolver& solver, const IterationControl& control,
+AugmentedOutcome<dim> augmented_newton(FormingNonlinearProblem<dim>& problem, LinearSolver& solver,
+                                       const IterationControl& control,
                                        const IterationObserver& on_iteration, PhaseTimes& times,
                                        const VectorX* initial) {
-  AugmentedOutcome<dim> outcome;
-  FrictionMultiplierHook<dim> hook;
-  hook.multipliers = &outcome.multipliers;
-  hook.after_iteration = [&](const VectorX& velocity) {
-    outcome.multiplier_change = update_friction_multipliers(problem, velocity, outcome.multipliers);
-    ++outcome.augmentations;
-    return outcome.multiplier_change < control.tolerance;
-  };
-  // A non-finite multiplier change never counts as settled, and the next
-  // assembly with it stops the Newton loop as NonFinite.
-  outcome.solve = newton_iteration(problem, solver, control, on_iteration, times, initial, &hook);
-  return outcome;
+  return augment_friction(
+      problem, AugmentationSchedule::EveryIteration, control, [&](NonlinearProblem& inner) {
+        return newton_iteration(inner, solver, control, on_iteration, times, initial);
+      });
 }
 
-template AugmentedOutcome<2> augmented_newton<2>(const assembly::FormingProblem<2>&, LinearSolver&,
+template AugmentedOutcome<2> augmented_newton<2>(FormingNonlinearProblem<2>&, LinearSolver&,
                                                  const IterationControl&, const IterationObserver&,
                                                  PhaseTimes&, const VectorX*);
-template AugmentedOutcome<3> augmented_newton<3>(const assembly::FormingProblem<3>&, LinearSolver&,
+template AugmentedOutcome<3> augmented_newton<3>(FormingNonlinearProblem<3>&, LinearSolver&,
                                                  const IterationControl&, const IterationObserver&,
                                                  PhaseTimes&, const VectorX*);
 

@@ -16,9 +16,10 @@ namespace formflow::solvers {
 /// AND the multipliers it produced changed by less than δ relative in L²(Γ3). One Newton loop (one
 /// analysis, duals carried on) for the whole run; `initial` as in newton_iteration.
 /// AugmentedOutcome::augmentations counts the updates.
+/// augment_friction (EveryIteration) around newton_iteration.
 template <int dim>
-AugmentedOutcome<dim> augmented_newton(const assembly::FormingProblem<dim>& problem,
-                                       LinearSolver& solver, const IterationControl& control,
+AugmentedOutcome<dim> augmented_newton(FormingNonlinearProblem<dim>& problem, LinearSolver& solver,
+                                       const IterationControl& control,
                                        const IterationObserver& on_iteration, PhaseTimes& times,
                                        const VectorX* initial = nullptr);
 

@@ -3,11 +3,13 @@
 #include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/coupled_tangent_solve.hpp"
 #include "formflow/solvers/stop_rule.hpp"
+#include "formflow/solvers/timed_linear_step.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 
 namespace formflow::solvers {
@@ -40,89 +42,66 @@ constexpr Real max_forcing = 1e-2, min_forcing = 1e-3;
 constexpr int max_krylov_iterations = 20;
 
 /// Working state shared by the steps of one solve.
-template <int dim> struct NewtonWork {
-  const assembly::FormingProblem<dim>& problem;
-  LinearSolver& solver;
-  PhaseTimes& times;
+struct NewtonWork {
+  NonlinearProblem& problem;
+  TimedLinearStep linear;
   assembly::LinearSystem secant, tangent;
-  assembly::UnsymmetricTangent<dim> coupling;
   VectorX force;                    ///< internal force K(u)u at the last residual evaluation
-  assembly::NewtonDuals<dim> duals; ///< empty = primal (the exact tangent)
+  std::unique_ptr<DualState> duals; ///< empty = primal (the exact tangent)
   Real forcing = max_forcing;       ///< GMRES tolerance η of the next Newton step
   Real tolerance = 0.0;             ///< δ of the stop rule
   /// tangent, coupling and force were assembled at the current iterate with the
   /// current duals (by the previous step's line search): no assembly needed.
   bool tangent_ready = false;
-  const FrictionMultiplierHook<dim>* friction = nullptr; ///< exact friction's λ̂ (may be null)
-  const assembly::FrictionMultipliers<dim>* multipliers() const {
-    return friction ? friction->multipliers : nullptr;
-  }
 };
 
 /// K(w) u = F (w = nullptr: constant viscosity): returns the full velocity, or a stop reason.
-template <int dim>
-std::optional<StopReason> secant_step(NewtonWork<dim>& work, const VectorX* w, VectorX& velocity) {
+std::optional<StopReason> secant_step(NewtonWork& work, const VectorX* w, VectorX& velocity) {
   {
-    ScopedTimer timer(work.times, "assembly");
-    work.problem.assemble(w, work.secant, work.multipliers());
-  }
-  {
-    ScopedTimer timer(work.times, "factorization");
-    if (!work.solver.factorize(work.secant.matrix)) return StopReason::SolverFailed;
+    ScopedTimer timer(work.linear.times(), "assembly");
+    work.problem.assemble_secant(w, work.secant);
   }
   VectorX free_velocity;
-  {
-    ScopedTimer timer(work.times, "solve");
-    if (!work.solver.solve(work.secant.rhs, free_velocity)) return StopReason::SolverFailed;
-  }
-  if (!free_velocity.allFinite()) return StopReason::NonFinite;
-  velocity = work.problem.plan().expand(free_velocity, work.problem.constraints().values);
+  if (const auto stop = work.linear(work.secant.matrix, work.secant.rhs, free_velocity))
+    return stop;
+  velocity = work.problem.plan().expand(free_velocity, work.problem.prescribed_values());
   return std::nullopt;
 }
 
 /// δ·R(u + t δ), τ_f at the trial point (the residual the Jacobian differentiates).
 /// Leaves the internal force of the trial point in work.force (no matrix is built).
-template <int dim>
-Real slope_at(NewtonWork<dim>& work, const VectorX& velocity, const VectorX& step, Real t,
+Real slope_at(NewtonWork& work, const VectorX& velocity, const VectorX& step, Real t,
               const VectorX& free_step) {
   const VectorX trial = velocity + t * step;
-  work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), work.duals,
-                               work.force, nullptr, nullptr, work.multipliers());
+  work.problem.assemble_newton(trial, *work.duals, work.force, nullptr);
   return free_step.dot(free_part(work.problem.plan(), work.force));
 }
 
 /// One Newton step from `velocity`; std::nullopt when the tangent is not positive
 /// definite or δ is no descent direction (the caller then takes a secant step).
 /// On success work.force holds the internal force at uⁿ⁺¹ (for the reaction).
-template <int dim>
-std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocity,
-                                   Real& full_change) {
+std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Real& full_change) {
   const assembly::ScatterPlan& plan = work.problem.plan();
   if (!work.tangent_ready) {
-    ScopedTimer timer(work.times, "assembly");
-    work.problem.assemble_newton(velocity, work.problem.friction_thresholds(velocity), work.duals,
-                                 work.force, &work.tangent, &work.coupling, work.multipliers());
+    ScopedTimer timer(work.linear.times(), "assembly");
+    work.problem.assemble_newton(velocity, *work.duals, work.force, &work.tangent);
   }
   work.tangent_ready = false;
   const VectorX gradient = free_part(plan, work.force);
-  {
-    ScopedTimer timer(work.times, "factorization");
-    if (!work.solver.factorize(work.tangent.matrix)) return std::nullopt;
-  }
+  if (work.linear.factorize(work.tangent.matrix)) return std::nullopt;
   VectorX free_step;
-  if (work.coupling.empty()) {
-    ScopedTimer timer(work.times, "solve");
-    if (!work.solver.solve(-gradient, free_step) || !free_step.allFinite()) return std::nullopt;
+  if (!work.problem.has_coupling()) {
+    if (work.linear.solve(-gradient, free_step)) return std::nullopt;
   } else {
     // The full-ε̇ form: J = T + N, N unsymmetric; T's factor preconditions GMRES.
-    ScopedTimer timer(work.times, "krylov");
+    ScopedTimer timer(work.linear.times(), "krylov");
     const CouplingProduct coupling = [&](const VectorX& x, VectorX& y) {
-      work.problem.apply_coupling(work.coupling, x, y);
+      work.problem.apply_coupling(x, y);
     };
     const KrylovOutcome krylov =
-        solve_coupled_tangent(work.tangent.matrix, coupling, work.solver, -gradient, free_step,
-                              work.forcing, max_krylov_iterations);
-    work.times.count("krylov iterations", krylov.iterations);
+        solve_coupled_tangent(work.tangent.matrix, coupling, work.linear.solver(), -gradient,
+                              free_step, work.forcing, max_krylov_iterations);
+    work.linear.times().count("krylov iterations", krylov.iterations);
     if (!free_step.allFinite()) return std::nullopt;
   }
   const Real slope0 = free_step.dot(gradient); // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
@@ -142,20 +121,18 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   const auto acceptable = [&](Real slope, int k) {
     return (slope <= 0 && k == 0) || std::abs(slope) <= line_search_slope_ratio * std::abs(slope0);
   };
-  const bool multipliers_move = work.friction && work.friction->after_iteration;
-  const bool look_ahead =
-      !multipliers_move && step.norm() / (velocity + step).norm() >= work.tolerance;
+  const bool look_ahead = !work.problem.changes_after_iteration() &&
+                          step.norm() / (velocity + step).norm() >= work.tolerance;
   Real t = 1.0, slope = 0.0;
   if (look_ahead) {
     const VectorX trial = velocity + step;
-    assembly::NewtonDuals<dim> trial_duals = work.duals;
+    std::unique_ptr<DualState> trial_duals = work.duals->clone();
     {
-      ScopedTimer dual_timer(work.times, "dual update");
-      work.problem.update_duals(velocity, step, trial, trial_duals, work.multipliers());
+      ScopedTimer dual_timer(work.linear.times(), "dual update");
+      work.problem.update_duals(velocity, step, trial, *trial_duals);
     }
-    ScopedTimer timer(work.times, "assembly");
-    work.problem.assemble_newton(trial, work.problem.friction_thresholds(trial), trial_duals,
-                                 work.force, &work.tangent, &work.coupling, work.multipliers());
+    ScopedTimer timer(work.linear.times(), "assembly");
+    work.problem.assemble_newton(trial, *trial_duals, work.force, &work.tangent);
     slope = free_step.dot(free_part(plan, work.force));
     if (acceptable(slope, 0)) {
       work.duals = std::move(trial_duals);
@@ -164,7 +141,7 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
       return trial;
     }
   }
-  ScopedTimer timer(work.times, "line search");
+  ScopedTimer timer(work.linear.times(), "line search");
   if (!look_ahead) slope = slope_at(work, velocity, step, t, free_step);
   Real low = 0.0, slope_low = slope0, high = 1.0, slope_high = slope;
   for (int k = 0; k < max_line_search_steps && !acceptable(slope, k); ++k) {
@@ -180,8 +157,8 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
   }
   VectorX next = velocity + t * step;
   {
-    ScopedTimer dual_timer(work.times, "dual update");
-    work.problem.update_duals(velocity, step, next, work.duals, work.multipliers());
+    ScopedTimer dual_timer(work.linear.times(), "dual update");
+    work.problem.update_duals(velocity, step, next, *work.duals);
   }
   full_change = step.norm() / next.norm();
   return next;
@@ -189,30 +166,27 @@ std::optional<VectorX> newton_step(NewtonWork<dim>& work, const VectorX& velocit
 
 } // namespace
 
-template <int dim>
-SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+SecantOutcome newton_iteration(NonlinearProblem& problem, LinearSolver& solver,
                                const IterationControl& control,
-                               const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times, const VectorX* initial,
-                               const FrictionMultiplierHook<dim>* friction) {
+                               const IterationObserver& on_iteration, PhaseTimes& times,
+                               const VectorX* initial) {
   SecantOutcome outcome;
-  NewtonWork<dim> work{
-      problem, solver, times, problem.plan().make_system(), problem.plan().make_system(),
-      {},      {},     {}};
+  NewtonWork work{problem,
+                  TimedLinearStep(solver, times),
+                  problem.plan().make_system(),
+                  problem.plan().make_system(),
+                  {},
+                  problem.make_duals()};
   work.tolerance = control.tolerance;
-  work.friction = friction;
-  outcome.velocity = problem.constraints().values;
-  {
-    // The pattern alone (work.secant is still the zeroed system): no assembly here.
-    ScopedTimer timer(times, "analysis");
-    if (!solver.analyze(work.secant.matrix)) {
-      outcome.stop_reason = StopReason::SolverFailed;
-      return outcome;
-    }
+  outcome.velocity = problem.prescribed_values();
+  // The pattern alone (work.secant is still the zeroed system): no assembly here.
+  if (const auto stop = work.linear.analyse_once(work.secant.matrix)) {
+    outcome.stop_reason = *stop;
+    return outcome;
   }
   if (initial) {
     outcome.velocity =
-        problem.plan().expand(free_part(problem.plan(), *initial), problem.constraints().values);
+        problem.plan().expand(free_part(problem.plan(), *initial), problem.prescribed_values());
   } else if (auto stop = secant_step(work, nullptr, outcome.velocity)) {
     outcome.stop_reason = *stop;
     return outcome;
@@ -226,7 +200,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
   // tangent is stiff where that stress is below yield, so the step cannot blow
   // the near-rigid zones apart as the primal tangent (α-soft along ė) does.
   // From a given first iterate (a coarse solution) the same dual: ν(initial_rate) ė.
-  problem.secant_duals(nullptr, outcome.velocity, work.duals, work.multipliers());
+  problem.secant_duals(nullptr, outcome.velocity, *work.duals);
   Real step_change = 0.0;
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start = std::chrono::steady_clock::now();
@@ -243,7 +217,7 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
       }
       // After a secant step the duals restart from the stress it balanced (not
       // the primal w = ν ė, whose tangent is α-soft along ė in near-rigid zones).
-      problem.secant_duals(&outcome.velocity, *next, work.duals, work.multipliers());
+      problem.secant_duals(&outcome.velocity, *next, *work.duals);
       work.tangent_ready = false;
     }
     step_change = (*next - outcome.velocity).norm() / next->norm();
@@ -252,18 +226,18 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
     IterationRecord record;
     record.iteration = iteration;
     record.relative_change = change;
-    record.pressure =
-        (newton ? problem.driven_force(work.force) : problem.driven_force(work.secant, *next)) /
-        problem.driven_height();
+    record.pressure = (newton ? problem.internal_driven_force(work.force)
+                              : problem.driven_force(work.secant, *next)) /
+                      problem.driven_height();
     record.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.velocity = std::move(*next);
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
-    const bool settled =
-        !friction || !friction->after_iteration || friction->after_iteration(outcome.velocity);
-    if (const auto stop = stop_after_iteration(change, step_change, record.pressure,
-                                               control.tolerance, settled)) {
+    const auto own = stop_after_iteration(change, step_change, record.pressure, control.tolerance);
+    const AfterIteration after =
+        problem.after_iteration({iteration, &outcome.velocity, own == StopReason::Converged});
+    if (const auto stop = stop_with_hook(own, after)) {
       outcome.stop_reason = *stop;
       return outcome;
     }
@@ -271,16 +245,5 @@ SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, Lin
   outcome.stop_reason = StopReason::MaxIterations;
   return outcome;
 }
-
-template SecantOutcome newton_iteration<2>(const assembly::FormingProblem<2>&, LinearSolver&,
-                                           const IterationControl&,
-                                           const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&, const VectorX*,
-                                           const FrictionMultiplierHook<2>*);
-template SecantOutcome newton_iteration<3>(const assembly::FormingProblem<3>&, LinearSolver&,
-                                           const IterationControl&,
-                                           const std::function<void(const IterationRecord&)>&,
-                                           PhaseTimes&, const VectorX*,
-                                           const FrictionMultiplierHook<3>*);
 
 } // namespace formflow::solvers

@@ -2,14 +2,10 @@
 // Newton–Raphson with the consistent tangent for the regularised penalty problem (eq. 3.19).
 #pragma once
 
-#include "formflow/assembly/forming_problem.hpp"
 #include "formflow/core/timer.hpp"
-#include "formflow/solvers/friction_multiplier_hook.hpp"
 #include "formflow/solvers/linear_solver.hpp"
+#include "formflow/solvers/nonlinear_problem.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
-#include "formflow/solvers/stop_reason.hpp"
-
-#include <functional>
 
 namespace formflow::solvers {
 
@@ -29,9 +25,9 @@ namespace formflow::solvers {
 /// and the slip direction λ ≈ u_T/s as separate variables, updated by their own
 /// Newton step and capped to the yield surface, removes that. The first iteration
 /// is a Newton step from u⁰ with the stress the constant-viscosity solve balanced
-/// as w (FormingProblem::secant_duals): below yield in the near-rigid zones, so
-/// the tangent is stiff there (measured on mesh II, μ = 0: 9 → 7 iterations to
-/// δ = 1e-4 against a secant first step followed by the primal tangent).
+/// as w (NonlinearProblem::secant_duals, solvers/newton_duals.hpp): below yield in the near-rigid
+/// zones, so the tangent is stiff there (measured on mesh II, μ = 0: 9 → 7 iterations to δ = 1e-4
+/// against a secant first step followed by the primal tangent).
 ///
 /// Safeguard: whenever the tangent is not positive definite or δ is no descent
 /// direction, and afterwards while the relative change exceeds
@@ -50,15 +46,13 @@ namespace formflow::solvers {
 /// the plastic zones, made the tangent α-soft along ė and the tail linear: measured
 /// at 77 762 dofs 10, 10, 11 iterations for μ = 0, 0.1, 0.2 against 6, 6, 6.)
 ///
-/// `friction` (exact friction only, solvers/augmented_newton.hpp): the frozen
-/// multipliers of every assembly, updated by its hook after each iteration; the
-/// loop converges only once the hook reports them settled. Null with exact
-/// friction: λ̂ = 0, the Coulomb law with stick penalty r (the coarse start).
-template <int dim>
-SecantOutcome newton_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
+/// The problem's after-iteration hook (exact friction's multiplier updates,
+/// solvers/augmented_newton.hpp) runs after every iteration; the loop converges
+/// only once it reports settled. While the hook changes the problem, the tangent
+/// is not assembled ahead with the trial duals (it would hold the old multipliers).
+SecantOutcome newton_iteration(NonlinearProblem& problem, LinearSolver& solver,
                                const IterationControl& control,
-                               const std::function<void(const IterationRecord&)>& on_iteration,
-                               PhaseTimes& times, const VectorX* initial = nullptr,
-                               const FrictionMultiplierHook<dim>* friction = nullptr);
+                               const IterationObserver& on_iteration, PhaseTimes& times,
+                               const VectorX* initial = nullptr);
 
 } // namespace formflow::solvers

@@ -1,27 +1,37 @@
 // SPDX-License-Identifier: MIT
-// The secant iteration of the mixed problem with a continuous (Taylor–Hood)
+// The secant step of the mixed problem with a continuous (Taylor–Hood)
 // pressure: one global saddle-point solve per step (issue 5).
 #pragma once
 
+#include "formflow/assembly/saddle_point_system.hpp"
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
+
+#include <optional>
 
 namespace formflow::solvers {
 
-/// Like secant_iteration, for a problem whose attached ConstraintMultipliers
-/// carry a global pressure (has_global_pressure). Each secant step assembles
-/// the velocity matrix A(uⁿ) and factorises the saddle-point matrix
-/// [A Bᵀ; B −d M] (assembly::SaddlePointSystem) with `solver`, which must take
-/// full, indefinite matrices (make_umfpack_solver); the pattern is analysed once.
-/// The step solves for uⁿ⁺¹ and the pressure correction together; d = 0 needs
-/// nothing else. With d_N = 0 the contact multipliers get Uzawa steps around
-/// the same factorisation (as in uzawa_secant_iteration), and the step counts as
-/// converged only when they have settled. Stop rule, records and timers as in
-/// secant_iteration; the pressure ends in the multipliers (global_pressure).
-template <int dim>
-SecantOutcome
-saddle_point_secant_iteration(const assembly::FormingProblem<dim>& problem, LinearSolver& solver,
-                              const IterationControl& control,
-                              const std::function<void(const IterationRecord&)>& on_iteration,
-                              PhaseTimes& times);
+/// The lagged solve of secant_iteration for a problem whose attached
+/// ConstraintMultipliers carry a global pressure (has_global_pressure). Each secant
+/// step assembles the velocity matrix A(uⁿ) and factorises the saddle-point matrix
+/// [A Bᵀ; B −d M] (assembly::SaddlePointSystem) with the step's solver, which must
+/// take full, indefinite matrices (make_umfpack_solver); the pattern is analysed
+/// once. The step solves for uⁿ⁺¹ and the pressure correction together; d = 0 needs
+/// nothing else. With d_N = 0 the contact multipliers get Uzawa steps around the
+/// same factorisation (as SecantSolve's), and the step counts as converged only
+/// when they have settled. The pressure ends in the multipliers (global_pressure).
+/// Building the saddle-point structure is timed as "setup".
+template <int dim> class SaddlePointSolve final : public LaggedSolve {
+public:
+  SaddlePointSolve(FormingNonlinearProblem<dim>& problem, TimedLinearStep& linear);
+  LaggedStep solve(const VectorX* w, VectorX& next) override;
+  const assembly::LinearSystem& system() const override { return system_; }
+
+private:
+  FormingNonlinearProblem<dim>& problem_;
+  TimedLinearStep& linear_;
+  assembly::LinearSystem system_;
+  std::optional<assembly::SaddlePointSystem<dim>> saddle_;
+};
 
 } // namespace formflow::solvers

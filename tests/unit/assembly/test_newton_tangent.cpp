@@ -119,7 +119,7 @@ TEST(ViscousTangent, IsSymmetricPositiveDefiniteModuloRigidModesForAMonotoneLaw)
 
 TEST(ViscousTangent, PrimalDualFormIsPositiveSemiDefiniteForCappedDuals) {
   // Any dual w with √(⅔ w:w) ≤ σ_p(ε̄̇) keeps the symmetrised tangent PSD (the
-  // reason for the cap in FormingProblem::update_duals), here a w far from ν ė.
+  // reason for the cap in solvers::update_duals), here a w far from ν ė.
   fem::CellValues<2> values(2, fem::gauss_rule<2>(3));
   ASSERT_TRUE(values.reinit(distorted_q2()));
   physics::FlowLaw law;

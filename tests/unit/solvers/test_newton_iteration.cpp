@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Newton on a small extrusion: converges to the secant solution, faster; the
 // linear-viscous law needs no iteration at all; stop reasons and phase timers.
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
 
 #include "formflow/mesh/channel_mesh.hpp"
@@ -30,8 +31,9 @@ solvers::SecantOutcome run(const assembly::FormingProblem<2>& problem,
   const auto count = [&](const solvers::IterationRecord&) {
     if (callbacks) ++*callbacks;
   };
-  return newton ? solvers::newton_iteration<2>(problem, *solver, control, count, times)
-                : solvers::secant_iteration<2>(problem, *solver, control, count, times);
+  solvers::FormingNonlinearProblem<2> nonlinear(problem);
+  return newton ? solvers::newton_iteration(nonlinear, *solver, control, count, times)
+                : solvers::secant_iteration(nonlinear, *solver, control, count, times);
 }
 
 TEST(NewtonIteration, ConvergesToTheSecantSolutionInFewerIterations) {

@@ -2,6 +2,7 @@
 // The secant-modulus iteration on a small extrusion: convergence, stop reasons,
 // independence of the iteration limit, the Newtonian (linear) case, and the
 // reaction-equals-power identity.
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
 #include "formflow/assembly/kernels/kernels.hpp"
@@ -30,8 +31,9 @@ solvers::SecantOutcome run(const assembly::FormingProblem<2>& problem,
                            PhaseTimes* phase_times = nullptr) {
   auto solver = solvers::make_cholmod_solver();
   PhaseTimes local_times;
-  return solvers::secant_iteration<2>(
-      problem, *solver, control,
+  solvers::FormingNonlinearProblem<2> nonlinear(problem);
+  return solvers::secant_iteration(
+      nonlinear, *solver, control,
       [&](const solvers::IterationRecord&) {
         if (callbacks) ++*callbacks;
       },

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// What the nonlinear drivers (secant, Newton, Uzawa, saddle point, augmentation)
+// ask of a problem: the seam between solvers/ and the physics (issue 13).
+//
+// A virtual interface, not a concept: every call below costs a whole cell loop (or a
+// Γ3 loop) and happens a few times per iteration, so the indirection is free, while
+// the drivers compile once for every problem and dimension instead of per template
+// argument, and a problem can be wrapped (the friction augmentation) or faked (tests)
+// by a plain subclass. The drivers never see FormingProblem (the adapter is
+// solvers/forming_nonlinear_problem.hpp).
+#pragma once
+
+#include "formflow/assembly/sparsity.hpp"
+#include "formflow/core/types.hpp"
+#include "formflow/solvers/stop_reason.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace formflow::solvers {
+
+/// The dual variables Newton's tangent is built with (primal–dual linearisation;
+/// for the forming problem the stress w and slip direction λ, solvers/newton_duals.hpp).
+/// Opaque to the driver, which only keeps, copies (a trial step) and hands them back.
+class DualState {
+public:
+  virtual ~DualState() = default;
+  virtual std::unique_ptr<DualState> clone() const = 0;
+};
+
+/// What the after-iteration hook sees of the iteration just recorded.
+struct IterationState {
+  int iteration = 0;                 ///< 1-based, as in IterationRecord
+  const VectorX* velocity = nullptr; ///< the new iterate (full dof vector)
+  /// The driver's own stop rule says converged (change < δ, finite, inner
+  /// constraints settled): the hook's own condition is all that is missing.
+  bool converged = false;
+};
+
+/// The hook's verdict: whether its state (e.g. multipliers) has settled, or a reason to stop.
+struct AfterIteration {
+  bool settled = true;
+  std::optional<StopReason> stop;
+};
+
+/// Exact constraints enforced by Uzawa steps inside each secant step.
+struct UzawaLimits {
+  Real tolerance = 0.0; ///< relative multiplier change that ends the steps
+  int max_steps = 1;    ///< steps per secant step
+};
+
+/// A steady nonlinear problem R(u) = 0 over full dof vectors (free and prescribed).
+/// Const methods are pure functions of their arguments and the problem's frozen
+/// state; the non-const ones change that state (the stored coupling, multipliers).
+class NonlinearProblem {
+public:
+  virtual ~NonlinearProblem() = default;
+
+  // --- sizes and Dirichlet data --------------------------------------------------
+  /// Free/prescribed numbering and the sparsity pattern of every system below.
+  virtual const assembly::ScatterPlan& plan() const = 0;
+  /// The prescribed values on their dofs, 0 elsewhere (full dof vector).
+  virtual const VectorX& prescribed_values() const = 0;
+
+  // --- the secant system and the monitored force ----------------------------------
+  /// K(w) u = F with the secant (lagged) coefficients of w; w = nullptr: the
+  /// problem's starting coefficients (constant viscosity).
+  virtual void assemble_secant(const VectorX* w, assembly::LinearSystem& system) const = 0;
+  /// The driven force read from a secant system solved for `u` (its reaction).
+  virtual Real driven_force(const assembly::LinearSystem& system, const VectorX& u) const = 0;
+  /// The same from an internal force of assemble_newton.
+  virtual Real internal_driven_force(const VectorX& internal_force) const = 0;
+  /// Monitored pressure = driven force / driven height.
+  virtual Real driven_height() const = 0;
+
+  // --- Newton ---------------------------------------------------------------------
+  /// Empty duals: the primal choice, i.e. the exact tangent at the current iterate.
+  virtual std::unique_ptr<DualState> make_duals() const = 0;
+  /// One pass at `u`: the internal force f(u) on every dof (free rows: the residual
+  /// R(u)); with `tangent`, also the symmetric part T of the Jacobian built with
+  /// `duals` and the unsymmetric rest N, kept for apply_coupling.
+  virtual void assemble_newton(const VectorX& u, const DualState& duals, VectorX& internal_force,
+                               assembly::LinearSystem* tangent) = 0;
+  /// N of the last assemble_newton with a tangent is not zero.
+  virtual bool has_coupling() const = 0;
+  /// y += N x on free dof vectors.
+  virtual void apply_coupling(const VectorX& x_free, VectorX& y_free) const = 0;
+  /// The duals after the Newton step `step` from `u` to `next` (the dual Newton update).
+  virtual void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
+                            DualState& duals) const = 0;
+  /// The duals after a secant step from `previous` (null: the start) to `next`.
+  virtual void secant_duals(const VectorX* previous, const VectorX& next,
+                            DualState& duals) const = 0;
+
+  // --- exact constraints by Uzawa steps (optional) --------------------------------
+  /// Limits of the Uzawa steps; nothing when the problem has no such constraints.
+  virtual std::optional<UzawaLimits> uzawa_limits() const { return std::nullopt; }
+  /// One Uzawa update from the velocity just solved for; the relative multiplier change.
+  virtual Real update_constraint_multipliers(const VectorX& /*velocity*/) { return 0.0; }
+
+  // --- the after-iteration hook ---------------------------------------------------
+  /// after_iteration may change the problem (Newton then cannot reuse a tangent
+  /// assembled ahead with the old state).
+  virtual bool changes_after_iteration() const { return false; }
+  /// Called once after every recorded iteration, before the stop rule; a driver
+  /// converges only when its own rule and the hook's `settled` agree.
+  virtual AfterIteration after_iteration(const IterationState& /*state*/) { return {}; }
+};
+
+} // namespace formflow::solvers
