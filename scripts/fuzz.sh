@@ -19,18 +19,8 @@ targets=("$@")
 
 # Fuzz-only packages: ./run and ./test never need them.
 packages=(clang libclang-rt-14-dev)
-missing=()
-for package in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \
-    || missing+=("$package")
-done
-if ((${#missing[@]})); then
-  echo "fuzz.sh: installing missing Debian packages: ${missing[*]}"
-  sudo_cmd=()
-  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}"
-fi
+source scripts/install_packages.sh
+install_missing_packages fuzz.sh "${packages[@]}"
 compiler=$(command -v clang++-14 || command -v clang++)
 
 launcher=()

@@ -12,18 +12,8 @@ packages=(
   libcairo2-dev fonts-dejavu-core libgmsh-dev
   libgtest-dev libgmock-dev libbenchmark-dev numdiff python3-vtk9
 )
-missing=()
-for package in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \
-    || missing+=("$package")
-done
-if ((${#missing[@]})); then
-  echo "formflow: installing missing Debian packages: ${missing[*]}"
-  sudo_cmd=()
-  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}"
-fi
+source "$(dirname "$0")/install_packages.sh"
+install_missing_packages formflow "${packages[@]}"
 
 build_dir=$1
 shift
