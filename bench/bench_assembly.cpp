@@ -33,9 +33,9 @@ struct AssemblyFixture {
 
   explicit AssemblyFixture(int refinement) {
     io::Case case_;
-    case_.mesh_size = 1.0 / refinement;
+    case_.mesh.size = 1.0 / refinement;
     case_.friction.mu = 0.1;
-    mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size, 2);
+    mesh = mesh::make_channel_mesh(case_.mesh.geometry, case_.mesh.size, 2);
     problem = std::make_unique<assembly::FormingProblem<2>>(mesh, app::problem_settings(case_));
     system = problem->plan().make_system();
     problem->assemble(nullptr, system);

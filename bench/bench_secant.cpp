@@ -30,7 +30,7 @@ double peak_memory_mib() {
 
 io::Case refined_case(int refinement) {
   io::Case case_;
-  case_.mesh_size = 1.0 / refinement;
+  case_.mesh.size = 1.0 / refinement;
   case_.solver.method =
       solvers::NonlinearMethod::Secant; // the per-iteration cost of the paper's method
   // Up to 4 refinements the whole solve is timed; beyond, 10 iterations give
@@ -54,7 +54,7 @@ double solver_seconds(const post::Results& results) {
 /// Timed in the process of the solve it is compared with, right after it, since on
 /// this shared VM the same factorisation varies by up to 1.5× between processes.
 double median_bare_factorization_seconds(const io::Case& case_, int repetitions = 3) {
-  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size, 2);
+  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.mesh.geometry, case_.mesh.size, 2);
   const assembly::FormingProblem<2> problem(mesh, assembly::ProblemSettings{});
   assembly::LinearSystem system = problem.plan().make_system();
   problem.assemble(nullptr, system);
@@ -76,7 +76,7 @@ double median_bare_factorization_seconds(const io::Case& case_, int repetitions 
 /// minutes per case: those rows are Newton only.
 void method_solve(benchmark::State& state) {
   io::Case case_;
-  case_.mesh_size = 1.0 / static_cast<double>(state.range(0));
+  case_.mesh.size = 1.0 / static_cast<double>(state.range(0));
   case_.friction.mu = static_cast<double>(state.range(1)) / 10.0;
   case_.solver.method =
       state.range(2) == 1 ? solvers::NonlinearMethod::Newton : solvers::NonlinearMethod::Secant;
@@ -122,7 +122,7 @@ void secant_solve(benchmark::State& state) {
 
 void bare_factorization(benchmark::State& state) {
   const io::Case case_ = refined_case(static_cast<int>(state.range(0)));
-  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size, 2);
+  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.mesh.geometry, case_.mesh.size, 2);
   assembly::ProblemSettings settings;
   const assembly::FormingProblem<2> problem(mesh, settings);
   assembly::LinearSystem system = problem.plan().make_system();

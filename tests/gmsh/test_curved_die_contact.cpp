@@ -17,10 +17,10 @@ post::Results arc_die(assembly::ContactNormals normals) {
   // with an arc die of radius 5 (a quarter circle tangent to the exit),
   // Gmsh cells of size 1.25, Q2, μ = 0.1.
   io::Case case_;
-  case_.geometry.die = mesh::DieShape::Arc;
-  case_.geometry.die_radius = 5.0;
-  case_.mesh_source = mesh::MeshSource::Gmsh;
-  case_.mesh_size = 1.25;
+  case_.mesh.geometry.die = mesh::DieShape::Arc;
+  case_.mesh.geometry.die_radius = 5.0;
+  case_.mesh.source = mesh::MeshSource::Gmsh;
+  case_.mesh.size = 1.25;
   case_.friction.mu = 0.1;
   case_.contact.normals = normals;
   return app::simulate(case_).results;
@@ -58,10 +58,10 @@ TEST(CurvedDieContact, NodalNormalsGiveAPhysicalDiePressureOnQuad9Cells) {
 double arc_die_reaction(mesh::MeshSource source, double size) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.geometry.die = mesh::DieShape::Arc;
-  case_.geometry.die_radius = 5.0;
-  case_.mesh_source = source;
-  case_.mesh_size = size;
+  case_.mesh.geometry.die = mesh::DieShape::Arc;
+  case_.mesh.geometry.die_radius = 5.0;
+  case_.mesh.source = source;
+  case_.mesh.size = size;
   case_.contact.normals = assembly::ContactNormals::Nodes;
   const post::Results results = app::simulate(case_).results;
   EXPECT_TRUE(results.converged());

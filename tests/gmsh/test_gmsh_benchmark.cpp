@@ -14,8 +14,8 @@ namespace {
 post::Results sticking_ram(mesh::MeshSource source, double size) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.mesh_source = source;
-  case_.mesh_size = size;
+  case_.mesh.source = source;
+  case_.mesh.size = size;
   return app::simulate(case_).results;
 }
 

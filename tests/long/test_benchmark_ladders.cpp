@@ -25,7 +25,7 @@ post::StudyTable ladder(physics::RamCondition ram) {
     io::Case case_;
     case_.process.ram = ram;
     case_.solver.method = solvers::NonlinearMethod::Secant;
-    case_.mesh_size = std::stod(size);
+    case_.mesh.size = std::stod(size);
     plan.values.emplace_back(size);
     plan.cases.push_back(case_);
   }

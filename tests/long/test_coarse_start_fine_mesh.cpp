@@ -16,7 +16,7 @@ class CoarseStartFineMesh : public ::testing::TestWithParam<double> {};
 TEST_P(CoarseStartFineMesh, ConvergesWithReactionEqualToThePower) {
   const double delta = 1e-4;
   const post::Results results = testing::solve_benchmark([](io::Case& c) {
-    c.mesh_size = 0.125;
+    c.mesh.size = 0.125;
     c.friction.mu = GetParam();
     c.solver.method = solvers::NonlinearMethod::Newton;
     c.solver.coarse_levels = 2;

@@ -19,10 +19,10 @@ constexpr double degree = std::numbers::pi / 180.0;
 io::Case extrusion_case(double degrees, double exit_half_height, double size) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.geometry = mesh::ChannelGeometry{2.0, 1.0, exit_half_height, 2.0};
-  case_.geometry.die = mesh::DieShape::Wedge;
-  case_.geometry.die_angle = degrees;
-  case_.mesh_size = size;
+  case_.mesh.geometry = mesh::ChannelGeometry{2.0, 1.0, exit_half_height, 2.0};
+  case_.mesh.geometry.die = mesh::DieShape::Wedge;
+  case_.mesh.geometry.die_angle = degrees;
+  case_.mesh.size = size;
   case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   case_.contact.normals = assembly::ContactNormals::Nodes;

@@ -21,10 +21,10 @@ io::Case wedge_case(physics::ProcessType type, double degrees, double exit_half_
   io::Case case_;
   case_.process.type = type;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.geometry = mesh::ChannelGeometry{2.0, 1.0, exit_half_height, 2.0};
-  case_.geometry.die = mesh::DieShape::Wedge;
-  case_.geometry.die_angle = degrees;
-  case_.mesh_size = 0.0625;
+  case_.mesh.geometry = mesh::ChannelGeometry{2.0, 1.0, exit_half_height, 2.0};
+  case_.mesh.geometry.die = mesh::DieShape::Wedge;
+  case_.mesh.geometry.die_angle = degrees;
+  case_.mesh.size = 0.0625;
   case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   return case_;
@@ -55,7 +55,7 @@ TEST(DrawingValidationLong, HillWedgeExtrusionLadderExtrapolatesToTheSlipLineVal
   std::vector<double> loads;
   for (double size : {0.125, 0.0625, 0.03125}) {
     io::Case case_ = wedge_case(physics::ProcessType::Extrusion, 15, 1 - r);
-    case_.mesh_size = size;
+    case_.mesh.size = size;
     const post::Results results = app::simulate(case_).results;
     ASSERT_TRUE(results.converged());
     loads.push_back(results.pressure.ram_reaction);

@@ -14,8 +14,8 @@ namespace {
 double sticking_ram_pressure(mesh::MeshSource source, double size) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.mesh_source = source;
-  case_.mesh_size = size;
+  case_.mesh.source = source;
+  case_.mesh.size = size;
   const post::Results results = app::simulate(case_).results;
   EXPECT_TRUE(results.converged()) << "h = " << size;
   return results.pressure.ram_reaction;

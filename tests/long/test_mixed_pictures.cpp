@@ -30,7 +30,7 @@ fs::path pictures_dir() {
 io::Case sticking_case(fem::ElementKind element, fem::PressureSpace space, Real d) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.mesh_size = size;
+  case_.mesh.size = size;
   case_.element = element;
   case_.formulation.type = assembly::FormulationType::Mixed;
   case_.formulation.pressure = space;
@@ -40,7 +40,7 @@ io::Case sticking_case(fem::ElementKind element, fem::PressureSpace space, Real 
 
 void save(const io::Case& case_, const app::Simulation& simulation, const std::string& name,
           const std::function<void(const io::plot::Canvas&, const io::plot::PictureData&)>& draw) {
-  const io::plot::PictureData data{case_, simulation.mesh, simulation.results};
+  const io::plot::PictureData data{case_, simulation.plane_mesh(), simulation.results};
   const std::string png =
       io::plot::render_png(io::plot::picture_width, io::plot::picture_height,
                            [&](io::plot::Canvas& canvas) { draw(canvas, data); });
@@ -51,7 +51,7 @@ TEST(MixedPictures, CheckerboardOfQ1P0AndItsFilterAndTheSmoothQ2P1discPressure) 
   const io::Case q1p0_case = sticking_case(fem::ElementKind::Q1, fem::PressureSpace::P0, 1e-3);
   const app::Simulation q1p0 = app::simulate(q1p0_case);
   const VectorX raw = -q1p0.results.fields.cell_hydrostatic_stress;
-  const VectorX filtered = testing::filter_checkerboard(q1p0.mesh, size, raw);
+  const VectorX filtered = testing::filter_checkerboard(q1p0.plane_mesh(), size, raw);
   save(q1p0_case, q1p0, "mixed_q1p0_cells", [&](const auto& canvas, const auto& data) {
     io::plot::draw_cell_pressure(canvas, data, raw,
                                  "Q1–P0 cell pressure (= Q1, 1×1 rule), d = 1e-3");
@@ -70,10 +70,11 @@ TEST(MixedPictures, CheckerboardOfQ1P0AndItsFilterAndTheSmoothQ2P1discPressure) 
   });
   save(q2_case, q2, "mixed_q2p1disc_pressure", io::plot::draw_pressure);
 
-  const double q1p0_share = testing::checkerboard_share(q1p0.mesh, size, raw, 10.0);
-  const double q2_share = testing::checkerboard_share(q2.mesh, size, q2_cells, 10.0);
+  const double q1p0_share = testing::checkerboard_share(q1p0.plane_mesh(), size, raw, 10.0);
+  const double q2_share = testing::checkerboard_share(q2.plane_mesh(), size, q2_cells, 10.0);
   std::printf("checkerboard share in the container: Q1-P0 %.3e, filtered %.3e, Q2-P1disc %.3e\n",
-              q1p0_share, testing::checkerboard_share(q1p0.mesh, size, filtered, 10.0), q2_share);
+              q1p0_share, testing::checkerboard_share(q1p0.plane_mesh(), size, filtered, 10.0),
+              q2_share);
   std::printf("ram pressure: Q1-P0 %.4f, Q2-P1disc (d = 0) %.4f\n",
               q1p0.results.pressure.ram_reaction, q2.results.pressure.ram_reaction);
   EXPECT_GT(q1p0_share, 10.0 * q2_share);

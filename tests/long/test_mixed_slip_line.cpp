@@ -21,7 +21,7 @@ constexpr double slip_line = 1.0 + std::numbers::pi / 2.0;
 app::Simulation solve_mixed(Real size) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.mesh_size = size;
+  case_.mesh.size = size;
   case_.formulation.type = assembly::FormulationType::Mixed;
   case_.formulation.pressure = fem::PressureSpace::P1disc;
   case_.penalty.d = 0.0;
@@ -33,7 +33,7 @@ app::Simulation solve_mixed(Real size) {
 double solve_and_check(Real size) {
   const app::Simulation simulation = solve_mixed(size);
   const post::Results& results = simulation.results;
-  const double share = testing::checkerboard_share(simulation.mesh, size,
+  const double share = testing::checkerboard_share(simulation.plane_mesh(), size,
                                                    results.fields.cell_hydrostatic_stress, 10.0);
   std::printf("h = %g: ram reaction %.4f, power balance %.4f, total power %.4f, "
               "mean -σ_H near ram %.4f, iterations %d, checkerboard share %.2e, %.0f s\n",

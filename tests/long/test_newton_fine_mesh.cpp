@@ -15,7 +15,7 @@ class NewtonFineMesh : public ::testing::TestWithParam<double> {};
 
 TEST_P(NewtonFineMesh, ConvergesWithReactionEqualToThePower) {
   const post::Results results = testing::solve_benchmark([](io::Case& c) {
-    c.mesh_size = 0.125;
+    c.mesh.size = 0.125;
     c.friction.mu = GetParam();
     c.solver.method = solvers::NonlinearMethod::Newton;
     // The constant-viscosity start; the default coarse start has its own test

@@ -23,13 +23,13 @@ constexpr double slip_line = 1.0 + std::numbers::pi / 2.0;
 double solve_taylor_hood(Real size) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.mesh_size = size;
+  case_.mesh.size = size;
   case_.formulation.type = assembly::FormulationType::Mixed;
   case_.formulation.pressure = fem::PressureSpace::Q1;
   case_.penalty.d = 0.0;
   const app::Simulation simulation = app::simulate(case_);
   const post::Results& results = simulation.results;
-  const double share = testing::checkerboard_share(simulation.mesh, size,
+  const double share = testing::checkerboard_share(simulation.plane_mesh(), size,
                                                    results.fields.cell_hydrostatic_stress, 10.0);
   std::printf("Taylor-Hood h = %g: ram reaction %.4f, power balance %.4f, total power %.4f, "
               "mean -σ_H near ram %.4f, iterations %d, checkerboard share %.2e, %.0f s\n",

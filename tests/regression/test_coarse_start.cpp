@@ -12,7 +12,7 @@ namespace {
 
 post::Results solve(double mesh_size, double mu, int coarse_levels, double tolerance) {
   return testing::solve_benchmark([&](io::Case& c) {
-    c.mesh_size = mesh_size;
+    c.mesh.size = mesh_size;
     c.friction.mu = mu;
     c.solver.method = solvers::NonlinearMethod::Newton;
     c.solver.coarse_levels = coarse_levels;

@@ -29,10 +29,10 @@ TEST(ContactNormalsRuns, PlaneWedgeExtrusionOnSixteenRowsIsWithinFivePercentOfHi
   const double alpha = 15 * degree, r = hill_special_reduction(alpha);
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.geometry = mesh::ChannelGeometry{2.0, 1.0, 1 - r, 2.0}; // bench/validation.py
-  case_.geometry.die = mesh::DieShape::Wedge;
-  case_.geometry.die_angle = 15;
-  case_.mesh_size = 1.0 / 16;
+  case_.mesh.geometry = mesh::ChannelGeometry{2.0, 1.0, 1 - r, 2.0}; // bench/validation.py
+  case_.mesh.geometry.die = mesh::DieShape::Wedge;
+  case_.mesh.geometry.die_angle = 15;
+  case_.mesh.size = 1.0 / 16;
   case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   case_.contact.normals = assembly::ContactNormals::Nodes;
@@ -55,11 +55,11 @@ TEST(ContactNormalsRuns, FrictionlessDieLandLeavesTheDrawingStressAtHillsValue) 
   const double alpha = 15 * degree, r = hill_special_reduction(alpha);
   io::Case case_;
   case_.process.type = physics::ProcessType::Drawing;
-  case_.geometry = mesh::ChannelGeometry{2.0, 1.0, 1 - r, 2.0};
-  case_.geometry.die = mesh::DieShape::Wedge;
-  case_.geometry.die_angle = 15;
-  case_.geometry.land_length = 0.25;
-  case_.mesh_size = 1.0 / 8;
+  case_.mesh.geometry = mesh::ChannelGeometry{2.0, 1.0, 1 - r, 2.0};
+  case_.mesh.geometry.die = mesh::DieShape::Wedge;
+  case_.mesh.geometry.die_angle = 15;
+  case_.mesh.geometry.land_length = 0.25;
+  case_.mesh.size = 1.0 / 8;
   case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   case_.contact.normals = assembly::ContactNormals::Nodes;
@@ -77,8 +77,8 @@ TEST(ContactNormalsRuns, KinkedPolylineDieWithLocalFrictionConverges) {
   // iteration 2-cycles (500 iterations, relative change stuck at 2e-3). With
   // nodal normals it converges; μ = 0.1 on the die only.
   const post::Results results = solve_benchmark([](io::Case& case_) {
-    case_.geometry.die = mesh::DieShape::Polyline;
-    case_.geometry.die_profile = {{0.0, 10.0}, {4.0, 7.5}, {9.5, 5.0}};
+    case_.mesh.geometry.die = mesh::DieShape::Polyline;
+    case_.mesh.geometry.die_profile = {{0.0, 10.0}, {4.0, 7.5}, {9.5, 5.0}};
     case_.friction.mu = 0.1;
     case_.friction.on_container = false;
     case_.friction.radius = 0.0;
@@ -88,8 +88,8 @@ TEST(ContactNormalsRuns, KinkedPolylineDieWithLocalFrictionConverges) {
   EXPECT_TRUE(approx(results.pressure.total_power, results.pressure.ram_reaction, 1e-3));
   // Friction only adds power: above the same die without friction.
   const post::Results frictionless = solve_benchmark([](io::Case& case_) {
-    case_.geometry.die = mesh::DieShape::Polyline;
-    case_.geometry.die_profile = {{0.0, 10.0}, {4.0, 7.5}, {9.5, 5.0}};
+    case_.mesh.geometry.die = mesh::DieShape::Polyline;
+    case_.mesh.geometry.die_profile = {{0.0, 10.0}, {4.0, 7.5}, {9.5, 5.0}};
     case_.contact.normals = assembly::ContactNormals::Nodes;
   });
   ASSERT_TRUE(frictionless.converged());

@@ -20,10 +20,10 @@ io::Case wedge_case(physics::ProcessType type, double degrees, double exit_half_
                     double size) {
   io::Case case_;
   case_.process.type = type;
-  case_.geometry = mesh::ChannelGeometry{1.0, 1.0, exit_half_height, 2.0};
-  case_.geometry.die = mesh::DieShape::Wedge;
-  case_.geometry.die_angle = degrees;
-  case_.mesh_size = size;
+  case_.mesh.geometry = mesh::ChannelGeometry{1.0, 1.0, exit_half_height, 2.0};
+  case_.mesh.geometry.die = mesh::DieShape::Wedge;
+  case_.mesh.geometry.die_angle = degrees;
+  case_.mesh.size = size;
   case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
   case_.solver.max_iterations = 2000;
   return case_;

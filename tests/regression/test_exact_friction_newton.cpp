@@ -84,7 +84,7 @@ TEST(ExactFrictionNewton, CoarseStartSolvesTheCoulombLawWithZeroMultipliersOnCoa
   // 14/20 for radius 1), so the bound only says it costs no more than a few.
   auto run = [](int coarse_levels) {
     return testing::solve_benchmark([&](io::Case& c) {
-      c.mesh_size = 0.5;
+      c.mesh.size = 0.5;
       c.friction.mu = 0.1; // μ = 0.2 is alike but takes twice as long (46 iterations)
       c.friction.regularization = physics::FrictionRegularization::None;
       c.solver.coarse_levels = coarse_levels;

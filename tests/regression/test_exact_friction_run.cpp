@@ -10,7 +10,7 @@ namespace {
 
 TEST(ExactFrictionRun, ReportsStickWhereTheMetalDoesNotSlip) {
   const post::Results results = testing::solve_benchmark([](io::Case& c) {
-    c.mesh_size = 10.0 / 6.0; // mesh I: a fraction of a second
+    c.mesh.size = 10.0 / 6.0; // mesh I: a fraction of a second
     c.friction.mu = 0.2;
     c.friction.regularization = physics::FrictionRegularization::None;
   });

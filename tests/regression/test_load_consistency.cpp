@@ -22,7 +22,7 @@ double discrepancy(const Variant& variant, double tolerance) {
     c.element = element;
     c.volumetric_points = rule;
     c.friction.mu = mu;
-    c.mesh_size = 10.0 / 6.0; // mesh I keeps the 18 variants × 2 tolerances fast
+    c.mesh.size = 10.0 / 6.0; // mesh I keeps the 18 variants × 2 tolerances fast
     c.solver.tolerance = tolerance;
     c.solver.max_iterations = 5000;
     // The bounds below follow from the secant iteration's linear contraction;

@@ -128,23 +128,23 @@ namespace {
 // which loop actually ran rather than echo the request.
 TEST(MethodReported, NamesTheLoopThatRan) {
   // h = 2.5 nests in h = 5 (the default solver.coarse_levels = 2 finds one level).
-  const post::Results plane = testing::solve_benchmark([](io::Case& c) { c.mesh_size = 2.5; });
+  const post::Results plane = testing::solve_benchmark([](io::Case& c) { c.mesh.size = 2.5; });
   EXPECT_EQ(plane.method, "newton from coarse meshes");
   const post::Results axisymmetric = testing::solve_benchmark([](io::Case& c) {
-    c.mesh_size = 2.5;
+    c.mesh.size = 2.5;
     c.symmetry = physics::Symmetry::Axisymmetric;
     c.solver.coarse_levels = 0;
   });
   EXPECT_EQ(axisymmetric.method, "newton");
   const post::Results exact_friction = testing::solve_benchmark([](io::Case& c) {
-    c.mesh_size = 2.5;
+    c.mesh.size = 2.5;
     c.friction.mu = 0.1;
     c.friction.regularization = physics::FrictionRegularization::None;
   });
   EXPECT_EQ(exact_friction.method,
             "augmented-lagrangian friction around newton from coarse meshes");
   const post::Results exact_secant = testing::solve_benchmark([](io::Case& c) {
-    c.mesh_size = 2.5;
+    c.mesh.size = 2.5;
     c.friction.mu = 0.1;
     c.friction.regularization = physics::FrictionRegularization::None;
     c.solver.method = solvers::NonlinearMethod::Secant;
@@ -197,7 +197,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(MixedNewton, CoarseStartSolvesTheSameMixedProblem) {
   auto solve = [](int coarse_levels) {
     return testing::solve_benchmark([&](io::Case& c) {
-      c.mesh_size = 0.5;
+      c.mesh.size = 0.5;
       c.formulation.type = assembly::FormulationType::Mixed;
       c.friction.mu = 0.1;
       c.solver.coarse_levels = coarse_levels;

@@ -17,7 +17,7 @@ std::vector<double> ladder(physics::RamCondition ram, const std::vector<double>&
   for (double size : sizes) {
     const post::Results results = testing::solve_benchmark([&](io::Case& c) {
       c.process.ram = ram;
-      c.mesh_size = size;
+      c.mesh.size = size;
     });
     EXPECT_TRUE(results.converged()) << "h = " << size;
     pressures.push_back(results.pressure.ram_reaction);

@@ -41,8 +41,8 @@ struct FrictionSolve {
 /// iteration; regularised friction by Newton or the secant iteration.
 inline FrictionSolve solve_friction_case(const io::Case& case_) {
   FrictionSolve solve;
-  solve.mesh = std::make_unique<mesh::Mesh<2>>(
-      mesh::make_channel_mesh(case_.geometry, case_.mesh_size, fem::element_order(case_.element)));
+  solve.mesh = std::make_unique<mesh::Mesh<2>>(mesh::make_channel_mesh(
+      case_.mesh.geometry, case_.mesh.size, fem::element_order(case_.element)));
   solve.problem =
       std::make_unique<assembly::FormingProblem<2>>(*solve.mesh, app::problem_settings(case_));
   auto solver = solvers::make_cholmod_solver();

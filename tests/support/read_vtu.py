@@ -7,7 +7,10 @@
 # Output: {"n_points", "n_cells", "cell_types": [...], "points": [[x, y, z], ...],
 #          "cells": [[point ids in VTK order], ...],
 #          "point_data" / "cell_data" / "field_data":
-#              {name: {"components": k, "values": [...]}}}
+#              {name: {"components": k, "values": [...]}},
+#          "parametric_coords": {cell type: [[r, s, t] per point in VTK order]}}
+# The parametric coordinates are VTK's own (vtkCell::GetParametricCoords), so a
+# test can check a writer's node order against VTK rather than against a table.
 # Exits 1 (with the reason on stderr) if VTK cannot read the file.
 import json
 import sys
@@ -39,9 +42,15 @@ def main(path):
         return 1
     ids = vtkIdList()
     cells = []
+    parametric = {}
     for c in range(grid.GetNumberOfCells()):
         grid.GetCellPoints(c, ids)
-        cells.append([ids.GetId(i) for i in range(ids.GetNumberOfIds())])
+        n = ids.GetNumberOfIds()
+        cells.append([ids.GetId(i) for i in range(n)])
+        kind = grid.GetCellType(c)
+        if str(kind) not in parametric:
+            coords = grid.GetCell(c).GetParametricCoords()
+            parametric[str(kind)] = [[coords[3 * i + j] for j in range(3)] for i in range(n)]
     json.dump({
         "n_points": grid.GetNumberOfPoints(),
         "n_cells": grid.GetNumberOfCells(),
@@ -51,6 +60,7 @@ def main(path):
         "point_data": arrays(grid.GetPointData()),
         "cell_data": arrays(grid.GetCellData()),
         "field_data": arrays(grid.GetFieldData()),
+        "parametric_coords": parametric,
     }, sys.stdout)
     return 0
 

@@ -26,7 +26,7 @@ io::Case benchmark(double mu, double radius, physics::FrictionRegularization reg
                    solvers::NonlinearMethod method) {
   io::Case case_;
   case_.solver.method = method;
-  case_.mesh_size = mesh_one;
+  case_.mesh.size = mesh_one;
   case_.friction.mu = mu;
   case_.friction.radius = radius;
   case_.friction.regularization = regularization;

@@ -21,7 +21,7 @@ using testing::approx;
 app::Simulation simulate(const std::function<void(io::Case&)>& edit, bool estimate_condition) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.mesh_size = 2.5; // 4 + 2 cells across: seconds, not minutes
+  case_.mesh.size = 2.5; // 4 + 2 cells across: seconds, not minutes
   // The same (secant) iteration on both sides, so that equal formulations give
   // equal iterates; the mixed and Uzawa paths run the secant method anyway.
   case_.solver.method = solvers::NonlinearMethod::Secant;
@@ -43,14 +43,14 @@ TEST(MixedFormulation, Q1OnePointPenaltyAndQ1P0GiveTheSameSolution) {
   const app::Simulation penalty_run = simulate(
       [](io::Case& c) {
         c.element = fem::ElementKind::Q1;
-        c.mesh_size = 1.0;
+        c.mesh.size = 1.0;
         c.volumetric_points = 1;
       },
       true);
   const post::Results& penalty = penalty_run.results;
   const post::Results q1p0 = solve([](io::Case& c) {
     c.element = fem::ElementKind::Q1;
-    c.mesh_size = 1.0;
+    c.mesh.size = 1.0;
     mixed(c, fem::PressureSpace::P0, 1e-3);
   });
   ASSERT_TRUE(penalty.converged());
@@ -126,15 +126,15 @@ double container_checkerboard(fem::ElementKind element, fem::PressureSpace space
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
   case_.element = element;
-  case_.mesh_size = size;
+  case_.mesh.size = size;
   mixed(case_, space, d);
   const app::Simulation simulation = app::simulate(case_);
   EXPECT_TRUE(simulation.results.converged());
   const double share = testing::checkerboard_share(
-      simulation.mesh, size, simulation.results.fields.cell_hydrostatic_stress, 8.0);
+      simulation.plane_mesh(), size, simulation.results.fields.cell_hydrostatic_stress, 8.0);
   const VectorX filtered = testing::filter_checkerboard(
-      simulation.mesh, size, simulation.results.fields.cell_hydrostatic_stress);
-  EXPECT_LT(testing::checkerboard_share(simulation.mesh, size, filtered, 8.0), 1e-12);
+      simulation.plane_mesh(), size, simulation.results.fields.cell_hydrostatic_stress);
+  EXPECT_LT(testing::checkerboard_share(simulation.plane_mesh(), size, filtered, 8.0), 1e-12);
   std::printf("%s-%s h = %g: checkerboard share %.3e\n",
               std::string(fem::element_name(element)).c_str(),
               std::string(fem::pressure_space_name(space)).c_str(), size, share);

@@ -63,7 +63,7 @@ TEST(PatchTest, UniformExtensionIsReproducedExactlyOnDistortedMeshes) {
 
 TEST(Invariance, TranslationChangesNothing) {
   const io::Case case_ = testing::coarse_benchmark();
-  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size, 2);
+  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.mesh.geometry, case_.mesh.size, 2);
   const testing::Solved original = testing::solve_on(mesh, case_);
   const testing::Solved moved =
       testing::solve_on(mesh::translated(mesh, Point<2>(37.5, -12.25)), case_);
@@ -77,7 +77,7 @@ TEST(Invariance, TranslationChangesNothing) {
 
 TEST(Invariance, MirroringTheMeshMirrorsTheSolution) {
   const io::Case case_ = testing::coarse_benchmark();
-  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size, 2);
+  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.mesh.geometry, case_.mesh.size, 2);
   const testing::Solved original = testing::solve_on(mesh, case_);
   const testing::Solved image = testing::solve_on(mesh::mirrored(mesh, 1), case_);
   ASSERT_TRUE(original.results.converged() && image.results.converged());
@@ -90,7 +90,7 @@ TEST(Invariance, MirroringTheMeshMirrorsTheSolution) {
 
 TEST(SecantIteration, ReachesTheSameAnswerFromDifferentStarts) {
   io::Case case_ = testing::coarse_benchmark();
-  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.geometry, case_.mesh_size, 2);
+  const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.mesh.geometry, case_.mesh.size, 2);
   const testing::Solved reference = testing::solve_on(mesh, case_);
   ASSERT_TRUE(reference.results.converged());
 

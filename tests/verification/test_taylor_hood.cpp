@@ -29,7 +29,7 @@ constexpr Real slip_line_pressure = 1.0 + M_PI / 2.0; // (1 + π/2) k, SPEC §4
 io::Case sticking_ram(fem::PressureSpace space, Real d, Real size) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
-  case_.mesh_size = size;
+  case_.mesh.size = size;
   case_.formulation.type = assembly::FormulationType::Mixed;
   case_.formulation.pressure = space;
   case_.penalty.d = d;
@@ -70,8 +70,9 @@ struct StickingRamRuns {
 void check_exact_constraint(const StickingRamRuns& runs) {
   for (const app::Simulation* run : {&runs.coarse, &runs.fine}) {
     ASSERT_TRUE(run->results.converged());
-    const auto [residual, scale] = constraint_residual(
-        run->mesh, sticking_ram(fem::PressureSpace::Q1, 0.0, 1.0), run->results.fields.velocity);
+    const auto [residual, scale] =
+        constraint_residual(run->plane_mesh(), sticking_ram(fem::PressureSpace::Q1, 0.0, 1.0),
+                            run->results.fields.velocity);
     // Round-off of the LU solve: every (q_i, div u) cancels to ~1e-12 of its terms.
     // (Q2–P1disc's velocity, constrained against another space, fails this.)
     std::printf("Taylor-Hood h = %g: max |(q_i, div u)| = %.2e of terms up to %.2e\n",
@@ -83,7 +84,7 @@ void check_exact_constraint(const StickingRamRuns& runs) {
         approx(run->results.pressure.ram_reaction, run->results.pressure.total_power, 1e-4));
   }
   const auto [other, other_scale] =
-      constraint_residual(runs.p1disc.mesh, sticking_ram(fem::PressureSpace::Q1, 0.0, 0.5),
+      constraint_residual(runs.p1disc.plane_mesh(), sticking_ram(fem::PressureSpace::Q1, 0.0, 0.5),
                           runs.p1disc.results.fields.velocity);
   EXPECT_GT(other.cwiseAbs().maxCoeff(), 1e-6 * other_scale.maxCoeff());
 }
@@ -106,9 +107,9 @@ void check_agreement_with_q2p1disc(const StickingRamRuns& runs) {
 
 void check_pressure_is_smooth(const StickingRamRuns& runs) {
   const double coarse = testing::checkerboard_share(
-      runs.coarse.mesh, 1.0, runs.coarse.results.fields.cell_hydrostatic_stress, 8.0);
+      runs.coarse.plane_mesh(), 1.0, runs.coarse.results.fields.cell_hydrostatic_stress, 8.0);
   const double fine = testing::checkerboard_share(
-      runs.fine.mesh, 0.5, runs.fine.results.fields.cell_hydrostatic_stress, 8.0);
+      runs.fine.plane_mesh(), 0.5, runs.fine.results.fields.cell_hydrostatic_stress, 8.0);
   std::printf("Taylor-Hood checkerboard share: h = 1: %.3e, h = 0.5: %.3e\n", coarse, fine);
   // Cell means of a smooth field: O(h²) (Q1–P0's spurious mode stays ~0.1).
   EXPECT_LT(fine, 0.5 * coarse);
@@ -117,7 +118,7 @@ void check_pressure_is_smooth(const StickingRamRuns& runs) {
   // mid-nodes: on every cell (lexicographic Q2 nodes, vertices 0, 2, 6, 8) each
   // mid-edge value is the mean of its edge's vertices and the centre the mean of
   // all four — no averaging across cells has blurred it.
-  const mesh::Mesh<2>& mesh = runs.fine.mesh;
+  const mesh::Mesh<2>& mesh = runs.fine.plane_mesh();
   const VectorX& nodal = runs.fine.results.fields.hydrostatic_stress;
   EXPECT_GT(nodal.cwiseAbs().maxCoeff(), 1.0);
   Real mismatch = 0.0;
@@ -248,7 +249,7 @@ TEST(TaylorHood, ConstantPressureModeIsPinnedOnlyWhenEveryBoundaryVelocityIsPres
   EXPECT_LT(std::abs(integral), 1e-10 * magnitude);
 
   const io::Case channel_case = sticking_ram(fem::PressureSpace::Q1, 0.0, 2.5);
-  const mesh::Mesh<2> channel_mesh = io::load_mesh(channel_case);
+  const mesh::Mesh<2> channel_mesh = std::get<mesh::Mesh<2>>(io::load_mesh(channel_case));
   const assembly::FormingProblem<2> channel(channel_mesh, app::problem_settings(channel_case));
   assembly::ConstraintMultipliers<2> channel_pressure(channel_mesh, channel.settings().penalty,
                                                       formulation, channel.full_rule(),

@@ -23,9 +23,9 @@ inline io::Case manufactured_case(fem::ElementKind element, Real size, mesh::Dis
   io::Case case_;
   case_.manufactured = physics::ManufacturedSolution::Smooth;
   case_.element = element;
-  case_.mesh_size = size;
+  case_.mesh.size = size;
   case_.volumetric_points = element == fem::ElementKind::Q1 ? 1 : 2;
-  case_.distortion = {distortion, distortion == mesh::Distortion::Random ? 0.2 : 0.1, 1};
+  case_.mesh.distortion = {distortion, distortion == mesh::Distortion::Random ? 0.2 : 0.1, 1};
   if (!nonlinear) case_.material.parameters_of<physics::PiecewisePower>().alpha = 1.0;
   case_.solver.tolerance = 1e-8;
   case_.solver.max_iterations = 1000;
@@ -78,7 +78,7 @@ inline Solved solve_on(const mesh::Mesh<2>& mesh, const io::Case& case_,
 /// the problem (contact penalty, mollified friction) is active.
 inline io::Case coarse_benchmark() {
   io::Case case_;
-  case_.mesh_size = 2.5;
+  case_.mesh.size = 2.5;
   case_.friction.mu = 0.1;
   case_.friction.radius = 2.0;
   case_.solver.tolerance = 1e-9;

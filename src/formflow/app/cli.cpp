@@ -20,6 +20,8 @@
 
 #include <cstdio>
 #include <optional>
+#include <utility>
+#include <variant>
 
 namespace formflow::app {
 
@@ -83,9 +85,9 @@ int run_case(const Options& options) {
   Monitor monitor(stdout, case_.solver.tolerance, case_.solver.max_iterations);
   const bool show = !options.quiet && !options.json;
   if (show) {
-    const std::string mesh_text = case_.mesh_source == mesh::MeshSource::File
-                                      ? "mesh " + case_.mesh_file
-                                      : fmt::format("mesh h = {:.6g}", case_.mesh_size);
+    const std::string mesh_text = case_.mesh.source == mesh::MeshSource::File
+                                      ? "mesh " + case_.mesh.file
+                                      : fmt::format("mesh h = {:.6g}", case_.mesh.size);
     fmt::print("formflow {}: {} {} {}, volumetric rule {}x{}, mu = {:.6g}\n", FORMFLOW_VERSION,
                case_.source, fem::element_name(case_.element), mesh_text, case_.volumetric_points,
                case_.volumetric_points, case_.friction.mu);
@@ -212,8 +214,10 @@ int run_cli(int argc, char** argv) {
           io::load_case(options.case_path, parse_assignments(options.assignments));
       // Meshing (or reading mesh.file) is part of the check: its errors are input errors too.
       print_warnings(case_);
-      const mesh::Mesh<2> mesh = io::load_mesh(case_);
-      fmt::print("{}: valid ({} cells, {} nodes)\n", case_.source, mesh.n_cells(), mesh.n_nodes());
+      const mesh::AnyMesh mesh = io::load_mesh(case_);
+      const auto [cells, nodes] = std::visit(
+          [](const auto& typed) { return std::pair(typed.n_cells(), typed.n_nodes()); }, mesh);
+      fmt::print("{}: valid ({} cells, {} nodes)\n", case_.source, cells, nodes);
       return Ok;
     }
     if (*study) {

@@ -35,7 +35,11 @@ struct CoarseStart {
 /// (the coarse solves in the solver's own phases, meshing, set-up and
 /// interpolation as "coarse start"), so the solver time includes the coarse work.
 /// std::nullopt when no coarse level is used (L = 0, none fits, mesh from a file).
-std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<2>& fine,
+/// Each level varies only the mesh spec (case_.mesh with a larger size) and the
+/// iteration control; the case itself is read, never copied. `fine` is of the
+/// dimension the case's mesh source makes, and so is every coarse level.
+template <int dim>
+std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<dim>& fine,
                                         PhaseTimes& times);
 
 } // namespace formflow::app

@@ -18,13 +18,15 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
   Simulation simulation;
   post::Results& results = simulation.results;
   const auto start = std::chrono::steady_clock::now();
-  const int cells = mesh::cells_along(1.0, case_.mesh_size);
+  const int cells = mesh::cells_along(1.0, case_.mesh.size);
   FF_ASSERT(cells > 0, "the case validation guarantees that mesh.size divides 1");
   {
     ScopedTimer timer(results.timing, "mesh");
     simulation.mesh = mesh::make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), cells, cells,
-                                          fem::element_order(case_.element), case_.distortion);
+                                          fem::element_order(case_.element), case_.mesh.distortion);
   }
+  // The manufactured fields are plane (physics/manufactured.hpp): a 2D run.
+  const mesh::Mesh<2>& box = simulation.plane_mesh();
   const physics::StreamFunctionField field = physics::StreamFunctionField::of(case_.manufactured);
   assembly::ProblemSettings settings = problem_settings(case_);
   // The manufactured fields are plane (physics/manufactured.hpp); the box has no axis.
@@ -37,8 +39,7 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
   {
     ScopedTimer timer(results.timing, "setup");
     problem = std::make_unique<assembly::FormingProblem<2>>(
-        simulation.mesh, settings,
-        assembly::make_boundary_constraints<2>(simulation.mesh, velocity), body_force);
+        box, settings, assembly::make_boundary_constraints<2>(box, velocity), body_force);
   }
   auto solver = solvers::make_cholmod_solver();
   solvers::FormingNonlinearProblem<2> nonlinear(*problem);

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// One case from parameters to results.
+// One case from parameters to results, in the dimension of its mesh.
 #include "formflow/app/simulation.hpp"
 #include "formflow/app/coarse_start.hpp"
 #include "formflow/app/solve_plan.hpp"
 
+#include "formflow/core/error.hpp"
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
@@ -15,6 +16,8 @@
 #include "formflow/solvers/secant_iteration.hpp"
 
 #include <chrono>
+#include <memory>
+#include <variant>
 
 namespace formflow::app {
 
@@ -34,62 +37,33 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   return settings;
 }
 
-Real condition_at(const assembly::FormingProblem<2>& problem, const VectorX& u) {
+template <int dim>
+Real condition_at(const assembly::FormingProblem<dim>& problem, const VectorX& u) {
   assembly::LinearSystem system = problem.plan().make_system();
   problem.assemble(&u, system);
   return solvers::reciprocal_condition_estimate(system.matrix);
 }
 
-Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration,
-                    bool estimate_condition) {
-  if (case_.manufactured != physics::ManufacturedSolution::None)
-    return simulate_manufactured(case_, on_iteration, estimate_condition);
-  Simulation simulation;
-  post::Results& results = simulation.results;
-  const auto start = std::chrono::steady_clock::now();
-  {
-    ScopedTimer timer(results.timing, "mesh");
-    simulation.mesh = io::load_mesh(case_);
-  }
-  std::unique_ptr<assembly::FormingProblem<2>> problem;
-  {
-    ScopedTimer timer(results.timing, "setup");
-    problem =
-        std::make_unique<assembly::FormingProblem<2>>(simulation.mesh, problem_settings(case_));
-  }
-  // Mixed formulation and exact constraints (issue 5): pressures condensed cell
-  // by cell keep the velocity system SPD, so CHOLMOD serves every formulation.
-  // Exact friction (friction.regularization = "none") with d = 0 or d_N = 0 is
-  // refused by the case validation: one multiplier loop at a time.
-  std::unique_ptr<assembly::ConstraintMultipliers<2>> constraint_multipliers;
-  if (case_.formulation.type == assembly::FormulationType::Mixed || case_.penalty.d_n == 0) {
-    constraint_multipliers = std::make_unique<assembly::ConstraintMultipliers<2>>(
-        simulation.mesh, case_.penalty, case_.formulation, problem->full_rule(),
-        problem->n_contact_points());
-    problem->attach_multipliers(constraint_multipliers.get());
-  }
-  const SolvePlan plan = make_solve_plan(case_);
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Runs the nonlinear loop the plan chose on `problem` from `start_velocity`
+/// (nullptr: the loop's own start); exact friction's final multipliers go to
+/// `multipliers`.
+template <int dim>
+solvers::SecantOutcome
+run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingProblem<dim>& problem,
+         const IterationCallback& on_iteration, post::Results& results,
+         const VectorX* start_velocity, assembly::FrictionMultipliers<dim>& multipliers) {
   auto solver = solvers::make_linear_solver(plan.linear, solvers::loop_storage(plan.loop));
   solvers::SecantOutcome outcome;
-  assembly::FrictionMultipliers<2> multipliers;
-  // Mesh sequencing (solver.coarse_levels) for the Newton loops: start from the coarse
-  // solution. Exact friction's coarse levels solve the Coulomb law with λ̂ = 0, i.e.
-  // stick penalty r (the multipliers live at the fine Γ3 points only).
-  std::optional<CoarseStart> coarse;
-  if (plan.is_newton()) {
-    coarse = coarse_start(case_, simulation.mesh, results.timing);
-    if (coarse) {
-      results.coarse_iterations = coarse->iterations;
-      results.coarse_mesh_sizes = coarse->mesh_sizes;
-    }
-  }
-  const VectorX* start_velocity = coarse ? &coarse->velocity : nullptr;
   // Each loop is a driver (secant or Newton) over the problem's nonlinear
   // interface, its linear step swapped (Uzawa steps, the saddle point) or the
   // whole driver wrapped by exact friction's augmentation.
-  solvers::FormingNonlinearProblem<2> nonlinear(*problem);
+  solvers::FormingNonlinearProblem<dim> nonlinear(problem);
   solvers::TimedLinearStep linear(*solver, results.timing);
-  const auto take_augmented = [&](solvers::AugmentedOutcome<2>&& augmented) {
+  const auto take_augmented = [&](solvers::AugmentedOutcome<dim>&& augmented) {
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
     results.augmentation = {augmented.augmentations, augmented.multiplier_change};
@@ -100,36 +74,74 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
     // (solvers/augmented_newton.hpp).
     take_augmented(solvers::augmented_newton(nonlinear, *solver, case_.solver, on_iteration,
                                              results.timing, start_velocity));
-    break;
+    return outcome;
   case solvers::LoopKind::AugmentedSecant:
     // Exact friction, the paper's method (or a mixed formulation): the
     // augmentation around the secant iteration, an update per converged inner solve.
     take_augmented(solvers::augmented_lagrangian(nonlinear, *solver, case_.solver, on_iteration,
                                                  results.timing));
-    break;
+    return outcome;
   case solvers::LoopKind::SaddlePointSecant: {
     // Taylor–Hood: a continuous pressure cannot be condensed; the saddle-point
     // system is indefinite (an LU back-end, solvers/capabilities.hpp).
-    solvers::SaddlePointSolve<2> saddle(nonlinear, linear);
-    outcome = solvers::secant_iteration(nonlinear, saddle, case_.solver, on_iteration);
-    break;
+    solvers::SaddlePointSolve<dim> saddle(nonlinear, linear);
+    return solvers::secant_iteration(nonlinear, saddle, case_.solver, on_iteration);
   }
   case solvers::LoopKind::UzawaSecant: {
     solvers::SecantSolve uzawa(nonlinear, linear, /*uzawa_steps=*/true);
-    outcome = solvers::secant_iteration(nonlinear, uzawa, case_.solver, on_iteration);
-    break;
+    return solvers::secant_iteration(nonlinear, uzawa, case_.solver, on_iteration);
   }
   case solvers::LoopKind::Newton:
     // The penalty problem (plane and axisymmetric) and the mixed one with its
     // pressure condensed at d > 0 (the condensation is linear in u).
-    outcome = solvers::newton_iteration(nonlinear, *solver, case_.solver, on_iteration,
-                                        results.timing, start_velocity);
-    break;
+    return solvers::newton_iteration(nonlinear, *solver, case_.solver, on_iteration, results.timing,
+                                     start_velocity);
   case solvers::LoopKind::Secant:
-    outcome =
-        solvers::secant_iteration(nonlinear, *solver, case_.solver, on_iteration, results.timing);
-    break;
+    return solvers::secant_iteration(nonlinear, *solver, case_.solver, on_iteration,
+                                     results.timing);
   }
+  FF_ASSERT(false, "every loop kind is handled above");
+  return {};
+}
+
+/// Everything after the mesh: problem, multipliers, coarse start (when the
+/// mesh came from case_.mesh, so coarser levels of it can be made), the loop,
+/// post-processing. Fills `simulation` except its mesh, which `mesh` lives in.
+template <int dim>
+void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from_case,
+              Simulation& simulation, const IterationCallback& on_iteration,
+              bool estimate_condition) {
+  post::Results& results = simulation.results;
+  std::unique_ptr<assembly::FormingProblem<dim>> problem;
+  {
+    ScopedTimer timer(results.timing, "setup");
+    problem = std::make_unique<assembly::FormingProblem<dim>>(mesh, problem_settings(case_));
+  }
+  // Mixed formulation and exact constraints (issue 5): pressures condensed cell
+  // by cell keep the velocity system SPD, so CHOLMOD serves every formulation.
+  // Exact friction (friction.regularization = "none") with d = 0 or d_N = 0 is
+  // refused by the case validation: one multiplier loop at a time.
+  std::unique_ptr<assembly::ConstraintMultipliers<dim>> constraint_multipliers;
+  if (case_.formulation.type == assembly::FormulationType::Mixed || case_.penalty.d_n == 0) {
+    constraint_multipliers = std::make_unique<assembly::ConstraintMultipliers<dim>>(
+        mesh, case_.penalty, case_.formulation, problem->full_rule(), problem->n_contact_points());
+    problem->attach_multipliers(constraint_multipliers.get());
+  }
+  const SolvePlan plan = make_solve_plan(case_);
+  // Mesh sequencing (solver.coarse_levels) for the Newton loops: start from the coarse
+  // solution. Exact friction's coarse levels solve the Coulomb law with λ̂ = 0, i.e.
+  // stick penalty r (the multipliers live at the fine Γ3 points only).
+  std::optional<CoarseStart> coarse;
+  if (plan.is_newton() && mesh_from_case) {
+    coarse = coarse_start(case_, mesh, results.timing);
+    if (coarse) {
+      results.coarse_iterations = coarse->iterations;
+      results.coarse_mesh_sizes = coarse->mesh_sizes;
+    }
+  }
+  assembly::FrictionMultipliers<dim> multipliers;
+  solvers::SecantOutcome outcome = run_loop(plan, case_, *problem, on_iteration, results,
+                                            coarse ? &coarse->velocity : nullptr, multipliers);
   results.method = plan.name(coarse.has_value());
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
@@ -137,9 +149,51 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   post::evaluate_results(*problem, outcome.velocity, results, &multipliers);
   if (estimate_condition)
     simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
-  results.timing.add(
-      "total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+void add_total(post::Results& results, Clock::time_point start) {
+  results.timing.add("total", std::chrono::duration<double>(Clock::now() - start).count());
+}
+
+} // namespace
+
+Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration,
+                    bool estimate_condition) {
+  if (case_.manufactured != physics::ManufacturedSolution::None)
+    return simulate_manufactured(case_, on_iteration, estimate_condition);
+  Simulation simulation;
+  const auto start = Clock::now();
+  {
+    ScopedTimer timer(simulation.results.timing, "mesh");
+    simulation.mesh = io::load_mesh(case_);
+  }
+  // The one dispatch on the dimension: the mesh source decided it.
+  std::visit(
+      [&](const auto& mesh) {
+        solve_on(case_, mesh, true, simulation, on_iteration, estimate_condition);
+      },
+      simulation.mesh);
+  add_total(simulation.results, start);
   return simulation;
 }
+
+template <int dim>
+Simulation simulate_on(const io::Case& case_, mesh::Mesh<dim> mesh,
+                       const IterationCallback& on_iteration, bool estimate_condition) {
+  Simulation simulation;
+  const auto start = Clock::now();
+  simulation.mesh = std::move(mesh);
+  // No mesh sequencing: its coarse levels would be re-made from case_.mesh,
+  // which is not where this mesh came from.
+  solve_on(case_, std::get<mesh::Mesh<dim>>(simulation.mesh), false, simulation, on_iteration,
+           estimate_condition);
+  add_total(simulation.results, start);
+  return simulation;
+}
+
+template Real condition_at<2>(const assembly::FormingProblem<2>&, const VectorX&);
+template Real condition_at<3>(const assembly::FormingProblem<3>&, const VectorX&);
+template Simulation simulate_on<2>(const io::Case&, mesh::Mesh<2>, const IterationCallback&, bool);
+template Simulation simulate_on<3>(const io::Case&, mesh::Mesh<3>, const IterationCallback&, bool);
 
 } // namespace formflow::app

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "formflow/io/case.hpp"
-#include "formflow/mesh/mesh.hpp"
+#include "formflow/mesh/any_mesh.hpp"
 #include "formflow/post/error_norms.hpp"
 #include "formflow/post/results.hpp"
 
@@ -15,20 +15,45 @@ namespace formflow::app {
 /// Called once per nonlinear iteration with its record (for the monitor).
 using IterationCallback = std::function<void(const solvers::IterationRecord&)>;
 
+/// One run's mesh and what was computed on it, of either dimension.
+///
+/// Why a variant of meshes and not a Simulation<dim>: everything a run
+/// produces except the mesh is already dimension-free data (post::Results holds
+/// flat node-major fields of dim components and contact samples with three
+/// coordinates), so only the mesh varies. One Simulation type lets the CLI, the
+/// studies and the tests hold a run without being templated themselves; the
+/// code that needs dim (the solve, post-processing, the VTU writer) is
+/// templated and reached by one std::visit on `mesh`, the dimension the mesh
+/// source produced. The solve itself is simulate_on<dim>.
 struct Simulation {
-  mesh::Mesh<2> mesh;
+  mesh::AnyMesh mesh;
   post::Results results;
   /// Error against the exact field: only for a manufactured solution (verification.solution).
   std::optional<post::ErrorNorms> errors;
   /// CHOLMOD rcond of K(u) at the final velocity, when asked for.
   std::optional<Real> reciprocal_condition;
+
+  int dimension() const { return mesh::dimension_of(mesh); }
+  /// The mesh of a plane run, for the 2D-only consumers (pictures, the die
+  /// corner of a study). Precondition: dimension() == 2 (std::bad_variant_access).
+  const mesh::Mesh<2>& plane_mesh() const { return std::get<mesh::Mesh<2>>(mesh); }
 };
 
-/// Solves `case_` (plane strain). Never throws for numerical trouble: a run
-/// that does not converge returns results with the stop reason set. A case
-/// with a manufactured solution is solved by simulate_manufactured.
+/// Solves `case_` on the mesh its mesh source makes (io::load_mesh), in the
+/// dimension of that mesh. Never throws for numerical trouble: a run that does
+/// not converge returns results with the stop reason set. A case with a
+/// manufactured solution is solved by simulate_manufactured.
 Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration = {},
                     bool estimate_condition = false);
+
+/// The forming problem of `case_` (its process, physics and solve plan) on
+/// `mesh`: everything simulate does after making the mesh. The mesh's labels
+/// carry the process (the driven end, symmetry, Γ3); `case_.mesh` is read only
+/// for mesh sequencing (solver.coarse_levels), which re-makes coarser meshes
+/// from it and so applies only when `mesh` came from it.
+template <int dim>
+Simulation simulate_on(const io::Case& case_, mesh::Mesh<dim> mesh,
+                       const IterationCallback& on_iteration = {}, bool estimate_condition = false);
 
 /// The manufactured-solution problem of `case_` (verification.solution ≠ none):
 /// unit square, box mesh with the case's distortion, exact velocity on the
@@ -40,6 +65,7 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
 assembly::ProblemSettings problem_settings(const io::Case& case_);
 
 /// CHOLMOD rcond of the secant matrix K(u) of `problem` at velocity `u`.
-Real condition_at(const assembly::FormingProblem<2>& problem, const VectorX& u);
+template <int dim>
+Real condition_at(const assembly::FormingProblem<dim>& problem, const VectorX& u);
 
 } // namespace formflow::app

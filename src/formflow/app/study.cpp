@@ -10,22 +10,31 @@
 
 #include <chrono>
 #include <memory>
+#include <type_traits>
+#include <variant>
 
 namespace formflow::app {
 
 namespace {
 
-bool same_mesh(const mesh::Mesh<2>& a, const mesh::Mesh<2>& b) {
-  return a.order == b.order && a.nodes.cols() == b.nodes.cols() && a.nodes == b.nodes &&
-         a.cells == b.cells;
+bool same_mesh(const mesh::AnyMesh& any_a, const mesh::AnyMesh& any_b) {
+  if (any_a.index() != any_b.index()) return false;
+  return std::visit(
+      [&any_b](const auto& a) {
+        const auto& b = std::get<std::decay_t<decltype(a)>>(any_b);
+        return a.order == b.order && a.nodes.cols() == b.nodes.cols() && a.nodes == b.nodes &&
+               a.cells == b.cells;
+      },
+      any_a);
 }
 
-/// ε̄̇ around the die corner (L_c, H_out) from ρ = 0.01 to the exit half height, 5 bins a decade.
+/// ε̄̇ around the die corner (L_c, H_out) from ρ = 0.01 to the exit half height, 5 bins a
+/// decade. The corner is a point of the plane channel: plane runs only.
 post::CornerProfile die_corner_profile(const io::Case& case_, const Simulation& simulation) {
-  const assembly::FormingProblem<2> problem(simulation.mesh, problem_settings(case_));
-  const Point<2> corner(case_.geometry.container_length, case_.geometry.exit_half_height);
+  const assembly::FormingProblem<2> problem(simulation.plane_mesh(), problem_settings(case_));
+  const Point<2> corner(case_.mesh.geometry.container_length, case_.mesh.geometry.exit_half_height);
   return post::corner_profile<2>(problem, simulation.results.fields.velocity, corner, 0.01,
-                                 case_.geometry.exit_half_height, 5);
+                                 case_.mesh.geometry.exit_half_height, 5);
 }
 
 } // namespace
@@ -53,7 +62,7 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
     // The re-entrant corner (L_c, H_out) exists only for the square die of SPEC §4.
     if (plan.key == "mesh.size" &&
         plan.cases[k].manufactured == physics::ManufacturedSolution::None &&
-        plan.cases[k].geometry.die == mesh::DieShape::Square)
+        plan.cases[k].mesh.geometry.die == mesh::DieShape::Square && simulation.dimension() == 2)
       rung.corner = die_corner_profile(plan.cases[k], simulation);
     table.rungs.push_back(rung);
     if (on_rung) on_rung(table.rungs.back());
@@ -65,12 +74,16 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
   bool common_mesh = true;
   for (const Simulation& simulation : simulations)
     common_mesh &= same_mesh(simulation.mesh, last.mesh);
-  if (common_mesh) {
-    const assembly::FormingProblem<2> problem(last.mesh, problem_settings(plan.cases.back()));
-    for (std::size_t k = 0; k + 1 < simulations.size(); ++k)
-      table.rungs[k].difference = post::difference_norms<2>(
-          problem, simulations[k].results.fields.velocity, last.results.fields.velocity);
-  }
+  if (common_mesh)
+    std::visit(
+        [&](const auto& mesh) {
+          constexpr int dim = std::decay_t<decltype(mesh)>::dimension;
+          const assembly::FormingProblem<dim> problem(mesh, problem_settings(plan.cases.back()));
+          for (std::size_t k = 0; k + 1 < simulations.size(); ++k)
+            table.rungs[k].difference = post::difference_norms<dim>(
+                problem, simulations[k].results.fields.velocity, last.results.fields.velocity);
+        },
+        last.mesh);
   post::compute_orders(table);
   const io::Case& first = plan.cases.front();
   if (plan.key == "mesh.size" && first.manufactured != physics::ManufacturedSolution::None) {

@@ -5,9 +5,7 @@
 #include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/assembly/contact_normals.hpp"
 #include "formflow/fem/lagrange.hpp"
-#include "formflow/mesh/box_mesh.hpp"
-#include "formflow/mesh/channel_mesh.hpp"
-#include "formflow/mesh/mesh_source.hpp"
+#include "formflow/mesh/mesh_spec.hpp"
 #include "formflow/physics/flow_law.hpp"
 #include "formflow/physics/manufactured.hpp"
 #include "formflow/physics/process.hpp"
@@ -26,10 +24,12 @@ namespace formflow::io {
 /// rule, mesh II, μ = 0, d = 1e-3, d_N = 1e-6, d_T = 1e-6, δ = 1e-4.
 struct Case {
   physics::Process process;
-  mesh::ChannelGeometry geometry;
+  /// Where the cells come from: source, size, channel geometry, file and its
+  /// boundary map, the verification box's distortion (mesh/mesh_spec.hpp).
+  mesh::MeshSpec mesh;
   physics::Symmetry symmetry = physics::Symmetry::Plane;
-  fem::ElementKind element = fem::ElementKind::Q2;
-  Real mesh_size = 1.0;
+  fem::ElementKind element =
+      fem::ElementKind::Q2;        ///< the velocity element; its order is the cells'
   int volumetric_points = 2;       ///< Gauss points per direction of the volumetric (penalty) term
   physics::FlowLawChoice material; ///< the law by name, its range and every law's parameters
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
@@ -39,17 +39,10 @@ struct Case {
   physics::Penalty penalty;
   solvers::IterationControl solver;
   /// Verification: a manufactured solution on the unit square replaces the
-  /// process (None: the forming case), on a box mesh with this distortion.
+  /// process (None: the forming case), on a box mesh with mesh.distortion.
   physics::ManufacturedSolution manufactured = physics::ManufacturedSolution::None;
-  mesh::BoxDistortion distortion;
 
   std::string source; ///< the case file path, or "<default>" for the embedded benchmark
-
-  mesh::MeshSource mesh_source = mesh::MeshSource::Structured;
-  std::string mesh_file; ///< .msh path as written (relative: to the case file's directory)
-  /// Physical group name in mesh_file → boundary part name (mesh::label_name);
-  /// empty: the physical names are the part names themselves.
-  std::map<std::string, std::string> mesh_boundaries;
 
   /// Where a key got its value, for errors found after loading (e.g. in the mesh file).
   struct KeyLocation {

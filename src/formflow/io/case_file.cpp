@@ -136,7 +136,7 @@ public:
     check_order("geometry.exit_half_height", "geometry.entry_half_height");
     check_order("material.rate1", "material.rate2");
     check_die();
-    if (case_.mesh_source == mesh::MeshSource::Structured) check_mesh_fits();
+    if (case_.mesh.source == mesh::MeshSource::Structured) check_mesh_fits();
     check_mesh_source();
     check_flow_law();
     check_formulation();
@@ -283,8 +283,8 @@ private:
 
   /// mesh.file is needed by, and only by, mesh.source = "file"; so is mesh.boundaries.
   void check_mesh_source() const {
-    const bool from_file = case_.mesh_source == mesh::MeshSource::File;
-    if (from_file && case_.mesh_file.empty()) {
+    const bool from_file = case_.mesh.source == mesh::MeshSource::File;
+    if (from_file && case_.mesh.file.empty()) {
       const Origin where = origin("mesh.source");
       throw InputError(where.file, where.line, "mesh.source",
                        "value \"file\" needs mesh.file, which is not set",
@@ -292,7 +292,7 @@ private:
     }
     for (const std::string name : {"mesh.file", "mesh.boundaries"}) {
       const bool set =
-          name == "mesh.file" ? !case_.mesh_file.empty() : !case_.mesh_boundaries.empty();
+          name == "mesh.file" ? !case_.mesh.file.empty() : !case_.mesh.boundaries.empty();
       if (from_file || !set) continue;
       const Origin where = origin(name);
       throw InputError(where.file, where.line, name,
@@ -305,16 +305,17 @@ private:
   /// A manufactured solution lives on the unit square; the smooth map must stay one-to-one.
   void check_verification() const {
     if (case_.manufactured == physics::ManufacturedSolution::None) return;
-    if (mesh::cells_along(1.0, case_.mesh_size) <= 0)
+    if (mesh::cells_along(1.0, case_.mesh.size) <= 0)
       die_error("mesh.size",
                 fmt::format("value {} does not divide the unit square of verification.solution",
-                            format_key_value(case_.mesh_size)),
+                            format_key_value(case_.mesh.size)),
                 "use 1/n, e.g. 0.25 or 0.125", {"verification.solution"});
-    if (case_.distortion.kind == mesh::Distortion::Smooth && case_.distortion.amplitude > 0.1) {
+    if (case_.mesh.distortion.kind == mesh::Distortion::Smooth &&
+        case_.mesh.distortion.amplitude > 0.1) {
       const Origin where = origin("verification.amplitude");
       throw InputError(where.file, where.line, "verification.amplitude",
                        fmt::format("value {} folds the smooth distortion map",
-                                   format_key_value(case_.distortion.amplitude)),
+                                   format_key_value(case_.mesh.distortion.amplitude)),
                        "must be ≤ 0.1 with verification.distortion = \"smooth\"");
     }
   }
@@ -345,7 +346,7 @@ private:
 
   /// The die face must join the entry and exit heights monotonically.
   void check_die() const {
-    const mesh::ChannelGeometry& geometry = case_.geometry;
+    const mesh::ChannelGeometry& geometry = case_.mesh.geometry;
     const Real drop = geometry.entry_half_height - geometry.exit_half_height;
     if (geometry.die == mesh::DieShape::Square && geometry.land_length > 0 &&
         !(geometry.land_length < geometry.exit_length))
@@ -407,17 +408,18 @@ private:
 
   void check_mesh_fits() const {
     const std::string size_name = "mesh.size";
-    const Real size = case_.mesh_size;
+    const Real size = case_.mesh.size;
     // The square die is two blocks of square cells; the mapped dies need only
     // the lengths the user sets to fit (the die face gets ⌈length/size⌉ columns).
     std::vector<std::string> names = {"geometry.container_length", "geometry.entry_half_height",
                                       "geometry.exit_length"};
-    if (case_.geometry.die == mesh::DieShape::Square) names.push_back("geometry.exit_half_height");
-    if (case_.geometry.land_length > 0) names.push_back("geometry.land_length");
+    if (case_.mesh.geometry.die == mesh::DieShape::Square)
+      names.push_back("geometry.exit_half_height");
+    if (case_.mesh.geometry.land_length > 0) names.push_back("geometry.land_length");
     for (const std::string& length_name : names) {
       const Real length = real_value(length_name);
       if (mesh::cells_along(length, size) > 0) continue;
-      const std::string hint = fitting_sizes_hint(case_.geometry, size);
+      const std::string hint = fitting_sizes_hint(case_.mesh.geometry, size);
       if (origin(length_name).order > origin(size_name).order) {
         const Origin where = origin(length_name);
         throw InputError(where.file, where.line, length_name,

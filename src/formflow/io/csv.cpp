@@ -63,18 +63,22 @@ std::string history_csv(std::span<const solvers::IterationRecord> history,
 }
 
 std::string contact_csv(std::span<const post::ContactSample> contact,
-                        solvers::StopReason stop_reason) {
-  std::string out = not_converged_line(stop_reason) +
-                    "s,x,y,contact_pressure,friction_stress,slip_velocity,state,part\n";
+                        solvers::StopReason stop_reason, int dimension) {
+  const bool solid = dimension == 3;
+  std::string out = not_converged_line(stop_reason) + (solid ? "x,y,z" : "s,x,y") +
+                    ",contact_pressure,friction_stress,slip_velocity,state,part\n";
   std::size_t row = 0;
   for (const auto& sample : contact) {
     ++row;
     std::string numbers;
+    if (solid)
+      append_reals(numbers, "contact.csv", row,
+                   {{"x", sample.x}, {"y", sample.y}, {"z", sample.z}});
+    else
+      append_reals(numbers, "contact.csv", row,
+                   {{"s", sample.arc_length}, {"x", sample.x}, {"y", sample.y}});
     append_reals(numbers, "contact.csv", row,
-                 {{"s", sample.arc_length},
-                  {"x", sample.x},
-                  {"y", sample.y},
-                  {"contact_pressure", sample.contact_pressure},
+                 {{"contact_pressure", sample.contact_pressure},
                   {"friction_stress", sample.friction_stress},
                   {"slip_velocity", sample.slip_velocity}});
     // append_reals puts a comma before every value; the first column has none.

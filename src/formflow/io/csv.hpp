@@ -27,9 +27,12 @@ std::string history_csv(std::span<const solvers::IterationRecord> history,
 /// contact.csv: not_converged_line(stop_reason), header
 /// `s,x,y,contact_pressure,friction_stress,slip_velocity,state,part`,
 /// one row per sample in the given order (the solver sorts by s); `state` is
-/// `stick` or `slip`, `part` is `container` or `die`.
+/// `stick` or `slip`, `part` is `container` or `die`. For a solid run
+/// (`dimension` 3) the coordinates are `x,y,z` and there is no `s` column:
+/// Γ3 is a surface, which has no arc length (post::contact_profile).
 /// Throws InternalError naming row and column if a value is not finite.
 std::string contact_csv(std::span<const post::ContactSample> contact,
-                        solvers::StopReason stop_reason = solvers::StopReason::Converged);
+                        solvers::StopReason stop_reason = solvers::StopReason::Converged,
+                        int dimension = 2);
 
 } // namespace formflow::io

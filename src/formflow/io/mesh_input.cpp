@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Turning mesh.source / mesh.file / mesh.boundaries into a checked Mesh<2>.
+// Turning mesh.source / mesh.file / mesh.boundaries into a checked mesh.
 #include "formflow/io/mesh_input.hpp"
 
 #include "formflow/core/error.hpp"
@@ -30,8 +30,8 @@ Case::KeyLocation location_of(const Case& case_, const std::string& name,
 }
 
 /// mesh.file as Gmsh should open it: relative paths start at the case file's directory.
-std::string resolved_mesh_path(const Case& case_) {
-  const std::filesystem::path path(case_.mesh_file);
+std::string resolved_mesh_path(const Case& case_, const mesh::MeshSpec& spec) {
+  const std::filesystem::path path(spec.file);
   const std::string set_in = location_of(case_, "mesh.file").file;
   if (path.is_absolute() || set_in == "--set" || set_in == "<default>") return path.string();
   return (std::filesystem::path(set_in).parent_path() / path).string();
@@ -41,7 +41,7 @@ std::string resolved_mesh_path(const Case& case_) {
 /// evaluates it, and at the cell's nodes: a collapsed edge (two corners in one
 /// place) or a corner angle of 180° or more has det J ≤ 0 at a corner only,
 /// while every Gauss point can still be positive.
-void check_jacobians(const Case& case_, const mesh::Mesh<2>& mesh) {
+void check_jacobians(const Case& case_, const mesh::MeshSpec& spec, const mesh::Mesh<2>& mesh) {
   fem::CellValues<2> at_gauss(mesh.order, fem::gauss_rule<2>(mesh.order + 1));
   fem::CellValues<2> at_nodes(mesh.order, fem::nodal_rule<2>(mesh.order + 1));
   fem::CellValues<2>::Gradients coordinates(2, mesh.nodes_per_cell());
@@ -55,7 +55,7 @@ void check_jacobians(const Case& case_, const mesh::Mesh<2>& mesh) {
     throw InputError(where.file, where.line, "mesh.file",
                      fmt::format("{}: cell {} (centre ({:.6g}, {:.6g})) is inverted, tangled or "
                                  "degenerate: its Jacobian is not positive at a {}",
-                                 case_.mesh_file, cell, centre.x(), centre.y(),
+                                 spec.file, cell, centre.x(), centre.y(),
                                  gauss_valid ? "node (a collapsed edge or a corner angle ≥ 180°)"
                                              : "Gauss point"),
                      "fix the mesh: every quadrilateral must be convex enough that its "
@@ -63,17 +63,17 @@ void check_jacobians(const Case& case_, const mesh::Mesh<2>& mesh) {
   }
 }
 
-std::vector<mesh::PhysicalBoundary> boundary_map(const Case& case_) {
+std::vector<mesh::PhysicalBoundary> boundary_map(const mesh::MeshSpec& spec) {
   std::vector<mesh::PhysicalBoundary> map; // empty: the physical names are the part names
-  for (const auto& [name, part] : case_.mesh_boundaries)
+  for (const auto& [name, part] : spec.boundaries)
     map.push_back({name, *mesh::label_from_name(part)}); // validated by the key table
   return map;
 }
 
-mesh::Mesh<2> read_mesh_file(const Case& case_) {
+mesh::Mesh<2> read_mesh_file(const Case& case_, const mesh::MeshSpec& spec) {
   using Subject = mesh::MeshFileError::Subject;
   try {
-    return mesh::read_gmsh_mesh(resolved_mesh_path(case_), boundary_map(case_),
+    return mesh::read_gmsh_mesh(resolved_mesh_path(case_, spec), boundary_map(spec),
                                 fem::element_order(case_.element));
   } catch (const mesh::MeshFileError& error) {
     std::string key = "mesh.file";
@@ -85,13 +85,13 @@ mesh::Mesh<2> read_mesh_file(const Case& case_) {
         case_, key, key.rfind("mesh.boundaries.", 0) == 0 ? "mesh.boundaries" : "mesh.file");
     const std::string message = error.subject == Subject::File
                                     ? error.message
-                                    : fmt::format("{}: {}", case_.mesh_file, error.message);
+                                    : fmt::format("{}: {}", spec.file, error.message);
     throw InputError(where.file, where.line, key, message, error.hint);
   }
 }
 
 /// The part that carries the process speed must exist, or nothing drives the flow.
-void check_driven_part(const Case& case_, const mesh::Mesh<2>& mesh) {
+void check_driven_part(const Case& case_, const mesh::MeshSpec& spec, const mesh::Mesh<2>& mesh) {
   const bool extrusion = case_.process.type == physics::ProcessType::Extrusion;
   const mesh::BoundaryLabel driven =
       extrusion ? mesh::BoundaryLabel::Rear : mesh::BoundaryLabel::Front;
@@ -100,7 +100,7 @@ void check_driven_part(const Case& case_, const mesh::Mesh<2>& mesh) {
   const Case::KeyLocation where = location_of(case_, "mesh.boundaries");
   throw InputError(
       where.file, where.line, "mesh.boundaries",
-      fmt::format("{}: no boundary facet is \"{}\", where {} drives the flow", case_.mesh_file,
+      fmt::format("{}: no boundary facet is \"{}\", where {} drives the flow", spec.file,
                   mesh::label_name(driven),
                   extrusion ? "the ram of the extrusion" : "the pull of the drawing"),
       fmt::format("map the physical curve of that end to \"{}\"", mesh::label_name(driven)));
@@ -109,24 +109,24 @@ void check_driven_part(const Case& case_, const mesh::Mesh<2>& mesh) {
 
 } // namespace
 
-mesh::Mesh<2> load_mesh(const Case& case_) {
+mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
   const int order = fem::element_order(case_.element);
   const bool drawing = case_.process.type == physics::ProcessType::Drawing;
-  if (case_.mesh_source == mesh::MeshSource::Structured) {
-    mesh::Mesh<2> mesh = mesh::make_die_channel_mesh(case_.geometry, case_.mesh_size, order);
+  if (spec.source == mesh::MeshSource::Structured) {
+    mesh::Mesh<2> mesh = mesh::make_die_channel_mesh(spec.geometry, spec.size, order);
     if (drawing) mesh::free_container_wall(mesh);
     return mesh;
   }
 #if FORMFLOW_WITH_GMSH
-  if (case_.mesh_source == mesh::MeshSource::Gmsh) {
-    mesh::Mesh<2> mesh = mesh::make_gmsh_channel_mesh(case_.geometry, case_.mesh_size, order);
+  if (spec.source == mesh::MeshSource::Gmsh) {
+    mesh::Mesh<2> mesh = mesh::make_gmsh_channel_mesh(spec.geometry, spec.size, order);
     if (drawing) mesh::free_container_wall(mesh);
     return mesh;
   }
   // A file's parts are the user's map: drawing maps the wall before the die to free_entry.
-  mesh::Mesh<2> mesh = read_mesh_file(case_);
-  check_jacobians(case_, mesh);
-  check_driven_part(case_, mesh);
+  mesh::Mesh<2> mesh = read_mesh_file(case_, spec);
+  check_jacobians(case_, spec, mesh);
+  check_driven_part(case_, spec, mesh);
   return mesh;
 #else
   const auto found = case_.key_locations.find("mesh.source");

@@ -55,12 +55,12 @@ std::string valid_size_text(const Case& case_, Real smallest, Real memory_bytes)
         return fmt::format("{} (= 1/{})", format_key_value(1.0 / n), n);
     return "";
   }
-  if (case_.mesh_source == mesh::MeshSource::Gmsh) {
+  if (case_.mesh.source == mesh::MeshSource::Gmsh) {
     for (Real size = round_up(smallest, 2); size < 2 * smallest; size = round_up(1.01 * size, 2))
       if (fits(case_, size, memory_bytes)) return format_key_value(size);
     return "";
   }
-  const std::vector<Real> lengths = mesh::lengths_to_fit(case_.geometry);
+  const std::vector<Real> lengths = mesh::lengths_to_fit(case_.mesh.geometry);
   Real size = smallest;
   for (int attempt = 0; attempt < 100; ++attempt) {
     const auto larger = mesh::nearest_fitting_sizes(lengths, size).larger;
@@ -79,10 +79,10 @@ std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real s
   Real cells = 0.0;
   if (is_manufactured(case_))
     cells = 1.0 / (size * size); // the unit square
-  else if (case_.mesh_source == mesh::MeshSource::File)
+  else if (case_.mesh.source == mesh::MeshSource::File)
     return std::nullopt;
   else
-    cells = mesh::die_channel_cell_count(case_.geometry, size);
+    cells = mesh::die_channel_cell_count(case_.mesh.geometry, size);
   const int order = fem::element_order(case_.element);
   const Real dofs = 2.0 * order * order * cells;
   return MeshMemoryEstimate{cells, dofs, run_bytes_per_dof * dofs};
@@ -114,15 +114,15 @@ Real machine_memory_bytes() {
 }
 
 std::optional<KeyProblem> mesh_memory_problem(const Case& case_, Real memory_bytes) {
-  const auto estimate = estimate_mesh_memory(case_, case_.mesh_size);
+  const auto estimate = estimate_mesh_memory(case_, case_.mesh.size);
   if (!estimate || estimate->bytes <= memory_bytes) return std::nullopt;
   // Cells grow as 1/size²: the smallest size whose estimate fits, then a valid one above it.
-  const Real smallest = case_.mesh_size * std::sqrt(estimate->bytes / memory_bytes);
+  const Real smallest = case_.mesh.size * std::sqrt(estimate->bytes / memory_bytes);
   const std::string size = valid_size_text(case_, smallest, memory_bytes);
   return KeyProblem{
       fmt::format("value {} makes about {:.3g} cells ({:.3g} velocity dofs), which need at least "
                   "{} of memory; this machine has {}",
-                  format_key_value(case_.mesh_size), estimate->cells, estimate->dofs,
+                  format_key_value(case_.mesh.size), estimate->cells, estimate->dofs,
                   bytes_text(estimate->bytes), bytes_text(memory_bytes)),
       fmt::format("{}; the estimate is {:.0f} bytes per dof, a lower bound from the runs in "
                   "docs/benchmarks.md",

@@ -9,6 +9,7 @@
 
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace formflow::io {
@@ -25,21 +26,36 @@ std::span<const std::string> result_file_names() {
   return names;
 }
 
-void write_results(const std::string& directory, const Case& case_, const mesh::Mesh<2>& mesh,
+template <int dim>
+void write_results(const std::string& directory, const Case& case_, const mesh::Mesh<dim>& mesh,
                    const post::Results& results, const StopRequested& stop_requested) {
   // Everything is built (and checked for non-finite numbers) in memory first:
   // if any check fails, no file of this run is written at all.
   std::vector<ResultFile> files;
   files.push_back({"summary.json", summary_json(case_, results)});
   files.push_back({"history.csv", history_csv(results.history, results.stop_reason)});
-  files.push_back({"contact.csv", contact_csv(results.contact, results.stop_reason)});
+  files.push_back({"contact.csv", contact_csv(results.contact, results.stop_reason, dim)});
   files.push_back({"fields.vtu", fields_vtu(mesh, results.fields, results.stop_reason)});
   if (is_stop_requested(stop_requested)) throw Stopped("stopped before drawing the pictures");
-  for (plot::Picture& picture : plot::render_pictures(case_, mesh, results)) {
-    files.push_back({picture.name + ".png", std::move(picture.png)});
-    files.push_back({picture.name + ".svg", std::move(picture.svg)});
-  }
+  // The pictures draw the plane channel; a solid run has none (see the header).
+  if constexpr (dim == 2)
+    for (plot::Picture& picture : plot::render_pictures(case_, mesh, results)) {
+      files.push_back({picture.name + ".png", std::move(picture.png)});
+      files.push_back({picture.name + ".svg", std::move(picture.svg)});
+    }
   publish_result_set(directory, files, "summary.json", result_file_names(), stop_requested);
 }
+
+void write_results(const std::string& directory, const Case& case_, const mesh::AnyMesh& mesh,
+                   const post::Results& results, const StopRequested& stop_requested) {
+  std::visit(
+      [&](const auto& typed) { write_results(directory, case_, typed, results, stop_requested); },
+      mesh);
+}
+
+template void write_results<2>(const std::string&, const Case&, const mesh::Mesh<2>&,
+                               const post::Results&, const StopRequested&);
+template void write_results<3>(const std::string&, const Case&, const mesh::Mesh<3>&,
+                               const post::Results&, const StopRequested&);
 
 } // namespace formflow::io

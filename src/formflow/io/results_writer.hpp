@@ -4,7 +4,7 @@
 
 #include "formflow/core/stop_request.hpp"
 #include "formflow/io/case.hpp"
-#include "formflow/mesh/mesh.hpp"
+#include "formflow/mesh/any_mesh.hpp"
 #include "formflow/post/results.hpp"
 
 #include <span>
@@ -26,7 +26,16 @@ std::span<const std::string> result_file_names();
 /// in every file: summary.json `converged: false`, a `# not converged: <reason>`
 /// first line in the CSVs, FieldData `converged` = 0 in fields.vtu and a red
 /// mark on the pictures. Throws OutputError if the disk refuses the files.
-void write_results(const std::string& directory, const Case& case_, const mesh::Mesh<2>& mesh,
+/// A solid (dim = 3) run writes no pictures: they are drawings of the plane
+/// channel (io/plot/), and a 3D run has no plane to draw. Its set is the three
+/// data files, fields.vtu with hexahedra and contact.csv with x, y, z; pictures
+/// of an earlier plane run in `directory` are moved aside with the old set.
+template <int dim>
+void write_results(const std::string& directory, const Case& case_, const mesh::Mesh<dim>& mesh,
+                   const post::Results& results, const StopRequested& stop_requested = {});
+
+/// write_results for the mesh of either dimension a run produced.
+void write_results(const std::string& directory, const Case& case_, const mesh::AnyMesh& mesh,
                    const post::Results& results, const StopRequested& stop_requested = {});
 
 /// The summary.json document as text (also what `formflow run --json` prints).

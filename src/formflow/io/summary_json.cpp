@@ -85,7 +85,7 @@ json contact_json(const Case& case_, const post::Results& results) {
 json mesh_json(const Case& case_, const post::Results& results) {
   // A verification run meshes the unit square itself, whatever mesh.source says.
   const bool manufactured = case_.manufactured != physics::ManufacturedSolution::None;
-  const bool from_file = !manufactured && case_.mesh_source == mesh::MeshSource::File;
+  const bool from_file = !manufactured && case_.mesh.source == mesh::MeshSource::File;
   json out = {{"source", manufactured
                              ? "box"
                              : std::get<std::string>(find_case_key("mesh.source")->get(case_))},
@@ -93,7 +93,7 @@ json mesh_json(const Case& case_, const post::Results& results) {
               {"nodes", results.n_nodes},
               {"dofs", results.n_dofs},
               {"element", std::string(fem::element_name(case_.element))}};
-  out["size"] = from_file ? json(nullptr) : json(case_.mesh_size);
+  out["size"] = from_file ? json(nullptr) : json(case_.mesh.size);
   out["min_cell_diameter"] = results.min_cell_diameter;
   out["max_cell_diameter"] = results.max_cell_diameter;
   return out;

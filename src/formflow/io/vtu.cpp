@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// VTK XML UnstructuredGrid writer (ASCII) for 2D Q1/Q2 meshes and their fields.
+// VTK XML UnstructuredGrid writer (ASCII) for Q1/Q2 meshes in 2D and 3D and their fields.
 #include "formflow/io/vtu.hpp"
 
 #include "formflow/core/error.hpp"
@@ -31,6 +31,27 @@ namespace {
 constexpr std::array<int, 4> vtk_from_q1 = {0, 1, 3, 2};
 constexpr std::array<int, 9> vtk_from_q2 = {0, 2, 8, 6, 1, 5, 7, 3, 4};
 
+// Hexahedra: our node (i, j, k) on the lattice of n_side per direction is
+// i + n_side·(j + n_side·k) (x fastest). VTK_HEXAHEDRON wants the bottom face
+// (z = 0) counter-clockwise seen from +z, then the top face the same way.
+// VTK_TRIQUADRATIC_HEXAHEDRON then takes the edge midpoints: the bottom
+// face's four edges (along 0-1, 1-2, 2-3, 3-0), the top face's, the four
+// vertical edges (above 0, 1, 2, 3); then the face centres in the order
+// x = 0, x = 1, y = 0, y = 1, z = 0, z = 1 (what vtkTriQuadraticHexahedron::
+// GetParametricCoords returns, which differs from its class comment); then
+// the body centre. Lattice positions (i, j, k) ∈ {0, 1, 2}³:
+//
+//   corners  (0,0,0) (2,0,0) (2,2,0) (0,2,0) (0,0,2) (2,0,2) (2,2,2) (0,2,2)
+//   edges    (1,0,0) (2,1,0) (1,2,0) (0,1,0)   (1,0,2) (2,1,2) (1,2,2) (0,1,2)
+//            (0,0,1) (2,0,1) (2,2,1) (0,2,1)
+//   faces    (0,1,1) (2,1,1) (1,0,1) (1,2,1) (1,1,0) (1,1,2)     centre (1,1,1)
+//
+// tests/unit/io/test_vtu_hexahedra.cpp checks this against VTK's own coordinates.
+constexpr std::array<int, 8> vtk_from_hex8 = {0, 1, 3, 2, 4, 5, 7, 6};
+constexpr std::array<int, 27> vtk_from_hex27 = {0,  2,  8,  6,  18, 20, 26, 24, 1,
+                                                5,  7,  3,  19, 23, 25, 21, 9,  11,
+                                                17, 15, 12, 14, 10, 16, 4,  22, 13};
+
 using Out = std::back_insert_iterator<std::string>;
 
 void check_size(std::string_view name, Index actual, Index expected) {
@@ -60,16 +81,29 @@ void scalar_array(Out out, std::string_view name, const VectorX& values, Real si
   fmt::format_to(out, "\n        </DataArray>\n");
 }
 
-void points_section(Out out, const mesh::Mesh<2>& mesh) {
+/// One 3-component tuple from `dim` values (a plane vector gets z = 0);
+/// `zero` is added to each value (0.0 turns −0 into 0 as in scalar_array, −0.0
+/// keeps every value's sign as the coordinates always have been written).
+template <int dim> void tuple3(Out out, const Real* values, Real zero) {
+  if constexpr (dim == 2)
+    fmt::format_to(out, "          {} {} 0\n", values[0] + zero, values[1] + zero);
+  else
+    fmt::format_to(out, "          {} {} {}\n", values[0] + zero, values[1] + zero,
+                   values[2] + zero);
+}
+
+template <int dim> void points_section(Out out, const mesh::Mesh<dim>& mesh) {
   fmt::format_to(out, "      <Points>\n        <DataArray type=\"Float64\" "
                       "NumberOfComponents=\"3\" format=\"ascii\">\n");
-  for (Index n = 0; n < mesh.n_nodes(); ++n)
-    fmt::format_to(out, "          {} {} 0\n", mesh.nodes(0, n), mesh.nodes(1, n));
+  for (Index n = 0; n < mesh.n_nodes(); ++n) {
+    const Point<dim> x = mesh.nodes.col(n);
+    tuple3<dim>(out, x.data(), -0.0);
+  }
   fmt::format_to(out, "        </DataArray>\n      </Points>\n");
 }
 
-void cells_section(Out out, const mesh::Mesh<2>& mesh) {
-  const std::span<const int> order = vtk_node_order(mesh.order);
+template <int dim> void cells_section(Out out, const mesh::Mesh<dim>& mesh) {
+  const std::span<const int> order = vtk_node_order(mesh.order, dim);
   const int per_cell = mesh.nodes_per_cell();
   fmt::format_to(out, "      <Cells>\n        <DataArray type=\"Int64\" Name=\"connectivity\" "
                       "format=\"ascii\">\n");
@@ -84,18 +118,18 @@ void cells_section(Out out, const mesh::Mesh<2>& mesh) {
     fmt::format_to(out, "{}{}", separator(c, 10), static_cast<long long>(c + 1) * per_cell);
   fmt::format_to(out, "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
                       "format=\"ascii\">\n");
-  const int type = vtk_cell_type(mesh.order);
+  const int type = vtk_cell_type(mesh.order, dim);
   for (Index c = 0; c < mesh.n_cells(); ++c) fmt::format_to(out, "{}{}", separator(c, 20), type);
   fmt::format_to(out, "\n        </DataArray>\n      </Cells>\n");
 }
 
-void point_data_section(Out out, const mesh::Mesh<2>& mesh, const post::Fields& fields) {
+template <int dim>
+void point_data_section(Out out, const mesh::Mesh<dim>& mesh, const post::Fields& fields) {
   fmt::format_to(out, "      <PointData Scalars=\"equivalent_strain_rate\" Vectors=\"velocity\">\n"
                       "        <DataArray type=\"Float64\" Name=\"velocity\" "
                       "NumberOfComponents=\"3\" format=\"ascii\">\n");
   for (Index n = 0; n < mesh.n_nodes(); ++n)
-    fmt::format_to(out, "          {} {} 0\n", fields.velocity[2 * n] + 0.0,
-                   fields.velocity[2 * n + 1] + 0.0);
+    tuple3<dim>(out, fields.velocity.data() + dim * n, 0.0);
   fmt::format_to(out, "        </DataArray>\n");
   scalar_array(out, "equivalent_strain_rate", fields.equivalent_strain_rate);
   scalar_array(out, "hydrostatic_stress", fields.hydrostatic_stress);
@@ -105,7 +139,8 @@ void point_data_section(Out out, const mesh::Mesh<2>& mesh, const post::Fields& 
   fmt::format_to(out, "      </PointData>\n");
 }
 
-void cell_data_section(Out out, const mesh::Mesh<2>& mesh, const post::Fields& fields) {
+template <int dim>
+void cell_data_section(Out out, const mesh::Mesh<dim>& mesh, const post::Fields& fields) {
   fmt::format_to(out, "      <CellData Scalars=\"equivalent_strain_rate\">\n");
   scalar_array(out, "equivalent_strain_rate", fields.cell_equivalent_strain_rate);
   scalar_array(out, "hydrostatic_stress", fields.cell_hydrostatic_stress);
@@ -115,9 +150,9 @@ void cell_data_section(Out out, const mesh::Mesh<2>& mesh, const post::Fields& f
   fmt::format_to(out, "\n        </DataArray>\n      </CellData>\n");
 }
 
-void check_fields(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
+template <int dim> void check_fields(const mesh::Mesh<dim>& mesh, const post::Fields& fields) {
   const Index n_nodes = mesh.n_nodes(), n_cells = mesh.n_cells();
-  check_size("velocity", static_cast<Index>(fields.velocity.size()), 2 * n_nodes);
+  check_size("velocity", static_cast<Index>(fields.velocity.size()), dim * n_nodes);
   const std::array<std::pair<std::string_view, const VectorX*>, 4> nodal = {
       {{"equivalent_strain_rate", &fields.equivalent_strain_rate},
        {"hydrostatic_stress", &fields.hydrostatic_stress},
@@ -134,28 +169,35 @@ void check_fields(const mesh::Mesh<2>& mesh, const post::Fields& fields) {
   check_finite("cell equivalent_strain_rate", fields.cell_equivalent_strain_rate);
   check_finite("cell hydrostatic_stress", fields.cell_hydrostatic_stress);
   for (Index n = 0; n < mesh.n_nodes(); ++n)
-    if (!std::isfinite(mesh.nodes(0, n)) || !std::isfinite(mesh.nodes(1, n)))
+    if (!mesh.nodes.col(n).allFinite())
       throw InternalError(fmt::format("fields.vtu: node {} has a non-finite coordinate", n));
 }
 
 } // namespace
 
-int vtk_cell_type(int order) {
-  if (order == 1) return 9;
-  if (order == 2) return 28;
-  throw InternalError(fmt::format("fields.vtu: no VTK cell type for order {}", order));
+int vtk_cell_type(int order, int dim) {
+  if (dim == 2 && order == 1) return 9;
+  if (dim == 2 && order == 2) return 28;
+  if (dim == 3 && order == 1) return 12;
+  if (dim == 3 && order == 2) return 29;
+  throw InternalError(
+      fmt::format("fields.vtu: no VTK cell type for order {} in {} dimensions", order, dim));
 }
 
-std::span<const int> vtk_node_order(int order) {
-  if (order == 1) return vtk_from_q1;
-  if (order == 2) return vtk_from_q2;
-  throw InternalError(fmt::format("fields.vtu: no VTK node order for order {}", order));
+std::span<const int> vtk_node_order(int order, int dim) {
+  if (dim == 2 && order == 1) return vtk_from_q1;
+  if (dim == 2 && order == 2) return vtk_from_q2;
+  if (dim == 3 && order == 1) return vtk_from_hex8;
+  if (dim == 3 && order == 2) return vtk_from_hex27;
+  throw InternalError(
+      fmt::format("fields.vtu: no VTK node order for order {} in {} dimensions", order, dim));
 }
 
-std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields,
+template <int dim>
+std::string fields_vtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
                        solvers::StopReason stop_reason) {
-  if (mesh.nodes_per_cell() != static_cast<int>(vtk_node_order(mesh.order).size()))
-    throw InternalError("fields.vtu: cells do not have (order + 1)^2 nodes");
+  if (mesh.nodes_per_cell() != static_cast<int>(vtk_node_order(mesh.order, dim).size()))
+    throw InternalError(fmt::format("fields.vtu: cells do not have (order + 1)^{} nodes", dim));
   check_fields(mesh, fields);
   std::string text;
   Out out(text);
@@ -184,5 +226,8 @@ std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields,
   fmt::format_to(out, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
   return text;
 }
+
+template std::string fields_vtu<2>(const mesh::Mesh<2>&, const post::Fields&, solvers::StopReason);
+template std::string fields_vtu<3>(const mesh::Mesh<3>&, const post::Fields&, solvers::StopReason);
 
 } // namespace formflow::io

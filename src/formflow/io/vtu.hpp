@@ -12,16 +12,18 @@
 
 namespace formflow::io {
 
-/// VTK cell type of a 2D cell of `order`: 9 (VTK_QUAD) for Q1, 28
-/// (VTK_BIQUADRATIC_QUAD) for Q2.
-int vtk_cell_type(int order);
+/// VTK cell type of a cell of `order` in `dim` dimensions: 9 (VTK_QUAD) for
+/// Q1, 28 (VTK_BIQUADRATIC_QUAD) for Q2; in 3D 12 (VTK_HEXAHEDRON) for Q1, 29
+/// (VTK_TRIQUADRATIC_HEXAHEDRON) for the 27-node Q2.
+int vtk_cell_type(int order, int dim = 2);
 
 /// For each VTK node position k, the lexicographic local node index that goes
-/// there (size 4 for Q1, 9 for Q2). See vtu.cpp for the drawing.
-std::span<const int> vtk_node_order(int order);
+/// there (size 4, 9, 8 or 27). See vtu.cpp for the drawing.
+std::span<const int> vtk_node_order(int order, int dim = 2);
 
-/// The whole fields.vtu document (ASCII). Points have z = 0.
-/// Point data: velocity (3 components, z = 0), equivalent_strain_rate,
+/// The whole fields.vtu document (ASCII) of a plane (dim 2, points and
+/// velocities get z = 0) or solid (dim 3) mesh.
+/// Point data: velocity (3 components), equivalent_strain_rate,
 /// hydrostatic_stress (σ_H, tension positive), hydrostatic_pressure (−σ_H),
 /// contact_pressure, friction_stress. Cell data: equivalent_strain_rate,
 /// hydrostatic_stress, hydrostatic_pressure (cell means) and cell_id.
@@ -30,7 +32,8 @@ std::span<const int> vtk_node_order(int order);
 /// a run that stopped for another `stop_reason` also carries an XML comment
 /// `NOT CONVERGED (<stop_reason>)` at the top of the file.
 /// Throws InternalError if a field has the wrong size or a non-finite value.
-std::string fields_vtu(const mesh::Mesh<2>& mesh, const post::Fields& fields,
+template <int dim>
+std::string fields_vtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
                        solvers::StopReason stop_reason = solvers::StopReason::Converged);
 
 } // namespace formflow::io

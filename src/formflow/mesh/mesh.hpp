@@ -45,6 +45,7 @@ struct BoundaryFacet {
 /// Cell nodes are stored in lexicographic order of the reference lattice,
 /// x fastest (see fem/lagrange.hpp for the drawing).
 template <int dim> struct Mesh {
+  static constexpr int dimension = dim; ///< for code that receives a Mesh through std::visit
   int order = 1; ///< 1: Q1 (2^dim nodes per cell), 2: Q2 (3^dim nodes per cell)
   /// Node coordinates, shape (dim, n_nodes).
   Eigen::Matrix<Real, dim, Eigen::Dynamic> nodes;

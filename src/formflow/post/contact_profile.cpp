@@ -1,16 +1,48 @@
 // SPDX-License-Identifier: MIT
-// The contact boundary Γ3 as a profile along its arc length.
+// The contact boundary Γ3 as a profile along its arc length (a point set in 3D).
 #include "formflow/post/post_process.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <map>
 #include <optional>
+#include <tuple>
 
 namespace formflow::post {
 
-std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& problem,
-                                           const std::vector<assembly::ContactPoint<2>>& contact) {
+namespace {
+
+/// The sample of one Γ3 point, arc length left to the caller.
+template <int dim>
+ContactSample sample_of(const mesh::Mesh<dim>& mesh, const assembly::ContactPoint<dim>& point) {
+  ContactSample sample;
+  sample.x = point.position[0];
+  sample.y = point.position[1];
+  if constexpr (dim == 3) sample.z = point.position[2];
+  sample.contact_pressure = point.contact_pressure;
+  sample.slip_velocity = point.tangential_velocity.norm();
+  sample.friction_stress = point.friction_traction.norm();
+  sample.sticking = point.sticking;
+  sample.part = mesh.facets[point.facet].label == mesh::BoundaryLabel::Die ? 1 : 0;
+  return sample;
+}
+
+/// Γ3 of a solid is a surface: no chain of faces to walk, so the points are
+/// listed in an order that depends only on where they are.
+std::vector<ContactSample> surface_samples(const assembly::FormingProblem<3>& problem,
+                                           const std::vector<assembly::ContactPoint<3>>& contact) {
+  std::vector<ContactSample> samples;
+  samples.reserve(contact.size());
+  for (const auto& point : contact)
+    samples.push_back(sample_of(problem.discretisation().mesh(), point));
+  std::sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+  });
+  return samples;
+}
+
+std::vector<ContactSample> plane_profile(const assembly::FormingProblem<2>& problem,
+                                         const std::vector<assembly::ContactPoint<2>>& contact) {
   const auto& mesh = problem.discretisation().mesh();
   const int n_q = problem.discretisation().facet_rule().size();
   // Each contact face is a segment between its first and last face node;
@@ -77,15 +109,8 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
         const auto& point = contact[segment.first_point + q];
         along_face += (point.position - previous).norm();
         previous = point.position;
-        ContactSample sample;
+        ContactSample sample = sample_of(mesh, point);
         sample.arc_length = arc_length + along_face;
-        sample.x = point.position[0];
-        sample.y = point.position[1];
-        sample.contact_pressure = point.contact_pressure;
-        sample.slip_velocity = point.tangential_velocity.norm();
-        sample.friction_stress = point.friction_traction.norm();
-        sample.sticking = point.sticking;
-        sample.part = mesh.facets[point.facet].label == mesh::BoundaryLabel::Die ? 1 : 0;
         along.push_back(sample);
       }
       std::sort(along.begin(), along.end(),
@@ -102,5 +127,24 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& pr
   }
   return samples;
 }
+
+} // namespace
+
+template <int dim>
+std::vector<ContactSample>
+contact_profile(const assembly::FormingProblem<dim>& problem,
+                const std::vector<assembly::ContactPoint<dim>>& contact) {
+  if constexpr (dim == 2)
+    return plane_profile(problem, contact);
+  else
+    return surface_samples(problem, contact);
+}
+
+template std::vector<ContactSample>
+contact_profile<2>(const assembly::FormingProblem<2>&,
+                   const std::vector<assembly::ContactPoint<2>>&);
+template std::vector<ContactSample>
+contact_profile<3>(const assembly::FormingProblem<3>&,
+                   const std::vector<assembly::ContactPoint<3>>&);
 
 } // namespace formflow::post

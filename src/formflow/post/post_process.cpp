@@ -35,7 +35,7 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
   results.max_equivalent_strain_rate = results.fields.cell_equivalent_strain_rate.maxCoeff();
   results.max_equivalent_strain_rate = std::max(results.max_equivalent_strain_rate,
                                                 results.fields.equivalent_strain_rate.maxCoeff());
-  if constexpr (dim == 2) results.contact = contact_profile(problem, contact);
+  results.contact = contact_profile(problem, contact);
   contact_zones(problem, contact, results.container_zones, results.die_zones);
 }
 

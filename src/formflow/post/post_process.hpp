@@ -32,9 +32,12 @@ void contact_zones(const assembly::FormingProblem<dim>& problem,
                    const std::vector<assembly::ContactPoint<dim>>& contact, ContactZones& container,
                    ContactZones& die);
 
-/// Γ3 samples ordered by arc length from the end nearest the rear (plane problems).
-std::vector<ContactSample> contact_profile(const assembly::FormingProblem<2>& problem,
-                                           const std::vector<assembly::ContactPoint<2>>& contact);
+/// Γ3 samples. Plane problems: ordered by arc length from the end nearest the
+/// rear. Solid problems (Γ3 a surface, no arc length): every point, s = 0, in
+/// lexicographic order of (x, y, z), so that a file of them is reproducible.
+template <int dim>
+std::vector<ContactSample> contact_profile(const assembly::FormingProblem<dim>& problem,
+                                           const std::vector<assembly::ContactPoint<dim>>& contact);
 
 /// Everything above plus the reaction force from one more assembly K(u): the
 /// consistent reaction K_c·(u) u, which equals the total discrete power at a

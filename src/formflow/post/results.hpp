@@ -27,10 +27,13 @@ struct Pressures {
 /// the sum over the weak-form terms (assembly/terms/term.hpp).
 using PowerTerms = assembly::PowerTerms;
 
-/// One sample of the contact boundary Γ3 (a facet quadrature point), ordered by arc length.
+/// One sample of the contact boundary Γ3 (a facet quadrature point): ordered by
+/// arc length in a plane run; in a solid run Γ3 is a surface, which has none
+/// (post/contact_profile.cpp says the order then).
 struct ContactSample {
-  Real arc_length = 0.0; ///< s, measured along Γ3 from the ram end of the container wall
+  Real arc_length = 0.0; ///< s, measured along Γ3 from the ram end of the container wall; 0 in 3D
   Real x = 0.0, y = 0.0;
+  Real z = 0.0;                ///< 0 in a plane run
   Real contact_pressure = 0.0; ///< −σ_N = u_N/d_N (local, not mollified)
   Real friction_stress = 0.0;  ///< |σ_T| = |λ_T|, the friction traction magnitude
   Real slip_velocity = 0.0;    ///< |u_T|

@@ -61,12 +61,12 @@ TEST_F(CaseFile, DefaultsAreThePapersBenchmark) {
   EXPECT_EQ(case_.process.type, physics::ProcessType::Extrusion);
   EXPECT_EQ(case_.process.speed, 1.0);
   EXPECT_EQ(case_.process.ram, physics::RamCondition::Sliding);
-  EXPECT_EQ(case_.geometry.container_length, 10.0);
-  EXPECT_EQ(case_.geometry.entry_half_height, 10.0);
-  EXPECT_EQ(case_.geometry.exit_half_height, 5.0);
-  EXPECT_EQ(case_.geometry.exit_length, 10.0);
+  EXPECT_EQ(case_.mesh.geometry.container_length, 10.0);
+  EXPECT_EQ(case_.mesh.geometry.entry_half_height, 10.0);
+  EXPECT_EQ(case_.mesh.geometry.exit_half_height, 5.0);
+  EXPECT_EQ(case_.mesh.geometry.exit_length, 10.0);
   EXPECT_EQ(case_.element, fem::ElementKind::Q2);
-  EXPECT_EQ(case_.mesh_size, 1.0);
+  EXPECT_EQ(case_.mesh.size, 1.0);
   EXPECT_EQ(case_.volumetric_points, 2);
   EXPECT_EQ(case_.material.parameters_of<physics::PiecewisePower>().A, std::sqrt(3.0));
   EXPECT_EQ(case_.material.parameters_of<physics::PiecewisePower>().alpha, 1e-3);
@@ -151,7 +151,7 @@ TEST_F(CaseFile, IntegersAreAcceptedForRealKeys) {
       load_case(write("[process]\nspeed = 2\n[material]\nA = 1\n[mesh]\nsize = 5\n"), {});
   EXPECT_EQ(case_.process.speed, 2.0);
   EXPECT_EQ(case_.material.parameters_of<physics::PiecewisePower>().A, 1.0);
-  EXPECT_EQ(case_.mesh_size, 5.0);
+  EXPECT_EQ(case_.mesh.size, 5.0);
 }
 
 TEST_F(CaseFile, OutOfRangeValuesNameTheRange) {
@@ -202,7 +202,7 @@ TEST_F(CaseFile, MeshSizeThatDoesNotFitSuggestsSizesThatDo) {
 }
 
 TEST_F(CaseFile, MeshIOfTheSpecFits) {
-  EXPECT_EQ(load_case(write("[mesh]\nsize = 1.6666666666666667\n"), {}).mesh_size, 10.0 / 6.0);
+  EXPECT_EQ(load_case(write("[mesh]\nsize = 1.6666666666666667\n"), {}).mesh.size, 10.0 / 6.0);
 }
 
 TEST_F(CaseFile, LengthThatDoesNotFitTheDefaultSizeIsBlamed) {
@@ -244,7 +244,7 @@ TEST_F(CaseFile, OverridesApplyAfterTheFileInOrder) {
   EXPECT_EQ(load_case(path, {{"friction.mu", "0.3"}}).friction.mu, 0.3);
   EXPECT_EQ(load_case(path, {{"friction.mu", "0.3"}, {"friction.mu", "0.2"}}).friction.mu, 0.2);
   // Cross-key checks run after all overrides: a bad file size fixed on the command line is fine.
-  EXPECT_EQ(load_case(write("[mesh]\nsize = 0.3\n"), {{"mesh.size", "0.5"}}).mesh_size, 0.5);
+  EXPECT_EQ(load_case(write("[mesh]\nsize = 0.3\n"), {{"mesh.size", "0.5"}}).mesh.size, 0.5);
 }
 
 TEST_F(CaseFile, OverrideValuesAreTomlOrBareWords) {

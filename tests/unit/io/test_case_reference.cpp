@@ -144,8 +144,8 @@ TEST(ExampleCases, NamedCasesHaveTheirSettings) {
   EXPECT_EQ(load("paper-q1-1x1-mesh2").volumetric_points, 1);
   const Case mesh_one = load("paper-q2-1x1-mesh1");
   EXPECT_EQ(mesh_one.volumetric_points, 1);
-  EXPECT_EQ(mesh_one.mesh_size, 10.0 / 6.0);
-  EXPECT_EQ(load("paper-q2-2x2-mesh1").mesh_size, 10.0 / 6.0);
+  EXPECT_EQ(mesh_one.mesh.size, 10.0 / 6.0);
+  EXPECT_EQ(load("paper-q2-2x2-mesh1").mesh.size, 10.0 / 6.0);
   EXPECT_EQ(load("paper-q2-2x2-mesh2-mu0.1").friction.mu, 0.1);
   EXPECT_EQ(load("paper-q2-2x2-mesh2-mu0.2").friction.mu, 0.2);
   EXPECT_EQ(load("sticking-ram-q2").process.ram, physics::RamCondition::Sticking);

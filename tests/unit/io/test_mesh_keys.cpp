@@ -42,18 +42,18 @@ protected:
 
 TEST_F(MeshKeys, DefaultsAreTheStructuredGenerator) {
   const Case case_ = load_case("", {});
-  EXPECT_EQ(case_.mesh_source, mesh::MeshSource::Structured);
-  EXPECT_TRUE(case_.mesh_file.empty());
-  EXPECT_TRUE(case_.mesh_boundaries.empty());
+  EXPECT_EQ(case_.mesh.source, mesh::MeshSource::Structured);
+  EXPECT_TRUE(case_.mesh.file.empty());
+  EXPECT_TRUE(case_.mesh.boundaries.empty());
 }
 
 TEST_F(MeshKeys, FileSourceReadsTheMapAndRemembersEachEntrysLine) {
   const Case case_ = load_case(write("[mesh]\nsource = \"file\"\nfile = \"die.msh\"\n"
                                      "[mesh.boundaries]\nram = \"rear\"\n\"die face\" = \"die\"\n"),
                                {});
-  EXPECT_EQ(case_.mesh_source, mesh::MeshSource::File);
-  EXPECT_EQ(case_.mesh_file, "die.msh");
-  EXPECT_EQ(case_.mesh_boundaries, (NameMap{{"ram", "rear"}, {"die face", "die"}}));
+  EXPECT_EQ(case_.mesh.source, mesh::MeshSource::File);
+  EXPECT_EQ(case_.mesh.file, "die.msh");
+  EXPECT_EQ(case_.mesh.boundaries, (NameMap{{"ram", "rear"}, {"die face", "die"}}));
   EXPECT_EQ(case_.key_locations.at("mesh.file").line, 3);
   EXPECT_EQ(case_.key_locations.at("mesh.boundaries.ram").line, 5);
   EXPECT_EQ(case_.key_locations.at("mesh.boundaries.die face").line, 6);
@@ -103,7 +103,7 @@ TEST_F(MeshKeys, BadPartNameIsBlamedOnItsOwnLineNotOnTheTableHeader) {
 
 TEST_F(MeshKeys, GmshSourceTakesAnySizeButTheStructuredGridDoesNot) {
   // Gmsh meshes any size; the uniform grid needs a size that divides every length.
-  EXPECT_EQ(load_case(write("[mesh]\nsource = \"gmsh\"\nsize = 0.7\n"), {}).mesh_size, 0.7);
+  EXPECT_EQ(load_case(write("[mesh]\nsource = \"gmsh\"\nsize = 0.7\n"), {}).mesh.size, 0.7);
   error_in("[mesh]\nsize = 0.7\n", "mesh.size", 2);
 }
 
@@ -111,7 +111,7 @@ TEST_F(MeshKeys, MapCanBeSetOnTheCommandLine) {
   const Case case_ = load_case(
       "",
       {{"mesh.source", "file"}, {"mesh.file", "x.msh"}, {"mesh.boundaries", "{ram = \"rear\"}"}});
-  EXPECT_EQ(case_.mesh_boundaries, (NameMap{{"ram", "rear"}}));
+  EXPECT_EQ(case_.mesh.boundaries, (NameMap{{"ram", "rear"}}));
   EXPECT_EQ(case_.key_locations.at("mesh.boundaries.ram").file, "--set");
 }
 

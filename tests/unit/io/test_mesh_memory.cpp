@@ -38,9 +38,9 @@ std::string suggested_size(const std::string& hint) {
 Case mesh_case(Real size, fem::ElementKind element = fem::ElementKind::Q2,
                mesh::MeshSource source = mesh::MeshSource::Structured) {
   Case case_ = load_case("", {});
-  case_.mesh_size = size;
+  case_.mesh.size = size;
   case_.element = element;
-  case_.mesh_source = source;
+  case_.mesh.source = source;
   return case_;
 }
 
@@ -51,8 +51,9 @@ TEST(MeshMemory, EstimateIsALowerBoundOfTheMeasuredRuns) {
        {std::tuple{0.125, 77762.0, 145.0}, std::tuple{0.0625, 309122.0, 571.0}}) {
     const auto estimate = estimate_mesh_memory(case_, size);
     ASSERT_TRUE(estimate);
-    EXPECT_EQ(estimate->cells,
-              static_cast<Real>(mesh::make_die_channel_mesh(case_.geometry, size, 2).n_cells()));
+    EXPECT_EQ(
+        estimate->cells,
+        static_cast<Real>(mesh::make_die_channel_mesh(case_.mesh.geometry, size, 2).n_cells()));
     EXPECT_LE(estimate->dofs, measured_dofs);
     // order² nodes per cell misses one boundary row and column: 1.2 % at 77 k dofs.
     EXPECT_GT(estimate->dofs, 0.98 * measured_dofs);
@@ -68,7 +69,7 @@ TEST(MeshMemory, EstimateIsALowerBoundOfTheMeasuredRuns) {
 
 TEST(MeshMemory, FileMeshesAreNotEstimated) {
   Case case_;
-  case_.mesh_source = mesh::MeshSource::File;
+  case_.mesh.source = mesh::MeshSource::File;
   EXPECT_FALSE(estimate_mesh_memory(case_, 1e-6));
   EXPECT_FALSE(mesh_memory_problem(case_, 1.0));
 }
@@ -102,13 +103,13 @@ TEST(MeshMemory, TooLargeAStructuredMeshNamesCellsEstimateAndAValidSize) {
             "503 GiB of memory; this machine has 24 GiB");
   // The suggestion divides every length and fits ...
   const Real size = std::stod(suggested_size(problem->hint));
-  for (const Real length : mesh::lengths_to_fit(case_.geometry))
+  for (const Real length : mesh::lengths_to_fit(case_.mesh.geometry))
     EXPECT_GT(mesh::cells_along(length, size), 0) << problem->hint;
   EXPECT_FALSE(mesh_memory_problem(mesh_case(size, fem::ElementKind::Q1), 24 * gibibyte))
       << problem->hint;
   // ... and is the finest that does: the next finer divisor of the lengths does not fit.
   const auto finer =
-      mesh::nearest_fitting_sizes(mesh::lengths_to_fit(case_.geometry), 0.999 * size).smaller;
+      mesh::nearest_fitting_sizes(mesh::lengths_to_fit(case_.mesh.geometry), 0.999 * size).smaller;
   ASSERT_TRUE(finer);
   EXPECT_TRUE(mesh_memory_problem(mesh_case(finer->size(), fem::ElementKind::Q1), 24 * gibibyte));
 }
@@ -128,8 +129,8 @@ TEST(MeshMemory, GmshAndManufacturedSuggestTheirOwnValidSizes) {
   ASSERT_TRUE(box_problem);
   EXPECT_TRUE(has_text(box_problem->message, "about 1e+08 cells")) << box_problem->message;
   EXPECT_TRUE(has_text(box_problem->hint, "(= 1/")) << box_problem->hint;
-  box.mesh_size = std::stod(suggested_size(box_problem->hint));
-  EXPECT_GT(mesh::cells_along(1.0, box.mesh_size), 0) << box_problem->hint;
+  box.mesh.size = std::stod(suggested_size(box_problem->hint));
+  EXPECT_GT(mesh::cells_along(1.0, box.mesh.size), 0) << box_problem->hint;
   EXPECT_FALSE(mesh_memory_problem(box, 8 * gibibyte));
 }
 

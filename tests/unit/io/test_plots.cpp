@@ -242,12 +242,12 @@ TEST(PictureSubtitle, ManufacturedRunNamesSolutionElementAndH) {
   post::Results results;
   make_synthetic_run(1, 2.5, case_, mesh, results);
   case_.manufactured = physics::ManufacturedSolution::Smooth;
-  case_.mesh_size = 0.125;
+  case_.mesh.size = 0.125;
   EXPECT_EQ(plot::run_description(case_, results),
             "manufactured solution \"smooth\" · Q1, h = 0.125 · uniform cells · "
             "converged in 27 iterations");
   case_.manufactured = physics::ManufacturedSolution::Extension;
-  case_.distortion = {mesh::Distortion::Random, 0.2, 3};
+  case_.mesh.distortion = {mesh::Distortion::Random, 0.2, 3};
   results.stop_reason = solvers::StopReason::MaxIterations;
   const std::string text = plot::run_description(case_, results);
   EXPECT_EQ(text, "manufactured solution \"extension\" · Q1, h = 0.125 · random distortion 0.2 · "

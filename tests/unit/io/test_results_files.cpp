@@ -106,10 +106,10 @@ void make_synthetic_run(int order, double size, io::Case& case_, mesh::Mesh<2>& 
                         post::Results& results) {
   case_ = io::Case{};
   case_.element = order == 1 ? fem::ElementKind::Q1 : fem::ElementKind::Q2;
-  case_.mesh_size = size;
+  case_.mesh.size = size;
   case_.friction.mu = 0.1;
   case_.source = "synthetic";
-  mesh = mesh::make_channel_mesh(case_.geometry, size, order);
+  mesh = mesh::make_channel_mesh(case_.mesh.geometry, size, order);
   results = post::Results{};
   results.stop_reason = solvers::StopReason::Converged;
   results.iterations = 27;
@@ -183,8 +183,8 @@ protected:
 
 TEST_F(ResultsFiles, SummaryMeshSizeIsNullForAFileMeshAndTheDiametersDescribeIt) {
   // A .msh file has no single cell size: mesh.size (its default here) would describe nothing.
-  case_.mesh_source = mesh::MeshSource::File;
-  case_.mesh_file = "die.msh";
+  case_.mesh.source = mesh::MeshSource::File;
+  case_.mesh.file = "die.msh";
   results_.min_cell_diameter = 0.03;
   results_.max_cell_diameter = 0.4;
   const auto mesh = summary_mesh();
@@ -194,8 +194,8 @@ TEST_F(ResultsFiles, SummaryMeshSizeIsNullForAFileMeshAndTheDiametersDescribeIt)
   EXPECT_EQ(mesh.at("min_cell_diameter"), 0.03);
   EXPECT_EQ(mesh.at("max_cell_diameter"), 0.4);
   // Gmsh meshes the channel with mesh.size as its target size.
-  case_.mesh_source = mesh::MeshSource::Gmsh;
-  case_.mesh_size = 0.3;
+  case_.mesh.source = mesh::MeshSource::Gmsh;
+  case_.mesh.size = 0.3;
   const auto gmsh = summary_mesh();
   EXPECT_EQ(gmsh.at("source"), "gmsh");
   EXPECT_EQ(gmsh.at("size"), 0.3);
@@ -204,8 +204,8 @@ TEST_F(ResultsFiles, SummaryMeshSizeIsNullForAFileMeshAndTheDiametersDescribeIt)
 TEST_F(ResultsFiles, SummaryMeshOfAManufacturedRunIsTheBox) {
   // The verification box is built from mesh.size, whatever mesh.source says.
   case_.manufactured = physics::ManufacturedSolution::Smooth;
-  case_.mesh_source = mesh::MeshSource::File;
-  case_.mesh_size = 0.125;
+  case_.mesh.source = mesh::MeshSource::File;
+  case_.mesh.size = 0.125;
   const auto mesh = summary_mesh();
   EXPECT_EQ(mesh.at("source"), "box");
   EXPECT_EQ(mesh.at("size"), 0.125);

@@ -14,7 +14,7 @@ KeySpec die_shape_key() {
               {"wedge", DieShape::Wedge},
               {"arc", DieShape::Arc},
               {"polyline", DieShape::Polyline}},
-             [](auto& c) -> auto& { return c.geometry.die; })
+             [](auto& c) -> auto& { return c.mesh.geometry.die; })
       .doc("die shape: square (a step at x = L_c, the benchmark), wedge (geometry.die_angle), "
            "arc (geometry.die_radius) or polyline (geometry.die_profile)");
 }
@@ -26,9 +26,9 @@ constexpr std::size_t max_die_profile_points = 1000;
 KeySpec die_profile_key() {
   KeySpec spec("geometry.die_profile", KeyType::PointList, KeyPoints{});
   spec.key.set = [](Case& case_, const KeyValue& value) {
-    case_.geometry.die_profile = std::get<KeyPoints>(value);
+    case_.mesh.geometry.die_profile = std::get<KeyPoints>(value);
   };
-  spec.key.get = [](const Case& case_) -> KeyValue { return case_.geometry.die_profile; };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh.geometry.die_profile; };
   return spec.unit("length")
       .at_most_entries(max_die_profile_points)
       .why("coordinates within 1e6 like every length; a face needs few points, and toml11 "
@@ -44,7 +44,7 @@ std::vector<CaseKey> geometry_keys() {
   return {
       real_key(
           "geometry.container_length", 10.0,
-          [](auto& c) -> auto& { return c.geometry.container_length; })
+          [](auto& c) -> auto& { return c.mesh.geometry.container_length; })
           .within(1e-6, 1e6)
           .why(length_range)
           .constraint("a multiple of mesh.size")
@@ -52,7 +52,7 @@ std::vector<CaseKey> geometry_keys() {
           .doc("L_c: the container part is x ∈ [0, L_c]"),
       real_key(
           "geometry.entry_half_height", 10.0,
-          [](auto& c) -> auto& { return c.geometry.entry_half_height; })
+          [](auto& c) -> auto& { return c.mesh.geometry.entry_half_height; })
           .within(1e-6, 1e6)
           .why(length_range)
           .constraint("> geometry.exit_half_height; a multiple of mesh.size")
@@ -60,14 +60,15 @@ std::vector<CaseKey> geometry_keys() {
           .doc("H_in: half thickness of the billet in the container"),
       real_key(
           "geometry.exit_half_height", 5.0,
-          [](auto& c) -> auto& { return c.geometry.exit_half_height; })
+          [](auto& c) -> auto& { return c.mesh.geometry.exit_half_height; })
           .within(1e-6, 1e6)
           .why(length_range)
           .constraint("< geometry.entry_half_height; a multiple of mesh.size")
           .unit("length")
           .doc("H_out: half thickness of the product after the die"),
       real_key(
-          "geometry.exit_length", 10.0, [](auto& c) -> auto& { return c.geometry.exit_length; })
+          "geometry.exit_length", 10.0,
+          [](auto& c) -> auto& { return c.mesh.geometry.exit_length; })
           .within(1e-6, 1e6)
           .why(length_range)
           .constraint("a multiple of mesh.size")
@@ -75,14 +76,14 @@ std::vector<CaseKey> geometry_keys() {
           .doc("L_e: the exit part is x ∈ [L_c, L_c + L_e]"),
       die_shape_key(),
       real_key(
-          "geometry.die_angle", 15.0, [](auto& c) -> auto& { return c.geometry.die_angle; })
+          "geometry.die_angle", 15.0, [](auto& c) -> auto& { return c.mesh.geometry.die_angle; })
           .above(0)
           .below(90)
           .unit("degrees")
           .doc("wedge (conical) die semi-angle α; the face runs from (L_c, H_in) to "
                "(L_c + (H_in − H_out)/tan α, H_out)"),
       real_key(
-          "geometry.die_radius", 10.0, [](auto& c) -> auto& { return c.geometry.die_radius; })
+          "geometry.die_radius", 10.0, [](auto& c) -> auto& { return c.mesh.geometry.die_radius; })
           .within(1e-6, 1e6)
           .why(length_range)
           .constraint("≥ geometry.entry_half_height − geometry.exit_half_height")
@@ -91,7 +92,7 @@ std::vector<CaseKey> geometry_keys() {
                "exit"),
       die_profile_key(),
       real_key(
-          "geometry.land_length", 0.0, [](auto& c) -> auto& { return c.geometry.land_length; })
+          "geometry.land_length", 0.0, [](auto& c) -> auto& { return c.mesh.geometry.land_length; })
           .zero_or_at_least(1e-6)
           .at_most(1e6)
           .why(length_range)

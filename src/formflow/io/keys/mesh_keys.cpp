@@ -10,9 +10,9 @@ namespace {
 KeySpec mesh_file_key() {
   KeySpec spec("mesh.file", KeyType::Text, std::string());
   spec.key.set = [](Case& case_, const KeyValue& value) {
-    case_.mesh_file = std::get<std::string>(value);
+    case_.mesh.file = std::get<std::string>(value);
   };
-  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh_file; };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh.file; };
   return spec.constraint("required when mesh.source = \"file\"; only then")
       .doc("the Gmsh mesh (.msh 4.1 or 2.2, ASCII or binary) of quad-4 (Q1) or quad-9 (Q2) "
            "cells; a relative path is taken from the case file's directory");
@@ -23,9 +23,9 @@ KeySpec mesh_boundaries_key() {
   for (int k = 0; k < mesh::n_boundary_labels; ++k)
     spec.key.choices.push_back(mesh::label_name(static_cast<mesh::BoundaryLabel>(k)));
   spec.key.set = [](Case& case_, const KeyValue& value) {
-    case_.mesh_boundaries = std::get<NameMap>(value);
+    case_.mesh.boundaries = std::get<NameMap>(value);
   };
-  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh_boundaries; };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh.boundaries; };
   return spec.constraint("only with mesh.source = \"file\"")
       .doc("physical curve name in mesh.file → boundary part, as a table `[mesh.boundaries]` "
            "with lines `ram = \"rear\"`; several names may share a part; every boundary "
@@ -41,7 +41,7 @@ std::vector<CaseKey> mesh_keys() {
           [](auto& c) -> auto& { return c.element; })
           .doc("velocity element: Q1 (4-node bilinear) or Q2 (9-node biquadratic)"),
       real_key(
-          "mesh.size", 1.0, [](auto& c) -> auto& { return c.mesh_size; })
+          "mesh.size", 1.0, [](auto& c) -> auto& { return c.mesh.size; })
           .within(1e-6, 1e6)
           .why(length_range)
           .constraint("divides every geometry length when mesh.source = \"structured\"; the "
@@ -54,7 +54,7 @@ std::vector<CaseKey> mesh_keys() {
           {{"structured", mesh::MeshSource::Structured},
            {"gmsh", mesh::MeshSource::Gmsh},
            {"file", mesh::MeshSource::File}},
-          [](auto& c) -> auto& { return c.mesh_source; })
+          [](auto& c) -> auto& { return c.mesh.source; })
           .doc("structured: uniform square cells; gmsh: the same geometry meshed by Gmsh with "
                "recombined quadrilaterals of size mesh.size; file: the mesh in mesh.file"),
       mesh_file_key(),

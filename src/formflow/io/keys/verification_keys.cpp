@@ -24,18 +24,19 @@ std::vector<CaseKey> verification_keys() {
           {{"none", mesh::Distortion::None},
            {"smooth", mesh::Distortion::Smooth},
            {"random", mesh::Distortion::Random}},
-          [](auto& c) -> auto& { return c.distortion.kind; })
+          [](auto& c) -> auto& { return c.mesh.distortion.kind; })
           .doc("interior nodes of the verification box mesh: uniform squares, a fixed smooth map, "
                "or random offsets (non-affine cells)"),
       real_key(
-          "verification.amplitude", 0.1, [](auto& c) -> auto& { return c.distortion.amplitude; })
+          "verification.amplitude", 0.1,
+          [](auto& c) -> auto& { return c.mesh.distortion.amplitude; })
           .at_least(0)
           .below(0.25)
           .constraint("≤ 0.1 with distortion = \"smooth\" (the map stays one-to-one)")
           .doc("distortion size: smooth = displacement amplitude / box side; random = "
                "largest offset / cell side"),
       integer_key(
-          "verification.seed", 1, [](auto& c) -> auto& { return c.distortion.seed; })
+          "verification.seed", 1, [](auto& c) -> auto& { return c.mesh.distortion.seed; })
           .at_least(0)
           .at_most(2147483647)
           .doc("seed of the random distortion (each mesh of a ladder draws its own offsets)"),

@@ -27,13 +27,13 @@ std::string choice_of(const Case& case_, std::string_view key) {
 /// element, h and the distortion of the unit-square mesh instead.
 std::string manufactured_description(const Case& case_, const std::string& outcome) {
   const std::string distortion =
-      case_.distortion.kind == mesh::Distortion::None
+      case_.mesh.distortion.kind == mesh::Distortion::None
           ? std::string("uniform cells")
           : fmt::format("{} distortion {:g}", choice_of(case_, "verification.distortion"),
-                        case_.distortion.amplitude);
+                        case_.mesh.distortion.amplitude);
   return fmt::format("manufactured solution \"{}\" · {}, h = {:g} · {} · {}",
                      choice_of(case_, "verification.solution"), fem::element_name(case_.element),
-                     case_.mesh_size, distortion, outcome);
+                     case_.mesh.size, distortion, outcome);
 }
 
 } // namespace
@@ -49,10 +49,10 @@ std::string run_description(const Case& case_, const post::Results& results) {
     return manufactured_description(case_, outcome);
   // A mesh read from a file has no single cell size: name the file instead.
   const std::string cells =
-      case_.mesh_source == mesh::MeshSource::File
+      case_.mesh.source == mesh::MeshSource::File
           ? fmt::format("{} cells from {}", results.n_cells,
-                        std::filesystem::path(case_.mesh_file).filename().string())
-          : fmt::format("h = {:g}", case_.mesh_size);
+                        std::filesystem::path(case_.mesh.file).filename().string())
+          : fmt::format("h = {:g}", case_.mesh.size);
   return fmt::format("{} · {}, {} · μ_{{f}} = {:g} · {} · {} {:.4g}",
                      drawing ? "drawing" : "extrusion", fem::element_name(case_.element), cells,
                      case_.friction.mu, outcome, drawing ? "drawing stress" : "ram pressure",
