@@ -142,8 +142,8 @@ private:
   std::vector<VectorX> multiplier_;      ///< λ per cell (d = 0)
   std::vector<Real> augmentation_;       ///< r_e per cell from the last assembly (d = 0)
   std::vector<Real> contact_multiplier_; ///< λ_k per Γ3 point (d_N = 0)
-  std::vector<Real> contact_weight_;     ///< JxW per Γ3 point, filled by the augmented contact term
-  std::vector<Index> pressure_dofs_;     ///< global pressure: n_pressure per cell, cell-major
+  std::vector<Real> contact_weight_; ///< JxW per Γ3 point, filled by the augmented contact term
+  std::vector<Index> pressure_dofs_; ///< global pressure: n_pressure per cell, cell-major
   Index n_pressure_dofs_ = 0;
   VectorX pressure_; ///< global pressure: vertex values of σ_H
 };
