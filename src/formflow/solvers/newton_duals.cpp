@@ -97,41 +97,43 @@ void update_duals(const assembly::FormingProblem<dim>& problem, const VectorX& u
   fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities, step_velocities,
       next_velocities;
-  const physics::FlowLaw& law = problem.settings().law;
-  for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
-    problem.gather(cell, &u, coordinates, velocities);
-    problem.gather(cell, &step, coordinates, step_velocities);
-    problem.gather(cell, &next, coordinates, next_velocities);
-    problem.load_cell(cell, values, nullptr);
-    for (int q = 0; q < n_q; ++q) {
-      const Tensor3 next_dev =
-          physics::deviator(problem.strain_rate_at(values, next_velocities, q));
-      const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
-      Tensor3& w = duals[cell * n_q + q];
-      // Where the law is linear the dual stress is just ν ė: nothing to gain.
-      if (law.is_linear_at(next_eps)) {
-        w = law.secant_viscosity(next_eps) * next_dev;
-        continue;
+  // One law dispatch for the whole loop: it evaluates the law twice per point.
+  problem.settings().law.visit_bound([&](const auto& law) {
+    for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
+      problem.gather(cell, &u, coordinates, velocities);
+      problem.gather(cell, &step, coordinates, step_velocities);
+      problem.gather(cell, &next, coordinates, next_velocities);
+      problem.load_cell(cell, values, nullptr);
+      for (int q = 0; q < n_q; ++q) {
+        const Tensor3 next_dev =
+            physics::deviator(problem.strain_rate_at(values, next_velocities, q));
+        const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
+        Tensor3& w = duals[cell * n_q + q];
+        // Where the law is linear the dual stress is just ν ė: nothing to gain.
+        if (law.is_linear_at(next_eps)) {
+          w = law.secant_viscosity(next_eps) * next_dev;
+          continue;
+        }
+        const Tensor3 dev = physics::deviator(problem.strain_rate_at(values, velocities, q));
+        const Real eps = std::sqrt(2.0 / 3.0 * dev.squaredNorm());
+        const auto [nu, nu_derivative] = law.secant_viscosity_and_derivative(eps);
+        if (primal) w = nu * dev;
+        if (eps > 0) {
+          // Newton on ε̄̇ w − σ_p(ε̄̇) ė = 0 at (u, w) along the step:
+          // w + δw = ν ė + ν ė(δu) + (σ_p′ ė − w) dε̄̇/ε̄̇.
+          const Tensor3 step_dev =
+              physics::deviator(problem.strain_rate_at(values, step_velocities, q));
+          const Real rate_change = 2.0 / 3.0 * dev.cwiseProduct(step_dev).sum() / eps; // dε̄̇
+          w = nu * (dev + step_dev) + (nu_derivative * dev - w) * (rate_change / eps);
+        } else {
+          w = law.secant_viscosity(next_eps) * next_dev;
+        }
+        const Real cap = law.yield_stress(next_eps);
+        const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
+        if (size > cap) w *= cap / size;
       }
-      const Tensor3 dev = physics::deviator(problem.strain_rate_at(values, velocities, q));
-      const Real eps = std::sqrt(2.0 / 3.0 * dev.squaredNorm());
-      const auto [nu, nu_derivative] = law.secant_viscosity_and_derivative(eps);
-      if (primal) w = nu * dev;
-      if (eps > 0) {
-        // Newton on ε̄̇ w − σ_p(ε̄̇) ė = 0 at (u, w) along the step:
-        // w + δw = ν ė + ν ė(δu) + (σ_p′ ė − w) dε̄̇/ε̄̇.
-        const Tensor3 step_dev =
-            physics::deviator(problem.strain_rate_at(values, step_velocities, q));
-        const Real rate_change = 2.0 / 3.0 * dev.cwiseProduct(step_dev).sum() / eps; // dε̄̇
-        w = nu * (dev + step_dev) + (nu_derivative * dev - w) * (rate_change / eps);
-      } else {
-        w = law.secant_viscosity(next_eps) * next_dev;
-      }
-      const Real cap = law.yield_stress(next_eps);
-      const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
-      if (size > cap) w *= cap / size;
     }
-  }
+  });
 }
 
 template <int dim>
@@ -143,30 +145,31 @@ void secant_duals(const assembly::FormingProblem<dim>& problem, const VectorX* p
   duals.resize(static_cast<std::size_t>(problem.mesh().n_cells()) * n_q);
   fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, previous_velocities, next_velocities;
-  const physics::FlowLaw& law = problem.settings().law;
-  for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
-    if (previous) problem.gather(cell, previous, coordinates, previous_velocities);
-    problem.gather(cell, &next, coordinates, next_velocities);
-    problem.load_cell(cell, values, nullptr);
-    for (int q = 0; q < n_q; ++q) {
-      const Tensor3 next_dev =
-          physics::deviator(problem.strain_rate_at(values, next_velocities, q));
-      const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
-      Tensor3& w = duals[cell * n_q + q];
-      if (law.is_linear_at(next_eps)) { // linear law: w = ν ė exactly
-        w = law.secant_viscosity(next_eps) * next_dev;
-        continue;
+  problem.settings().law.visit_bound([&](const auto& law) {
+    for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
+      if (previous) problem.gather(cell, previous, coordinates, previous_velocities);
+      problem.gather(cell, &next, coordinates, next_velocities);
+      problem.load_cell(cell, values, nullptr);
+      for (int q = 0; q < n_q; ++q) {
+        const Tensor3 next_dev =
+            physics::deviator(problem.strain_rate_at(values, next_velocities, q));
+        const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
+        Tensor3& w = duals[cell * n_q + q];
+        if (law.is_linear_at(next_eps)) { // linear law: w = ν ė exactly
+          w = law.secant_viscosity(next_eps) * next_dev;
+          continue;
+        }
+        const Real previous_eps = previous ? physics::equivalent_strain_rate(problem.strain_rate_at(
+                                                 values, previous_velocities, q))
+                                           : problem.settings().initial_rate;
+        // The stress the secant solve balanced, ν(uⁿ⁻¹) ė(uⁿ), capped to the yield surface.
+        w = law.secant_viscosity(previous_eps) * next_dev;
+        const Real cap = law.yield_stress(next_eps);
+        const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
+        if (size > cap) w *= cap / size;
       }
-      const Real previous_eps = previous ? physics::equivalent_strain_rate(problem.strain_rate_at(
-                                               values, previous_velocities, q))
-                                         : problem.settings().initial_rate;
-      // The stress the secant solve balanced, ν(uⁿ⁻¹) ė(uⁿ), capped to the yield surface.
-      w = law.secant_viscosity(previous_eps) * next_dev;
-      const Real cap = law.yield_stress(next_eps);
-      const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
-      if (size > cap) w *= cap / size;
     }
-  }
+  });
   // The slip direction the secant solve used, u_T(uⁿ)/s(uⁿ⁻¹), capped to |λ| ≤ 1.
   // The constant-viscosity solve had no friction (τ_f(0) = 0): λ = 0 there.
   const std::vector<assembly::ContactPoint<dim>> after = problem.contact_state(next);
