@@ -49,7 +49,7 @@ void bind_errors(py::module_& module) {
     try {
       if (pointer) std::rethrow_exception(pointer);
     } catch (const formflow::InputError& error) {
-      py::object instance = (*input_error)(error.what());
+      py::object instance = py::reinterpret_borrow<py::object>(*input_error)(error.what());
       instance.attr("file") = error.file;
       instance.attr("line") = error.line;
       instance.attr("key") = error.key;
