@@ -4,8 +4,6 @@ import json
 import os
 import subprocess
 
-import pytest
-
 # A small case every test can afford (mesh I of the paper: 10/6-wide squares, Q2,
 # 2x2 volumetric rule): a second or less per solve.
 MESH_I = {"mesh.size": 10 / 6}
@@ -37,8 +35,3 @@ def read_summary(directory):
 def without_timings(summary):
     """summary.json without what differs between two runs of one case: the wall times."""
     return {key: value for key, value in summary.items() if key != "timing_s"}
-
-
-@pytest.fixture
-def cli():
-    return run_cli
