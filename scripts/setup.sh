@@ -11,7 +11,12 @@ packages=(
   libtoml11-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libcairo2-dev fonts-dejavu-core libgmsh-dev
   libgtest-dev libgmock-dev libbenchmark-dev numdiff python3-vtk9
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-pil
 )
+# The caller's own additions (./test: chromium for the report's browser test), in
+# the same apt-get run.
+read -r -a extra_packages <<<"${FORMFLOW_EXTRA_PACKAGES:-}"
+packages+=("${extra_packages[@]}")
 source "$(dirname "$0")/install_packages.sh"
 install_missing_packages formflow "${packages[@]}"
 

@@ -40,6 +40,17 @@ TEST_F(StudyCommand, ManufacturedLadderWritesTableAndPictures) {
   EXPECT_EQ(table.rfind("key,value,parameter,dofs,", 0), 0u);
   EXPECT_NE(table.find("mesh.size,1/16,0.0625,"), std::string::npos) << table;
   EXPECT_NE(table.find(",converged,"), std::string::npos);
+  // report.html: the same table and the plot inside the page.
+  const std::string report = formflow::testing::read_text(output() / "report.html");
+  EXPECT_NE(report.find("<th>key</th><th>value</th><th>parameter</th><th>dofs</th>"),
+            std::string::npos);
+  EXPECT_NE(report.find("<td class=\"number\">mesh.size</td><td class=\"number\">1/16</td>"),
+            std::string::npos);
+  const std::string picture = "src=\"data:image/svg+xml;base64,";
+  const auto first = report.find(picture); // the study plot, and no corner plot here
+  ASSERT_NE(first, std::string::npos);
+  EXPECT_EQ(report.find(picture, first + 1), std::string::npos);
+  EXPECT_NE(report.find("all 3 rungs converged"), std::string::npos);
 }
 
 TEST_F(StudyCommand, BadInputWritesNothing) {

@@ -4,6 +4,7 @@
 
 #include "formflow/io/csv.hpp"
 #include "formflow/io/plot/pictures.hpp"
+#include "formflow/io/report_html.hpp"
 #include "formflow/io/result_set.hpp"
 #include "formflow/io/vtu.hpp"
 
@@ -16,7 +17,8 @@ namespace formflow::io {
 
 std::span<const std::string> result_file_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> all = {"summary.json", "history.csv", "contact.csv", "fields.vtu"};
+    std::vector<std::string> all = {"summary.json", "history.csv", "contact.csv", "fields.vtu",
+                                    "report.html"};
     for (const std::string& picture : plot::picture_names()) {
       all.push_back(picture + ".png");
       all.push_back(picture + ".svg");
@@ -38,11 +40,14 @@ void write_results(const std::string& directory, const Case& case_, const mesh::
   files.push_back({"fields.vtu", fields_vtu(mesh, results.fields, results.stop_reason)});
   if (is_stop_requested(stop_requested)) throw Stopped("stopped before drawing the pictures");
   // The pictures draw the plane channel; a solid run has none (see the header).
+  std::vector<ReportPicture> report_pictures;
   if constexpr (dim == 2)
     for (plot::Picture& picture : plot::render_pictures(case_, mesh, results)) {
+      report_pictures.push_back({picture.name, picture.svg});
       files.push_back({picture.name + ".png", std::move(picture.png)});
       files.push_back({picture.name + ".svg", std::move(picture.svg)});
     }
+  files.push_back({"report.html", report_html(case_, results, report_pictures)});
   publish_result_set(directory, files, "summary.json", result_file_names(), stop_requested);
 }
 

@@ -13,8 +13,8 @@
 namespace formflow::io {
 
 /// Every file write_results writes: summary.json, history.csv, contact.csv,
-/// fields.vtu and each picture's .png and .svg. check_output_directory takes
-/// this list before the solve.
+/// fields.vtu, report.html (io/report_html.hpp) and each picture's .png and .svg.
+/// check_output_directory takes this list before the solve.
 std::span<const std::string> result_file_names();
 
 /// Writes the files of result_file_names() into `directory` (created if

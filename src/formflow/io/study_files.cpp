@@ -3,6 +3,7 @@
 #include "formflow/io/study_files.hpp"
 
 #include "formflow/io/plot/study_plot.hpp"
+#include "formflow/io/report_html.hpp"
 #include "formflow/io/result_set.hpp"
 
 #include <fmt/format.h>
@@ -78,22 +79,27 @@ std::string corner_csv(const post::StudyTable& table) {
 
 std::span<const std::string> study_file_names() {
   static const std::vector<std::string> names = {"study.csv",  "study.png",  "study.svg",
-                                                 "corner.csv", "corner.png", "corner.svg"};
+                                                 "corner.csv", "corner.png", "corner.svg",
+                                                 "report.html"};
   return names;
 }
 
 void write_study(const std::string& directory, const post::StudyTable& table,
                  const StopRequested& stop_requested) {
   plot::Picture picture = plot::render_study_plot(table);
-  std::vector<ResultFile> files = {{"study.csv", study_csv(table)},
+  const std::string csv = study_csv(table);
+  std::vector<ReportPicture> report_pictures = {{"study", picture.svg}};
+  std::vector<ResultFile> files = {{"study.csv", csv},
                                    {"study.png", std::move(picture.png)},
                                    {"study.svg", std::move(picture.svg)}};
   if (table.has_corner_profiles()) {
     plot::Picture corner = plot::render_corner_plot(table);
+    report_pictures.push_back({"corner", corner.svg});
     files.push_back({"corner.csv", corner_csv(table)});
     files.push_back({"corner.png", std::move(corner.png)});
     files.push_back({"corner.svg", std::move(corner.svg)});
   }
+  files.push_back({"report.html", study_report_html(table, csv, report_pictures)});
   publish_result_set(directory, files, "study.csv", study_file_names(), stop_requested);
 }
 

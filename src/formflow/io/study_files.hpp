@@ -21,11 +21,12 @@ std::string study_csv(const post::StudyTable& table);
 /// profile of every rung that has one.
 std::string corner_csv(const post::StudyTable& table);
 
-/// Every file write_study may write: study.csv/.png/.svg, corner.csv/.png/.svg.
+/// Every file write_study may write: study.csv/.png/.svg, corner.csv/.png/.svg, report.html.
 std::span<const std::string> study_file_names();
 
-/// Writes study.csv, study.png and study.svg into `directory` (created if
-/// missing), with corner profiles also corner.csv, corner.png and corner.svg,
+/// Writes study.csv, study.png, study.svg and report.html (the table and the
+/// plots in one page) into `directory` (created if missing), with corner
+/// profiles also corner.csv, corner.png and corner.svg,
 /// as one set (io/result_set.hpp, study.csv last); corner files of an older
 /// study that this one lacks are removed with the commit. `stop_requested`
 /// is asked between files (throws Stopped, directory unchanged). Throws

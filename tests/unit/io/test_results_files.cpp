@@ -337,7 +337,8 @@ TEST_F(ResultsFiles, NonFiniteValueLeavesNoFilesBehind) {
 TEST_F(ResultsFiles, WriteResultsWritesExactlyTheListedFiles) {
   const ScratchDirectory scratch("all_files");
   io::write_results((scratch.path / "nested" / "out").string(), case_, mesh_, results_);
-  std::set<std::string> expected = {"summary.json", "history.csv", "contact.csv", "fields.vtu"};
+  std::set<std::string> expected = {"summary.json", "history.csv", "contact.csv", "fields.vtu",
+                                    "report.html"};
   for (const char* picture : {"strain_rate", "velocity", "pressure", "contact", "convergence"}) {
     expected.insert(std::string(picture) + ".png");
     expected.insert(std::string(picture) + ".svg");
