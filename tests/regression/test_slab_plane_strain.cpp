@@ -3,7 +3,7 @@
 // shear on both z faces) is plane strain, so it reproduces the 2D run on the same (x, y)
 // mesh — ram reaction, powers and the velocity field — for Q1 1×1 and Q2 2×2, μ = 0 and
 // 0.1 with local friction, regularised and exact, sliding and sticking ram, Newton and
-// secant.
+// secant, penalty and condensed mixed.
 #include "formflow/app/simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -47,6 +47,7 @@ struct SlabCase {
   FrictionRegularization regularization;
   RamCondition ram;
   solvers::NonlinearMethod method;
+  bool mixed = false; ///< the mixed formulation (3.7) with a condensed P1disc pressure, d > 0
 };
 
 /// A small channel {L_c = 2, H_in = 2, H_out = 1, L_e = 2} at h = 0.5: 24 cells in the
@@ -66,6 +67,10 @@ io::Case make_case(const SlabCase& slab, int dimension) {
   case_.friction.regularization = slab.regularization;
   case_.process.ram = slab.ram;
   case_.solver.method = slab.method;
+  if (slab.mixed) {
+    case_.formulation.type = assembly::FormulationType::Mixed;
+    case_.formulation.pressure = fem::PressureSpace::P1disc;
+  }
   case_.solver.tolerance = slab.regularization == FrictionRegularization::None ? exact_tolerance
                            : slab.method == solvers::NonlinearMethod::Secant   ? secant_tolerance
                                                                                : newton_tolerance;
@@ -132,6 +137,9 @@ std::vector<SlabCase> slab_cases() {
   for (fem::ElementKind element : {fem::ElementKind::Q1, fem::ElementKind::Q2})
     cases.push_back({element, 0.1, FrictionRegularization::Regularized, RamCondition::Sliding,
                      solvers::NonlinearMethod::Secant});
+  // The condensed mixed formulation (P1disc in 3D: 4 pressure dofs per hexahedron).
+  cases.push_back({fem::ElementKind::Q2, 0.1, FrictionRegularization::Regularized,
+                   RamCondition::Sliding, solvers::NonlinearMethod::Newton, true});
   return cases;
 }
 
@@ -142,7 +150,8 @@ INSTANTIATE_TEST_SUITE_P(
              (c.mu > 0 ? "Mu01" : "Mu0") +
              (c.regularization == FrictionRegularization::None ? "Exact" : "Regularized") +
              (c.ram == RamCondition::Sliding ? "Sliding" : "Sticking") +
-             (c.method == solvers::NonlinearMethod::Newton ? "Newton" : "Secant");
+             (c.method == solvers::NonlinearMethod::Newton ? "Newton" : "Secant") +
+             (c.mixed ? "MixedP1disc" : "");
     });
 
 } // namespace
