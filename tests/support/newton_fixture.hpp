@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace formflow::testing {
@@ -53,21 +54,27 @@ inline MatrixX finite_difference_jacobian(const std::function<VectorX(const Vect
 // an exact tangent from one missing any term (the ν′ term is O(α) = 25 % here).
 constexpr double fd_tolerance = 1e-7;
 
-/// A small extrusion (channel 2 × 2 → 1, Q2, h = 1) with the given settings, the
+/// The plane channel 2 × 2 → 1 of the Newton-system tests, Q2, h = 1.
+inline mesh::Mesh<2> small_channel_mesh() {
+  return mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
+}
+
+/// A small extrusion (default: small_channel_mesh()) with the given settings, the
 /// penalties and d_T raised by the caller so that the residual is smooth on the
 /// finite-difference scale, and a velocity 0.3 × random away from the Dirichlet
 /// data (prescribed values kept). `friction_multipliers` (exact friction, not
 /// owned, may be null) are passed to every Newton assembly.
-struct SmallExtrusion {
-  mesh::Mesh<2> mesh = mesh::make_channel_mesh(mesh::ChannelGeometry{2, 2, 1, 2}, 1.0, 2);
+template <int dim> struct SmallExtrusionIn {
+  mesh::Mesh<dim> mesh;
   assembly::ProblemSettings settings;
-  std::unique_ptr<assembly::FormingProblem<2>> problem;
+  std::unique_ptr<assembly::FormingProblem<dim>> problem;
   VectorX u;
-  const assembly::FrictionMultipliers<2>* friction_multipliers = nullptr;
-  std::unique_ptr<assembly::ConstraintMultipliers<2>> mixed_pressure;
+  const assembly::FrictionMultipliers<dim>* friction_multipliers = nullptr;
+  std::unique_ptr<assembly::ConstraintMultipliers<dim>> mixed_pressure;
 
-  explicit SmallExtrusion(const assembly::ProblemSettings& settings_) : settings(settings_) {
-    problem = std::make_unique<assembly::FormingProblem<2>>(mesh, settings);
+  explicit SmallExtrusionIn(const assembly::ProblemSettings& settings_, mesh::Mesh<dim> mesh_)
+      : mesh(std::move(mesh_)), settings(settings_) {
+    problem = std::make_unique<assembly::FormingProblem<dim>>(mesh, settings);
     const assembly::ScatterPlan& plan = problem->plan();
     u = problem->constraints().values + 0.3 * random_vector(problem->n_dofs(), 5);
     for (Index dof = 0; dof < plan.n_dofs(); ++dof)
@@ -78,7 +85,7 @@ struct SmallExtrusion {
     assembly::Formulation formulation;
     formulation.type = assembly::FormulationType::Mixed;
     formulation.pressure = space;
-    mixed_pressure = std::make_unique<assembly::ConstraintMultipliers<2>>(
+    mixed_pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
         mesh, settings.penalty, formulation, problem->full_rule(), problem->n_contact_points());
     problem->attach_multipliers(mixed_pressure.get());
   }
@@ -101,7 +108,7 @@ struct SmallExtrusion {
   /// T + N at u as a dense matrix over the free dofs (T alone in `symmetric_part`).
   MatrixX jacobian(const std::vector<Real>& thresholds, MatrixX* symmetric_part = nullptr) const {
     assembly::LinearSystem tangent = problem->plan().make_system();
-    assembly::UnsymmetricTangent<2> coupling;
+    assembly::UnsymmetricTangent<dim> coupling;
     VectorX force;
     problem->assemble_newton(u, thresholds, {}, force, &tangent, &coupling, friction_multipliers);
     const MatrixX t =
@@ -115,6 +122,12 @@ struct SmallExtrusion {
     }
     return j;
   }
+};
+
+/// The plane small extrusion of most Newton-system tests.
+struct SmallExtrusion : SmallExtrusionIn<2> {
+  explicit SmallExtrusion(const assembly::ProblemSettings& settings_)
+      : SmallExtrusionIn<2>(settings_, small_channel_mesh()) {}
 };
 
 } // namespace formflow::testing

@@ -85,9 +85,11 @@ int run_case(const Options& options) {
   Monitor monitor(stdout, case_.solver.tolerance, case_.solver.max_iterations);
   const bool show = !options.quiet && !options.json;
   if (show) {
-    const std::string mesh_text = case_.mesh.source == mesh::MeshSource::File
-                                      ? "mesh " + case_.mesh.file
-                                      : fmt::format("mesh h = {:.6g}", case_.mesh.size);
+    std::string mesh_text = case_.mesh.source == mesh::MeshSource::File
+                                ? "mesh " + case_.mesh.file
+                                : fmt::format("mesh h = {:.6g}", case_.mesh.size);
+    if (case_.mesh.dimension == 3) // the slab, the one solid section so far
+      mesh_text += fmt::format(" (3D slab, thickness {:.6g})", case_.mesh.solid.thickness);
     fmt::print("formflow {}: {} {} {}, volumetric rule {}x{}, mu = {:.6g}\n", FORMFLOW_VERSION,
                case_.source, fem::element_name(case_.element), mesh_text, case_.volumetric_points,
                case_.volumetric_points, case_.friction.mu);

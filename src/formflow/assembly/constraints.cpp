@@ -2,9 +2,12 @@
 // Dirichlet data from boundary labels.
 #include "formflow/assembly/constraints.hpp"
 
+#include "formflow/core/error.hpp"
 #include "formflow/fem/dof_map.hpp"
+#include "formflow/mesh/facet_axis.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace formflow::assembly {
 
@@ -31,15 +34,29 @@ DirichletConstraints make_process_constraints(const mesh::Mesh<dim>& mesh,
     constraints.prescribed[dof] = true;
     constraints.values[dof] = value;
   };
-  // Symmetry first, so that the driven end's corner node keeps u_y = 0 and u_x = u⁰.
-  for (Index node : nodes_on(mesh, mesh::BoundaryLabel::Symmetry)) prescribe(node, 1, 0.0);
+  // Symmetry (Γ6: u_N = 0) first, so that the driven end's corner nodes keep their
+  // normal component 0 and get u_x = u⁰. Each symmetry facet lies in a coordinate
+  // plane (the generators' y = 0, z = 0 and the slab's z faces; a file's are checked
+  // when it is read), so u_N = 0 fixes the component along that plane's axis; a node
+  // where two symmetry planes meet (the edge y = z = 0) gets both.
+  for (const mesh::BoundaryFacet& facet : mesh.facets) {
+    if (facet.label != mesh::BoundaryLabel::Symmetry) continue;
+    const std::optional<int> axis = mesh::facet_normal_axis(mesh, facet);
+    FF_ASSERT(axis.has_value(), "a symmetry facet lies in a coordinate plane");
+    for (int local : mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face))
+      prescribe(mesh.cells(local, facet.cell), *axis, 0.0);
+  }
 
+  // The driven end is a plane x = const: u_x = u⁰ there; a sticking ram also holds
+  // every tangential component (u_y, and u_z in 3D) at 0.
   const bool extrusion = process.type == physics::ProcessType::Extrusion;
+  const bool sticking = extrusion && process.ram == physics::RamCondition::Sticking;
   constraints.driven_label = extrusion ? mesh::BoundaryLabel::Rear : mesh::BoundaryLabel::Front;
   for (Index node : nodes_on(mesh, constraints.driven_label)) {
     prescribe(node, 0, process.speed);
     constraints.driven_dofs.push_back(fem::dof_of<dim>(node, 0));
-    if (extrusion && process.ram == physics::RamCondition::Sticking) prescribe(node, 1, 0.0);
+    if (sticking)
+      for (int component = 1; component < dim; ++component) prescribe(node, component, 0.0);
   }
   return constraints;
 }

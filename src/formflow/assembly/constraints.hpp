@@ -19,9 +19,13 @@ struct DirichletConstraints {
   mesh::BoundaryLabel driven_label = mesh::BoundaryLabel::Rear;
 };
 
-/// Extrusion: u_x = u⁰ on rear (and u_y = 0 there for a sticking ram);
-/// drawing: u_x = u⁰ on front; both: u_y = 0 on symmetry. Γ3's u_N = 0 is a
+/// Extrusion: u_x = u⁰ on rear (and the tangential components u_y, u_z = 0 there
+/// for a sticking ram); drawing: u_x = u⁰ on front; both: u_N = 0 on symmetry,
+/// i.e. the component along the normal axis of each symmetry facet's coordinate
+/// plane (u_y on y = 0; u_z on z = 0 and on the slab's z faces). Γ3's u_N = 0 is a
 /// penalty term, not a constraint (eq. 3.8).
+/// Precondition: every symmetry facet lies in a coordinate plane
+/// (mesh::facet_normal_axis; the generators make them so, io checks a file's).
 template <int dim>
 DirichletConstraints make_process_constraints(const mesh::Mesh<dim>& mesh,
                                               const physics::Process& process);

@@ -68,7 +68,8 @@ public:
   }
   /// The mollifier of the contact pressure over Γ3 (radius settings().mollifier_radius).
   const physics::NonlocalAverage& mollifier() const { return *mollifier_; }
-  /// Measure of the driven end (ram height, or exit half height for drawing).
+  /// Measure of the driven end (ram height, or exit half height for drawing): a
+  /// length in 2D (per unit depth; per radian ∫ r dr in axisymmetry), an area in 3D.
   Real driven_height() const { return driven_height_; }
 
   /// Maps `values` to a cell or face and, in axisymmetry, weights them by r (all

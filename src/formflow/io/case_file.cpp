@@ -4,6 +4,7 @@
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_document.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "formflow/io/case_validation_3d.hpp"
 #include "formflow/io/mesh_memory.hpp"
 #include "formflow/io/problem_shape.hpp"
 #include "formflow/io/toml_key_value.hpp"
@@ -136,6 +137,7 @@ public:
     check_order("geometry.exit_half_height", "geometry.entry_half_height");
     check_order("material.rate1", "material.rate2");
     check_die();
+    check_solid();
     if (case_.mesh.source == mesh::MeshSource::Structured) check_mesh_fits();
     check_mesh_source();
     check_flow_law();
@@ -279,6 +281,14 @@ private:
         where.file, where.line, blamed,
         fmt::format("value {}: {}", format_key_value(find_case_key(blamed)->get(case_)), message),
         hint);
+  }
+
+  /// What geometry.dimension = 3 cannot run yet, and solid-channel keys set in vain
+  /// (io/case_validation_3d.hpp).
+  void check_solid() const {
+    const auto refusal = solid_case_problem(
+        case_, [this](const std::string& name) { return origin(name).order > 0; });
+    if (refusal) blame(refusal->keys, refusal->message, refusal->hint);
   }
 
   /// mesh.file is needed by, and only by, mesh.source = "file"; so is mesh.boundaries.

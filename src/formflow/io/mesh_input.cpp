@@ -6,7 +6,9 @@
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
+#include "formflow/mesh/extruded_mesh.hpp"
 #if FORMFLOW_WITH_GMSH
+#include "formflow/mesh/facet_axis.hpp"
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_mesh.hpp"
 #endif
@@ -90,6 +92,28 @@ mesh::Mesh<2> read_mesh_file(const Case& case_, const mesh::MeshSpec& spec) {
   }
 }
 
+/// u_N = 0 on a symmetry facet is imposed on the component along its normal axis
+/// (assembly/constraints.hpp): a tilted or curved symmetry line cannot be.
+void check_symmetry_planes(const Case& case_, const mesh::MeshSpec& spec,
+                           const mesh::Mesh<2>& mesh) {
+  for (const mesh::BoundaryFacet& facet : mesh.facets) {
+    if (facet.label != mesh::BoundaryLabel::Symmetry || mesh::facet_normal_axis(mesh, facet))
+      continue;
+    Point<2> centre = Point<2>::Zero();
+    const std::vector<int> nodes =
+        mesh::face_local_nodes<2>(mesh.nodes_per_side(), facet.local_face);
+    for (int local : nodes)
+      centre += mesh.nodes.col(mesh.cells(local, facet.cell)) / static_cast<Real>(nodes.size());
+    const Case::KeyLocation where = location_of(case_, "mesh.boundaries");
+    throw InputError(where.file, where.line, "mesh.boundaries",
+                     fmt::format("{}: a \"symmetry\" facet of cell {} (centre ({:.6g}, {:.6g})) is "
+                                 "not on a line x = const or y = const",
+                                 spec.file, facet.cell, centre.x(), centre.y()),
+                     "a symmetry line must be straight and parallel to an axis (the symmetry "
+                     "condition fixes the velocity component along its normal)");
+  }
+}
+
 /// The part that carries the process speed must exist, or nothing drives the flow.
 void check_driven_part(const Case& case_, const mesh::MeshSpec& spec, const mesh::Mesh<2>& mesh) {
   const bool extrusion = case_.process.type == physics::ProcessType::Extrusion;
@@ -115,7 +139,13 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
   if (spec.source == mesh::MeshSource::Structured) {
     mesh::Mesh<2> mesh = mesh::make_die_channel_mesh(spec.geometry, spec.size, order);
     if (drawing) mesh::free_container_wall(mesh);
-    return mesh;
+    if (spec.dimension == 2) return mesh;
+    // The slab (the only solid section so far, io/case_validation_3d.cpp): both z
+    // faces are symmetry planes, u_z = 0 and no shear, so the plane-strain field is
+    // a solution of the solid problem.
+    return mesh::extrude_mesh(mesh, spec.solid.thickness,
+                              mesh::extrusion_layers(spec.solid.thickness, spec.size),
+                              mesh::BoundaryLabel::Symmetry);
   }
 #if FORMFLOW_WITH_GMSH
   if (spec.source == mesh::MeshSource::Gmsh) {
@@ -126,6 +156,7 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
   // A file's parts are the user's map: drawing maps the wall before the die to free_entry.
   mesh::Mesh<2> mesh = read_mesh_file(case_, spec);
   check_jacobians(case_, spec, mesh);
+  check_symmetry_planes(case_, spec, mesh);
   check_driven_part(case_, spec, mesh);
   return mesh;
 #else

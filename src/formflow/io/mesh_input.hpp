@@ -15,8 +15,10 @@ namespace formflow::io {
 /// the element, the process (drawing frees the container wall) and the key
 /// locations. Problems with mesh.file (missing, unreadable, wrong elements,
 /// physical groups) are InputErrors naming the case file and line of the key
-/// at fault. Every source is two-dimensional today; the mesh says its
-/// dimension, and the run dispatches on it (app/simulation.cpp).
+/// at fault. Gmsh and files give quadrilaterals; the structured source gives
+/// hexahedra for geometry.dimension = 3 (the slab: the plane channel extruded,
+/// mesh/extruded_mesh.hpp). The mesh says its dimension, and the run
+/// dispatches on it (app/simulation.cpp).
 mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec);
 
 /// load_mesh(case_, case_.mesh).

@@ -4,6 +4,7 @@
 
 #include "formflow/fem/lagrange.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
+#include "formflow/mesh/extruded_mesh.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
 
 #include <fmt/format.h>
@@ -84,6 +85,11 @@ std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real s
   else
     cells = mesh::die_channel_cell_count(case_.mesh.geometry, size);
   const int order = fem::element_order(case_.element);
+  if (case_.mesh.dimension == 3) { // the slab: the plane channel's cells in layers
+    cells *= mesh::extrusion_layers(case_.mesh.solid.thickness, size);
+    return MeshMemoryEstimate{cells, 3.0 * order * order * order * cells,
+                              run_bytes_per_dof * 3.0 * order * order * order * cells};
+  }
   const Real dofs = 2.0 * order * order * cells;
   return MeshMemoryEstimate{cells, dofs, run_bytes_per_dof * dofs};
 }
@@ -116,8 +122,10 @@ Real machine_memory_bytes() {
 std::optional<KeyProblem> mesh_memory_problem(const Case& case_, Real memory_bytes) {
   const auto estimate = estimate_mesh_memory(case_, case_.mesh.size);
   if (!estimate || estimate->bytes <= memory_bytes) return std::nullopt;
-  // Cells grow as 1/size²: the smallest size whose estimate fits, then a valid one above it.
-  const Real smallest = case_.mesh.size * std::sqrt(estimate->bytes / memory_bytes);
+  // Cells grow as 1/size^dim (the slab's layers too): the smallest size whose estimate
+  // fits, then a valid one above it.
+  const Real smallest =
+      case_.mesh.size * std::pow(estimate->bytes / memory_bytes, 1.0 / case_.mesh.dimension);
   const std::string size = valid_size_text(case_, smallest, memory_bytes);
   return KeyProblem{
       fmt::format("value {} makes about {:.3g} cells ({:.3g} velocity dofs), which need at least "

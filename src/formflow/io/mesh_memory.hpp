@@ -26,7 +26,7 @@ inline constexpr Real fallback_memory_bytes = 64.0 * 1024 * 1024 * 1024;
 /// The mesh a case asks for, counted before it is built.
 struct MeshMemoryEstimate {
   Real cells = 0.0; ///< exact for the structured grid; Gmsh's mesh has about as many
-  Real dofs = 0.0;  ///< velocity dofs, 2·order²·cells (interior nodes; a slight undercount)
+  Real dofs = 0.0;  ///< velocity dofs, dim·order^dim·cells (interior nodes; a slight undercount)
   Real bytes = 0.0; ///< run_bytes_per_dof · dofs
 };
 

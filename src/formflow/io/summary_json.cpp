@@ -89,6 +89,7 @@ json mesh_json(const Case& case_, const post::Results& results) {
   json out = {{"source", manufactured
                              ? "box"
                              : std::get<std::string>(find_case_key("mesh.source")->get(case_))},
+              {"dimension", results.dimension},
               {"elements", results.n_cells},
               {"nodes", results.n_nodes},
               {"dofs", results.n_dofs},

@@ -5,6 +5,7 @@
 #include "formflow/mesh/box_mesh.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/mesh_source.hpp"
+#include "formflow/mesh/solid_channel.hpp"
 
 #include <map>
 #include <string>
@@ -22,7 +23,11 @@ struct MeshSpec {
   /// cell side (1/size cells per direction); unused for a file.
   Real size = 1.0;
   ChannelGeometry geometry; ///< geometry.*: the die channel (structured and gmsh)
-  std::string file; ///< mesh.file: .msh path as written (relative: to the case file's directory)
+  /// geometry.dimension: 2 (quadrilaterals of the plane channel) or 3 (hexahedra of
+  /// the solid channel `solid`).
+  int dimension = 2;
+  SolidChannel solid; ///< geometry.section, .thickness, .*_half_width: used when dimension = 3
+  std::string file;   ///< mesh.file: .msh path as written (relative: to the case file's directory)
   /// mesh.boundaries: physical group name in `file` → boundary part name
   /// (mesh::label_name); empty: the physical names are the part names themselves.
   std::map<std::string, std::string> boundaries;

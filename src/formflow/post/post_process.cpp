@@ -18,6 +18,7 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
   const auto contact = problem.contact_state(u, multipliers);
 
   results.n_cells = problem.discretisation().mesh().n_cells();
+  results.dimension = dim;
   results.n_nodes = problem.discretisation().mesh().n_nodes();
   results.n_dofs = problem.discretisation().n_dofs();
   const mesh::CellDiameterRange diameters =

@@ -12,9 +12,10 @@
 
 namespace formflow::post {
 
-/// Process load measured in several honest ways (SPEC §4), all per unit depth of
-/// the half model and divided by the height the speed is imposed on (ram height
-/// for extrusion, exit half height for drawing).
+/// Process load measured in several honest ways (SPEC §4), all divided by the
+/// measure of the end the speed is imposed on (ram, or exit for drawing): per unit
+/// depth of the half model over its height in 2D (per radian over ∫ r dr in
+/// axisymmetry), over the end's area of the modelled part in 3D.
 struct Pressures {
   Real ram_reaction = 0.0;  ///< reaction force on the driven end / its height
   Real power_balance = 0.0; ///< (plastic dissipation + friction power) / (u⁰·height)
@@ -23,7 +24,8 @@ struct Pressures {
   Real mean_hydrostatic_near_ram = 0.0;
 };
 
-/// Powers (per unit depth of the half model) of each discrete term at the final velocity:
+/// Powers (per unit depth of the half model in 2D, of the whole model in 3D) of each
+/// discrete term at the final velocity:
 /// the sum over the weak-form terms (assembly/terms/term.hpp).
 using PowerTerms = assembly::PowerTerms;
 
@@ -44,7 +46,7 @@ struct ContactSample {
 /// Stick and slip zones of one contact part, measured with the Γ3 quadrature weights
 /// (each point stands for its share JxW of the boundary).
 struct ContactZones {
-  Real length = 0.0;       ///< measure of the part
+  Real length = 0.0;       ///< measure of the part: a length in 2D, an area in 3D
   Real stick_length = 0.0; ///< where ContactPoint::sticking
   Real slip_length() const { return length - stick_length; }
 };
@@ -80,6 +82,7 @@ struct Results {
   std::vector<int> coarse_iterations;
   std::vector<Real> coarse_mesh_sizes;
 
+  int dimension = 2; ///< of the mesh: 2 (quadrilaterals) or 3 (hexahedra)
   Index n_cells = 0, n_nodes = 0, n_dofs = 0;
   /// Smallest and largest cell diameter (mesh/cell_diameter.hpp): the mesh's h,
   /// also when it was read from a file and no mesh.size made it.

@@ -5,10 +5,12 @@
 
 #include "formflow/fem/dof_map.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/extruded_mesh.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -92,6 +94,52 @@ TEST_P(ProcessConstraints, PrescribeExactlyTheDrivenEndAndTheSymmetryPlane) {
 
 INSTANTIATE_TEST_SUITE_P(
     Processes, ProcessConstraints,
+    ::testing::Combine(::testing::Values(1, 2),
+                       ::testing::Values(ProcessType::Extrusion, ProcessType::Drawing),
+                       ::testing::Values(RamCondition::Sliding, RamCondition::Sticking)),
+    [](const auto& info) {
+      return std::string(std::get<0>(info.param) == 1 ? "Q1" : "Q2") +
+             (std::get<1>(info.param) == ProcessType::Extrusion ? "Extrusion" : "Drawing") +
+             (std::get<2>(info.param) == RamCondition::Sliding ? "Sliding" : "Sticking");
+    });
+
+/// The solid slab: the channel above extruded over z ∈ [0, 1] in two layers, both z
+/// faces symmetry planes. u_N = 0 there is u_z = 0, on y = 0 it is u_y = 0 (both on the
+/// edges y = 0, z ∈ {0, 1}); a sticking ram holds u_y and u_z.
+class SlabConstraints
+    : public ::testing::TestWithParam<std::tuple<int, ProcessType, RamCondition>> {};
+
+TEST_P(SlabConstraints, FixTheNormalComponentOnEachSymmetryPlaneAndTheDrivenEnd) {
+  const auto [order, type, ram] = GetParam();
+  const mesh::Mesh<3> slab = mesh::extrude_mesh(mesh::make_channel_mesh(geometry, 1.0, order), 1.0,
+                                                2, mesh::BoundaryLabel::Symmetry);
+  const assembly::DirichletConstraints c =
+      assembly::make_process_constraints<3>(slab, process(type, ram));
+  ASSERT_EQ(static_cast<Index>(c.prescribed.size()), 3 * slab.n_nodes());
+  Index n_driven = 0;
+  for (Index node = 0; node < slab.n_nodes(); ++node) {
+    const Point<3> p = slab.nodes.col(node);
+    const Expected plane = expected_at(Point<2>(p.x(), p.y()), type, ram);
+    const bool sticking =
+        type == ProcessType::Extrusion && ram == RamCondition::Sticking && at(p.x(), 0.0);
+    const bool z_prescribed = at(p.z(), 0.0) || at(p.z(), 1.0) || sticking;
+    const std::array<bool, 3> expected = {plane.x_prescribed, plane.y_prescribed, z_prescribed};
+    for (int axis = 0; axis < 3; ++axis) {
+      const Index dof = fem::dof_of<3>(node, axis);
+      EXPECT_EQ(c.prescribed[dof], expected[axis]) << "u_" << axis << " at " << p.transpose();
+      if (expected[axis]) EXPECT_EQ(c.values[dof], axis == 0 ? plane.x_value : 0.0);
+    }
+    n_driven += plane.x_prescribed;
+  }
+  EXPECT_EQ(static_cast<Index>(c.driven_dofs.size()), n_driven);
+  for (Index dof : c.driven_dofs) EXPECT_EQ(dof % 3, 0) << "driven dofs are x components";
+  // Driven end nodes: its plane lattice line times 2·order + 1 levels in z.
+  EXPECT_EQ(n_driven,
+            (type == ProcessType::Extrusion ? 4 * order + 1 : 2 * order + 1) * (2 * order + 1));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Processes, SlabConstraints,
     ::testing::Combine(::testing::Values(1, 2),
                        ::testing::Values(ProcessType::Extrusion, ProcessType::Drawing),
                        ::testing::Values(RamCondition::Sliding, RamCondition::Sticking)),

@@ -317,6 +317,13 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"geometry.die_profile", "[[0.0, 8.0], [2.0, 6.0], [5.0, 4.0]]"},
       {"geometry.land_length", "1.0"},
       {"geometry.symmetry", "\"axisymmetric\""},
+      // The solid-channel keys at their defaults: a plane (axisymmetric) case refuses
+      // other values (their round trip in 3D: test_solid_keys.cpp).
+      {"geometry.dimension", "2"},
+      {"geometry.section", "\"slab\""},
+      {"geometry.thickness", "1.0"},
+      {"geometry.entry_half_width", "10.0"},
+      {"geometry.exit_half_width", "5.0"},
       {"mesh.element", "\"Q1\""},
       {"mesh.size", "0.5"},
       {"mesh.source", "\"file\""},

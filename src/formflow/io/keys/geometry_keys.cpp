@@ -38,6 +38,21 @@ KeySpec die_profile_key() {
       .doc("polyline die face as [x, y] points, x measured from the die entry x = L_c");
 }
 
+KeySpec section_key() {
+  using mesh::ChannelSection;
+  return enum_key(
+             "geometry.section", "slab",
+             {{"slab", ChannelSection::Slab},
+              {"rectangle", ChannelSection::Rectangle},
+              {"round", ChannelSection::Round}},
+             [](auto& c) -> auto& { return c.mesh.solid.section; })
+      .constraint("only with geometry.dimension = 3; \"rectangle\" and \"round\" are not "
+                  "implemented yet")
+      .doc("solid channel (quarter model, symmetry planes y = 0 and z = 0): slab (the plane "
+           "channel extruded over geometry.thickness, u_z = 0 on both z faces: plane strain in "
+           "3D), rectangle (half widths in z), round (a round billet, radius = the half heights)");
+}
+
 } // namespace
 
 std::vector<CaseKey> geometry_keys() {
@@ -100,6 +115,40 @@ std::vector<CaseKey> geometry_keys() {
           .unit("length")
           .doc("die land: a straight contact part y = H_out after the die face (Γ3; it counts "
                "as \"die\" for friction.on)"),
+      integer_key(
+          "geometry.dimension", 2, [](auto& c) -> auto& { return c.mesh.dimension; })
+          .within(2, 3)
+          .constraint("3: mesh.source = \"structured\", geometry.symmetry = \"plane\", no "
+                      "verification.solution")
+          .doc("2: the plane (or axisymmetric) channel in quadrilaterals; 3: the solid channel "
+               "of geometry.section in hexahedra (docs/3d.md)"),
+      section_key(),
+      real_key(
+          "geometry.thickness", 1.0, [](auto& c) -> auto& { return c.mesh.solid.thickness; })
+          .within(1e-6, 1e6)
+          .why(length_range)
+          .constraint("only with geometry.dimension = 3 and geometry.section = \"slab\"")
+          .unit("length")
+          .doc("slab: extent in z, meshed in round(thickness/mesh.size) layers (at least one); "
+               "pressures are forces over the ram area, so they do not depend on it"),
+      real_key(
+          "geometry.entry_half_width", 10.0,
+          [](auto& c) -> auto& { return c.mesh.solid.entry_half_width; })
+          .within(1e-6, 1e6)
+          .why(length_range)
+          .constraint("> geometry.exit_half_width; only with geometry.dimension = 3 and "
+                      "geometry.section = \"rectangle\"")
+          .unit("length")
+          .doc("rectangle: half width (in z) of the billet in the container"),
+      real_key(
+          "geometry.exit_half_width", 5.0,
+          [](auto& c) -> auto& { return c.mesh.solid.exit_half_width; })
+          .within(1e-6, 1e6)
+          .why(length_range)
+          .constraint("< geometry.entry_half_width; only with geometry.dimension = 3 and "
+                      "geometry.section = \"rectangle\"")
+          .unit("length")
+          .doc("rectangle: half width (in z) of the product after the die"),
       enum_key(
           "geometry.symmetry", "plane",
           {{"plane", physics::Symmetry::Plane}, {"axisymmetric", physics::Symmetry::Axisymmetric}},

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// Refusals of three-dimensional cases that cannot run yet (issue 15, first slice).
+#include "formflow/io/case_validation_3d.hpp"
+
+#include "formflow/io/case_keys.hpp"
+
+#include <array>
+
+namespace formflow::io {
+
+namespace {
+
+using mesh::ChannelSection;
+
+/// A solid-channel key set by the user to a value other than its default in a case
+/// that does not read it (its default is harmless: the reference's block of every
+/// key at its default must load, docs/case-reference.md).
+std::optional<KeyRefusal> unused_solid_key(const Case& case_,
+                                           const std::function<bool(const std::string&)>& is_set) {
+  const auto changed = [&](const std::string& name) {
+    const CaseKey* key = find_case_key(name);
+    return is_set(name) && key->get(case_) != key->default_value;
+  };
+  const bool solid = case_.mesh.dimension == 3;
+  const ChannelSection section = case_.mesh.solid.section;
+  if (!solid && changed("geometry.section"))
+    return KeyRefusal{{"geometry.section"},
+                      "a section is the cross-section of a solid channel, and "
+                      "geometry.dimension = 2 makes the plane one",
+                      "set geometry.dimension = 3 for a solid channel, or leave geometry.section "
+                      "out"};
+  const bool slab = solid && section == ChannelSection::Slab;
+  const bool rectangle = solid && section == ChannelSection::Rectangle;
+  struct Use {
+    const char* key;
+    bool used;
+    const char* by;
+  };
+  const std::array<Use, 3> uses = {{{"geometry.thickness", slab, "\"slab\""},
+                                    {"geometry.entry_half_width", rectangle, "\"rectangle\""},
+                                    {"geometry.exit_half_width", rectangle, "\"rectangle\""}}};
+  for (const Use& use : uses)
+    if (!use.used && changed(use.key))
+      return KeyRefusal{
+          {use.key},
+          std::string("is read only by geometry.dimension = 3 with geometry.section = ") + use.by,
+          std::string("set geometry.dimension = 3 and geometry.section = ") + use.by +
+              ", or leave " + use.key + " out"};
+  return std::nullopt;
+}
+
+/// What a solid case asks that the solid run does not do yet.
+std::optional<KeyRefusal> unsupported_in_3d(const Case& case_) {
+  if (case_.mesh.dimension != 3) return std::nullopt;
+  if (case_.mesh.solid.section != ChannelSection::Slab)
+    return KeyRefusal{{"geometry.section"},
+                      "this section is not implemented yet (issue 15: the slab runs; rectangle "
+                      "and round come next)",
+                      "use geometry.section = \"slab\""};
+  if (case_.symmetry == physics::Symmetry::Axisymmetric)
+    return KeyRefusal{{"geometry.symmetry", "geometry.dimension"},
+                      "the axisymmetric model is two-dimensional (y = r in the meridian plane)",
+                      "use geometry.dimension = 2 with geometry.symmetry = \"axisymmetric\", or "
+                      "geometry.symmetry = \"plane\" in 3D"};
+  if (case_.mesh.source != mesh::MeshSource::Structured)
+    return KeyRefusal{{"mesh.source", "geometry.dimension"},
+                      "three-dimensional meshes come from the structured generator only so far "
+                      "(Gmsh solids and hexahedral .msh files are not implemented yet)",
+                      "use mesh.source = \"structured\" with geometry.dimension = 3"};
+  if (case_.manufactured != physics::ManufacturedSolution::None)
+    return KeyRefusal{{"verification.solution", "geometry.dimension"},
+                      "the manufactured solutions live on the unit square: two-dimensional only "
+                      "so far",
+                      "use geometry.dimension = 2 with verification.solution"};
+  return std::nullopt;
+}
+
+} // namespace
+
+std::optional<KeyRefusal>
+solid_case_problem(const Case& case_, const std::function<bool(const std::string&)>& is_set) {
+  if (auto refusal = unused_solid_key(case_, is_set)) return refusal;
+  return unsupported_in_3d(case_);
+}
+
+} // namespace formflow::io
