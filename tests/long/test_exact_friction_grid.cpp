@@ -29,8 +29,11 @@ TEST_P(ExactFrictionFullGrid, ConvergesInBoundedIterations) {
   c.element = q1 ? fem::ElementKind::Q1 : fem::ElementKind::Q2;
   c.volumetric_points = q1 ? 1 : 2;
   c.symmetry = symmetry;
-  // The regularised comparison at δ = 1e-4 only: at 1e-8 the question is convergence.
-  check_grid_case(c, tolerance, tolerance > 1e-6);
+  // At δ = 1e-4: within 25 iterations, the load against the regularised law. At 1e-8
+  // the question is convergence without cycling (measured up to 44 iterations on Q2
+  // plane h = 0.25, μ = 0.5: the multiplier updates make the tail linear there).
+  const bool paper_tolerance = tolerance > 1e-6;
+  check_grid_case(c, tolerance, paper_tolerance, paper_tolerance);
 }
 
 INSTANTIATE_TEST_SUITE_P(
