@@ -27,8 +27,8 @@ namespace {
 /// Iterations without a new minimum of max(velocity change, friction residual) that
 /// make exact friction's Newton loop a stall. While Newton converges its merit falls in
 /// nearly every iteration; 8 leaves room for a few active-set changes. Not tuned: every
-/// case of issue 16's grid run converged in at most 23 iterations at δ = 1e-4 and 44 at
-/// 1e-8, none stalled (docs/friction.md).
+/// case of issue 16's grid converged in at most 23 iterations at δ = 1e-4; at 1e-8 up to
+/// 44, and one case stalled (docs/friction.md "The grid of issue 16").
 constexpr int stall_window = 8;
 
 /// ‖a − b‖ and ‖a‖ in L²(Γ3), with the quadrature weights of the contact points.
