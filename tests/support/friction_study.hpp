@@ -25,6 +25,7 @@ struct FrictionSolve {
   int iterations = 0;
   int augmentations = 0;
   Real multiplier_change = 0.0;
+  Real friction_residual = 0.0; ///< Coulomb residual of the last update (Newton's stop rule)
   post::Results results;
 
   bool converged() const { return stop_reason == solvers::StopReason::Converged; }
@@ -57,6 +58,7 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
     solve.multipliers = outcome.multipliers;
     solve.augmentations = outcome.augmentations;
     solve.multiplier_change = outcome.multiplier_change;
+    solve.friction_residual = outcome.friction_residual;
   } else if (solve.problem->has_exact_friction()) {
     auto outcome = solvers::augmented_lagrangian<2>(nonlinear, *solver, case_.solver, {}, times);
     solve.velocity = outcome.solve.velocity;
@@ -65,6 +67,7 @@ inline FrictionSolve solve_friction_case(const io::Case& case_) {
     solve.multipliers = outcome.multipliers;
     solve.augmentations = outcome.augmentations;
     solve.multiplier_change = outcome.multiplier_change;
+    solve.friction_residual = outcome.friction_residual;
   } else if (newton) {
     auto outcome = solvers::newton_iteration(nonlinear, *solver, case_.solver, {}, times);
     solve.velocity = outcome.velocity;

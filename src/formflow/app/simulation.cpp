@@ -66,7 +66,8 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
   const auto take_augmented = [&](solvers::AugmentedOutcome<dim>&& augmented) {
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
-    results.augmentation = {augmented.augmentations, augmented.multiplier_change};
+    results.augmentation = {augmented.augmentations, augmented.multiplier_change,
+                            augmented.friction_residual};
   };
   switch (plan.loop) {
   case solvers::LoopKind::AugmentedNewton:
@@ -146,7 +147,11 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());
-  post::evaluate_results(*problem, outcome.velocity, results, &multipliers);
+  // Exact friction by Newton reports stick where the slip is below what δ resolves.
+  const Real stick_speed = plan.loop == solvers::LoopKind::AugmentedNewton
+                               ? case_.solver.tolerance * case_.process.speed
+                               : 0.0;
+  post::evaluate_results(*problem, outcome.velocity, results, &multipliers, stick_speed);
   if (estimate_condition)
     simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
 }

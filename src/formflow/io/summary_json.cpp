@@ -69,13 +69,19 @@ json contact_json(const Case& case_, const post::Results& results) {
   const bool exact = case_.friction.regularization == physics::FrictionRegularization::None;
   json out = json::object();
   out["regularization"] = exact ? "none" : "regularized";
-  out["stick_criterion"] = exact ? "|lambda_T + r u_T| <= tau_f (Alart-Curnier active set)"
-                                 : "|sigma_T| < 0.99 tau_f, i.e. |u_T| < 7.02 d_T";
+  const bool newton = results.method.find("around newton") != std::string::npos;
+  out["stick_criterion"] = !exact   ? "|sigma_T| < 0.99 tau_f, i.e. |u_T| < 7.02 d_T"
+                           : newton ? "|u_T| <= solver.tolerance * process.speed"
+                                    : "|lambda_T + r u_T| <= tau_f (Alart-Curnier active set)";
   out["container"] = zones_json(results.container_zones);
   out["die"] = zones_json(results.die_zones);
-  if (exact)
+  if (exact) {
     out["augmented_lagrangian"] = {{"outer_iterations", results.augmentation.outer_iterations},
                                    {"multiplier_change", results.augmentation.multiplier_change}};
+    // The Coulomb conditions' residual at the last update, at the problem's scale
+    // ‖λ_T‖/‖u_T‖ (what the Newton loop's stop rule tests against solver.tolerance).
+    out["friction_residual"] = results.augmentation.friction_residual;
+  }
   return out;
 }
 

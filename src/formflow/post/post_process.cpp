@@ -8,14 +8,22 @@ namespace formflow::post {
 
 template <int dim>
 void evaluate_results(const assembly::FormingProblem<dim>& problem, const VectorX& u,
-                      Results& results, const assembly::FrictionMultipliers<dim>* multipliers) {
+                      Results& results, const assembly::FrictionMultipliers<dim>* multipliers,
+                      Real stick_speed) {
   ScopedTimer timer(results.timing, "post");
   const Real speed = problem.settings().process.speed;
   const Real height = problem.discretisation().driven_height();
 
   assembly::LinearSystem system = problem.discretisation().plan().make_system();
   problem.assemble(&u, system, multipliers);
-  const auto contact = problem.contact_state(u, multipliers);
+  auto contact = problem.contact_state(u, multipliers);
+  // Exact friction by Newton: its stop rule resolves slips to δ u⁰, not the tractions of
+  // the near-rigid dead-metal zone, whose active set keeps changing while u is settled
+  // (docs/friction.md "Stop rule"): stick is what the velocity shows.
+  if (stick_speed > 0)
+    for (auto& point : contact)
+      point.sticking =
+          point.friction_threshold > 0 && point.tangential_velocity.norm() <= stick_speed;
 
   results.n_cells = problem.discretisation().mesh().n_cells();
   results.dimension = dim;
@@ -41,8 +49,8 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
 }
 
 template void evaluate_results<2>(const assembly::FormingProblem<2>&, const VectorX&, Results&,
-                                  const assembly::FrictionMultipliers<2>*);
+                                  const assembly::FrictionMultipliers<2>*, Real);
 template void evaluate_results<3>(const assembly::FormingProblem<3>&, const VectorX&, Results&,
-                                  const assembly::FrictionMultipliers<3>*);
+                                  const assembly::FrictionMultipliers<3>*, Real);
 
 } // namespace formflow::post

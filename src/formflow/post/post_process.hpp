@@ -42,9 +42,12 @@ std::vector<ContactSample> contact_profile(const assembly::FormingProblem<dim>& 
 /// Everything above plus the reaction force from one more assembly K(u): the
 /// consistent reaction K_c·(u) u, which equals the total discrete power at a
 /// fixed point of the iteration. Exact friction is evaluated with its final `multipliers`.
+/// `stick_speed` > 0: a friction point sticks where |u_T| ≤ stick_speed (exact friction
+/// by Newton: the slip its stop rule resolves, δ u⁰) instead of by the active set.
 template <int dim>
 void evaluate_results(const assembly::FormingProblem<dim>& problem, const VectorX& u,
                       Results& results,
-                      const assembly::FrictionMultipliers<dim>* multipliers = nullptr);
+                      const assembly::FrictionMultipliers<dim>* multipliers = nullptr,
+                      Real stick_speed = 0.0);
 
 } // namespace formflow::post

@@ -55,6 +55,9 @@ struct ContactZones {
 struct Augmentation {
   int outer_iterations = 0;     ///< multiplier updates
   Real multiplier_change = 0.0; ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
+  /// Last residual of the Coulomb conditions, ‖λ − proj(λ + r̄ u_T)‖/‖λ‖ in L²(Γ3) at
+  /// the problem's scale r̄ = ‖λ‖/‖u_T‖ (solvers/friction_residual.hpp).
+  Real friction_residual = 0.0;
 };
 
 /// Fields on the mesh nodes (averaged from integration points) and cell means.

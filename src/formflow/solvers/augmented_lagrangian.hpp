@@ -13,9 +13,12 @@
 
 namespace formflow::solvers {
 
-/// When the wrapper updates the multipliers. Both stop as the loop of Uzawa and
-/// Alart–Curnier does: an iteration changed u by < δ with λ̂ frozen AND the update
-/// it produced changed λ̂ by < δ relative in L²(Γ3).
+/// When the wrapper updates the multipliers. Both stop when an iteration changed u by
+/// < δ with λ̂ frozen AND the update it produced met δ: EveryIteration (Newton) asks
+/// the Coulomb residual of solvers/friction_residual.hpp to be < δ and stops as
+/// Stalled when neither it nor the velocity change reached a new minimum for a
+/// window of iterations; ConvergedIterate (secant) asks the relative multiplier change
+/// ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3) to be < δ, the Uzawa rule.
 enum class AugmentationSchedule {
   /// After every iteration of the inner driver (Newton: an inexact augmented
   /// Lagrangian; one driver run, duals and analysis carried on).
@@ -36,6 +39,13 @@ template <int dim> struct AugmentedOutcome {
   assembly::FrictionMultipliers<dim> multipliers;
   int augmentations = 0;        ///< outer (multiplier) updates
   Real multiplier_change = 0.0; ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
+  Real friction_residual = 0.0; ///< last Coulomb residual (solvers/friction_residual.hpp)
+};
+
+/// What one multiplier update measured.
+struct MultiplierUpdate {
+  Real change = 0.0; ///< ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3) (0 without friction)
+  Real residual = 0.0; ///< friction_residual of (uᵏ, λᵏ⁺¹)
 };
 
 /// Uzawa iteration of the augmented Lagrangian for λ_T (Alart–Curnier form), one
@@ -60,10 +70,11 @@ AugmentedOutcome<dim> augmented_lagrangian(FormingNonlinearProblem<dim>& problem
                                            PhaseTimes& times);
 
 /// One Uzawa update λᵏ⁺¹ = proj_{|λ| ≤ τ_f(u)}(λᵏ + r u_T) at `velocity`, in place;
-/// returns ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3) (0 where there is no friction at all).
+/// returns ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3) (0 where there is no friction at all) and the
+/// Coulomb residual of (u, λᵏ⁺¹).
 template <int dim>
-Real update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
-                                 const VectorX& velocity,
-                                 assembly::FrictionMultipliers<dim>& multipliers);
+MultiplierUpdate update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
+                                             const VectorX& velocity,
+                                             assembly::FrictionMultipliers<dim>& multipliers);
 
 } // namespace formflow::solvers

@@ -11,9 +11,10 @@ namespace formflow::solvers {
 /// the Alart–Curnier law λ_T = proj_{|λ| ≤ τ_f}(λ̂ + r u_T) with λ̂ frozen inside
 /// each Newton iteration (its semismooth tangent, assembly/newton_system.cpp), and
 /// the Uzawa update λ̂ ← proj(λ̂ + r u_T) after every Newton iteration (an inexact
-/// augmented Lagrangian: no inner solve to δ per update). Stops, as the secant AL
-/// loop does, when a Newton iteration changed the velocity by less than δ relative
-/// AND the multipliers it produced changed by less than δ relative in L²(Γ3). One Newton loop (one
+/// augmented Lagrangian: no inner solve to δ per update). Stops when a Newton
+/// iteration changed the velocity by less than δ relative AND the Coulomb residual of
+/// the velocity and the updated multipliers is below δ (solvers/friction_residual.hpp);
+/// Stalled when neither improves for a window of iterations. One Newton loop (one
 /// analysis, duals carried on) for the whole run; `initial` as in newton_iteration.
 /// AugmentedOutcome::augmentations counts the updates.
 /// augment_friction (EveryIteration) around newton_iteration.

@@ -35,6 +35,8 @@ struct IterationState {
   /// The driver's own stop rule says converged (change < δ, finite, inner
   /// constraints settled): the hook's own condition is all that is missing.
   bool converged = false;
+  /// The relative change the driver's own stop rule tested against δ.
+  Real relative_change = 0.0;
 };
 
 /// The hook's verdict: whether its state (e.g. multipliers) has settled, or a reason to stop.

@@ -75,8 +75,8 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
     if (on_iteration) on_iteration(record);
     const auto own = stop_after_iteration(change, change, record.pressure, control.tolerance,
                                           step.constraints_converged);
-    const AfterIteration after =
-        problem.after_iteration({iteration, &outcome.velocity, own == StopReason::Converged});
+    const AfterIteration after = problem.after_iteration(
+        {iteration, &outcome.velocity, own == StopReason::Converged, change});
     if (const auto stop = stop_with_hook(own, after)) {
       outcome.stop_reason = *stop;
       return outcome;

@@ -9,7 +9,9 @@
 
 namespace formflow::solvers {
 
-enum class StopReason { Converged, MaxIterations, Diverged, NonFinite, SolverFailed };
+/// Stalled: the loop stopped making progress (no new minimum of its merit over a
+/// window of iterations, solvers/stall_watch.hpp) before meeting the tolerance.
+enum class StopReason { Converged, MaxIterations, Diverged, NonFinite, SolverFailed, Stalled };
 
 inline std::string_view stop_reason_name(StopReason reason) {
   switch (reason) {
@@ -18,6 +20,7 @@ inline std::string_view stop_reason_name(StopReason reason) {
   case StopReason::Diverged: return "diverged";
   case StopReason::NonFinite: return "non_finite";
   case StopReason::SolverFailed: return "solver_failed";
+  case StopReason::Stalled: return "stalled";
   }
   return "unknown";
 }

@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Iterations of exact Coulomb friction by Newton over issue 16's grid.
+
+Runs `formflow run` on the paper's channel (friction on container and die, local
+threshold) for {sliding, sticking ram} x mesh.size x mu x {Q2 2x2, Q1 1x1} x
+{plane, axisymmetric} with friction.regularization = "none", and with --regularised
+also with the paper's d_T = 1e-6, and prints one Markdown row per case: Newton
+iterations (coarse levels + fine), stop reason, ram reaction (and the regularised
+one), the Coulomb residual, the stick lengths and the wall time of each run.
+Usage: python3 bench/exact_friction_grid.py [--binary build-test/formflow]
+           [--out /tmp/ff-grid] [--sizes 1 0.5] [--mus 0.1 0.2 0.3] [--elements Q2 Q1]
+           [--symmetries plane axisymmetric] [--tolerance 1e-4] [--regularised]
+"""
+import argparse
+import json
+import subprocess
+import time
+from pathlib import Path
+
+
+def run(binary, out, name, settings):
+    directory = Path(out) / name
+    command = [binary, "run", "-q", "-o", str(directory)]
+    for key, value in settings.items():
+        command += ["--set", f"{key}={value}"]
+    start = time.monotonic()
+    subprocess.run(command, check=False)  # exit 3 is reported in the table
+    seconds = time.monotonic() - start
+    return json.loads((directory / "summary.json").read_text()), seconds
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--binary", default="build-test/formflow")
+    parser.add_argument("--out", default="/tmp/ff-grid")
+    parser.add_argument("--sizes", nargs="+", default=["1", "0.5", "0.25"])
+    parser.add_argument("--mus", nargs="+", default=["0.05", "0.1", "0.2", "0.3", "0.5"])
+    parser.add_argument("--elements", nargs="+", default=["Q2", "Q1"])
+    parser.add_argument("--symmetries", nargs="+", default=["plane", "axisymmetric"])
+    parser.add_argument("--rams", nargs="+", default=["sliding", "sticking"])
+    parser.add_argument("--tolerance", default="1e-4")
+    parser.add_argument("--regularised", action="store_true")
+    args = parser.parse_args()
+    print("| ram | h | μ | element | symmetry | iterations (coarse + fine) | stop | reaction |"
+          " regularised reaction | Coulomb residual | stick container | stick die | s exact |"
+          " s regularised |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for symmetry in args.symmetries:
+        for element in args.elements:
+            for ram in args.rams:
+                for size in args.sizes:
+                    for mu in args.mus:
+                        settings = {"process.ram": f'"{ram}"', "mesh.size": size,
+                                    "friction.mu": mu, "mesh.element": f'"{element}"',
+                                    "integration.volumetric": "2" if element == "Q2" else "1",
+                                    "geometry.symmetry": f'"{symmetry}"',
+                                    "solver.tolerance": args.tolerance,
+                                    "solver.max_iterations": "200"}
+                        name = f"{symmetry}-{element}-{ram}-h{size}-mu{mu}"
+                        exact, s_exact = run(args.binary, args.out, name + "-exact",
+                                             {**settings, "friction.regularization": '"none"'})
+                        coarse = sum(exact.get("coarse_iterations", []) or [])
+                        contact = exact["contact"]
+                        regularised_reaction, s_reg = "—", "—"
+                        if args.regularised:
+                            reg, seconds = run(args.binary, args.out, name + "-reg", settings)
+                            regularised_reaction = f'{reg["pressure"]["ram_reaction"]:.6f}'
+                            s_reg = f"{seconds:.2f}"
+                        print(f'| {ram} | {size} | {mu} | {element} | {symmetry} | '
+                              f'{coarse} + {exact["iterations"]} = {coarse + exact["iterations"]} | '
+                              f'{exact["stop_reason"]} | {exact["pressure"]["ram_reaction"]:.6f} | '
+                              f'{regularised_reaction} | {contact.get("friction_residual", 0):.1e} | '
+                              f'{contact["container"]["stick_length"]:.3f} | '
+                              f'{contact["die"]["stick_length"]:.3f} | {s_exact:.2f} | {s_reg} |',
+                              flush=True)
+
+
+if __name__ == "__main__":
+    main()
