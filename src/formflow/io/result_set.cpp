@@ -134,7 +134,7 @@ void publish_result_set(const std::filesystem::path& directory,
                         const std::vector<ResultFile>& files, const std::string& commit_name,
                         std::span<const std::string> known_names,
                         const StopRequested& stop_requested) {
-  const auto commit = std::find_if(
+  [[maybe_unused]] const auto commit = std::find_if(
       files.begin(), files.end(), [&](const ResultFile& file) { return file.name == commit_name; });
   FF_ASSERT(commit != files.end(), "the commit file is part of the set");
   if (is_stop_requested(stop_requested)) throw Stopped("stopped before writing results");
