@@ -126,15 +126,20 @@ void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink
   }
 }
 
-template <int dim> CellPressure Assembler<dim>::pressure(Index cell, const VectorX& u) const {
+template <int dim> std::vector<CellPressure> Assembler<dim>::pressures(const VectorX& u) const {
   const mesh::Mesh<dim>& mesh = discretisation_.mesh();
   fem::CellValues<dim> full(mesh.order, discretisation_.full_rule());
   fem::CellValues<dim> volumetric(mesh.order, discretisation_.volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
-  discretisation_.gather(cell, &u, coordinates, velocities);
-  discretisation_.load_cell(cell, full, &volumetric);
-  const CellState<dim> state{cell, full, volumetric, coordinates, velocities, {}, {}, {}};
-  return terms_.pressure().pressure(state);
+  std::vector<CellPressure> result;
+  result.reserve(mesh.n_cells());
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    discretisation_.gather(cell, &u, coordinates, velocities);
+    discretisation_.load_cell(cell, full, &volumetric);
+    const CellState<dim> state{cell, full, volumetric, coordinates, velocities, {}, {}, {}};
+    result.push_back(terms_.pressure().pressure(state));
+  }
+  return result;
 }
 
 template class Assembler<2>;

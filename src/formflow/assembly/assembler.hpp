@@ -40,8 +40,8 @@ public:
   /// adds the terms' powers to `powers`.
   void run(const AssemblyRequest<dim>& request, AssemblySink* sink,
            PowerTerms* powers = nullptr) const;
-  /// σ_H of `cell` at the velocity `u`, from the pressure term.
-  CellPressure pressure(Index cell, const VectorX& u) const;
+  /// σ_H of every cell at the velocity `u`, from the pressure term.
+  std::vector<CellPressure> pressures(const VectorX& u) const;
 
 private:
   const Discretisation<dim>& discretisation_;

@@ -75,10 +75,10 @@ public:
 
   /// The power of every term at `u` for its Γ3 state `contact` (contact_state(u, …)).
   PowerTerms powers(const VectorX& u, const std::vector<ContactPoint<dim>>& contact) const;
-  /// σ_H of `cell` at `u`: its integral over the cell and its nodal values, from the
-  /// term that carries the pressure (the penalty's ε̇_V/d or the pressure space).
-  CellPressure cell_pressure(Index cell, const VectorX& u) const {
-    return assembler_->pressure(cell, u);
+  /// σ_H of every cell at `u`: its integral over the cell and its nodal values, from
+  /// the term that carries the pressure (the penalty's ε̇_V/d or the pressure space).
+  std::vector<CellPressure> cell_pressures(const VectorX& u) const {
+    return assembler_->pressures(u);
   }
   /// The problem's weak-form terms (terms/term_set.cpp).
   const TermSet<dim>& terms() const { return terms_; }

@@ -118,13 +118,6 @@ void ScatterPlan::scatter(Index block, const MatrixX& local_matrix,
   }
 }
 
-void ScatterPlan::scatter_load(Index block, const VectorX& local_load, LinearSystem& system) const {
-  const Index* dofs = blocks_.dofs.data() + blocks_.offsets[block];
-  FF_ASSERT(local_load.size() == blocks_.block_size(block), "local load size");
-  for (int a = 0; a < blocks_.block_size(block); ++a)
-    if (free_index_[dofs[a]] >= 0) system.rhs[free_index_[dofs[a]]] += local_load[a];
-}
-
 VectorX ScatterPlan::expand(const VectorX& free_values, const VectorX& prescribed_values) const {
   VectorX full = prescribed_values;
   for (Index dof = 0; dof < n_dofs(); ++dof)

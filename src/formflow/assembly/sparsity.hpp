@@ -51,8 +51,6 @@ public:
   /// come from `prescribed_values` (full dof vector) and move to the rhs.
   void scatter(Index block, const MatrixX& local_matrix, const VectorX& prescribed_values,
                LinearSystem& system) const;
-  /// Adds the local load vector of `block` (e.g. a body force) to the rhs rows of its free dofs.
-  void scatter_load(Index block, const VectorX& local_load, LinearSystem& system) const;
 
   Index n_dofs() const { return static_cast<Index>(free_index_.size()); }
   Index n_free() const { return n_free_; }

@@ -41,6 +41,7 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   fields.cell_equivalent_strain_rate = VectorX::Zero(mesh.n_cells());
   fields.cell_hydrostatic_stress = VectorX::Zero(mesh.n_cells());
   VectorX count = VectorX::Zero(mesh.n_nodes());
+  const std::vector<assembly::CellPressure> pressures = problem.cell_pressures(u);
   auto rate_at = [&](const fem::CellValues<dim>& values, int q) {
     return physics::equivalent_strain_rate(
         problem.discretisation().strain_rate_at(values, velocities, q));
@@ -57,7 +58,7 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
     fields.cell_equivalent_strain_rate[cell] /= area;
     // σ_H from the term that carries it (ε̇_V/d, or the pressure space): its cell mean
     // and its values at the nodes.
-    const assembly::CellPressure pressure = problem.cell_pressure(cell, u);
+    const assembly::CellPressure& pressure = pressures[cell];
     fields.cell_hydrostatic_stress[cell] = pressure.integral / area;
     const VectorX& nodal_stress = pressure.at_nodes;
     for (int a = 0; a < n; ++a) {

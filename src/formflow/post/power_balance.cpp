@@ -18,13 +18,14 @@ Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, con
   fem::CellValues<dim> values(mesh.order, problem.discretisation().volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<bool> counted(mesh.n_cells(), false);
+  const std::vector<assembly::CellPressure> pressures = problem.cell_pressures(u);
   Real integral = 0.0, area = 0.0;
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
     if (facet.label != label || counted[facet.cell]) continue;
     counted[facet.cell] = true;
-    problem.discretisation().gather(facet.cell, &u, coordinates, velocities);
+    problem.discretisation().gather(facet.cell, nullptr, coordinates, velocities);
     problem.discretisation().reinit(values, coordinates);
-    integral -= problem.cell_pressure(facet.cell, u).integral; // −σ_H dx
+    integral -= pressures[facet.cell].integral; // −σ_H dx
     for (int q = 0; q < values.n_points(); ++q) area += values.JxW(q);
   }
   return area > 0 ? integral / area : 0.0;

@@ -81,15 +81,13 @@ void add_volumetric_force(const fem::CellValues<dim>& values, Real d,
 template <int dim>
 void add_contact_force(const fem::FacetValues<dim>& values, Real d_n,
                        const typename fem::CellValues<dim>::Gradients& velocities,
-                       std::span<const Real> friction_weight, CellVector& local_force) {
+                       CellVector& local_force) {
   auto force = by_node<dim>(local_force);
   for (int q = 0; q < values.n_points(); ++q) {
     const Point<dim>& normal = values.normal(q);
     const Point<dim> velocity = velocities * values.shape(q);
     const Real normal_velocity = velocity.dot(normal);
-    Point<dim> traction = (normal_velocity / d_n) * normal;
-    if (!friction_weight.empty())
-      traction += friction_weight[q] * (velocity - normal_velocity * normal);
+    const Point<dim> traction = (normal_velocity / d_n) * normal;
     force.noalias() += (values.JxW(q) * traction) * values.shape(q).transpose();
   }
 }
@@ -130,10 +128,8 @@ template void add_volumetric_force<2>(const fem::CellValues<2>&, Real,
 template void add_volumetric_force<3>(const fem::CellValues<3>&, Real,
                                       const fem::CellValues<3>::Gradients&, CellVector&);
 template void add_contact_force<2>(const fem::FacetValues<2>&, Real,
-                                   const fem::CellValues<2>::Gradients&, std::span<const Real>,
-                                   CellVector&);
+                                   const fem::CellValues<2>::Gradients&, CellVector&);
 template void add_contact_force<3>(const fem::FacetValues<3>&, Real,
-                                   const fem::CellValues<3>::Gradients&, std::span<const Real>,
-                                   CellVector&);
+                                   const fem::CellValues<3>::Gradients&, CellVector&);
 
 } // namespace formflow::assembly

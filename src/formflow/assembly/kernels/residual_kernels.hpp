@@ -26,12 +26,12 @@ void add_volumetric_force(const fem::CellValues<dim>& values, Real d,
                           const typename fem::CellValues<dim>::Gradients& velocities,
                           CellVector& local_force);
 
-/// (3) + (4) at u on one contact face: ∫_Γ3 [(1/d_N) u_N n + κ u_T]·φ_a e_i dΓ,
-/// κ per face point (`friction_weight`, empty: no friction).
+/// (3) at u on one contact face: ∫_Γ3 (1/d_N) u_N n·φ_a e_i dΓ (friction's force is
+/// the friction term's, terms/friction_term.cpp).
 template <int dim>
 void add_contact_force(const fem::FacetValues<dim>& values, Real d_n,
                        const typename fem::CellValues<dim>::Gradients& velocities,
-                       std::span<const Real> friction_weight, CellVector& local_force);
+                       CellVector& local_force);
 
 } // namespace formflow::assembly
 

@@ -17,7 +17,7 @@ public:
     add_contact_penalty<dim>(face.values, d_n_, matrix);
   }
   void add_force(const FaceState<dim>& face, CellVector& force) const override {
-    add_contact_force<dim>(face.values, d_n_, face.velocities, {}, force);
+    add_contact_force<dim>(face.values, d_n_, face.velocities, force);
   }
   /// −σ_N u_N dΓ at the face's points: u_N²/d_N.
   void add_power(const FaceState<dim>& face, PowerTerms& power) const override {

@@ -39,12 +39,11 @@ public:
 
   void add_force(const FaceState<dim>& face, CellVector& force) const override {
     if (face.points.empty()) return;
+    // The points were evaluated at this pass's velocity: their u_T is the face's.
     for (int q = 0; q < face.values.n_points(); ++q) {
       const ContactPoint<dim>& point = face.points[q];
-      const Point<dim> velocity = face.velocities * face.values.shape(q);
-      const Point<dim> slip =
-          velocity - velocity.dot(face.values.normal(q)) * face.values.normal(q);
-      add_traction(face, q, point.friction_weight * slip + point.friction_load, force);
+      add_traction(face, q, point.friction_weight * point.tangential_velocity + point.friction_load,
+                   force);
     }
   }
 
