@@ -88,8 +88,16 @@ int run_case(const Options& options) {
     std::string mesh_text = case_.mesh.source == mesh::MeshSource::File
                                 ? "mesh " + case_.mesh.file
                                 : fmt::format("mesh h = {:.6g}", case_.mesh.size);
-    if (case_.mesh.dimension == 3) // the slab, the one solid section so far
-      mesh_text += fmt::format(" (3D slab, thickness {:.6g})", case_.mesh.solid.thickness);
+    if (case_.mesh.dimension == 3) {
+      const mesh::SolidChannel& solid = case_.mesh.solid;
+      if (solid.section == mesh::ChannelSection::Slab)
+        mesh_text += fmt::format(" (3D slab, thickness {:.6g})", solid.thickness);
+      else if (solid.section == mesh::ChannelSection::Rectangle)
+        mesh_text += fmt::format(" (3D rectangle quarter, half widths {:.6g} → {:.6g})",
+                                 solid.entry_half_width, solid.exit_half_width);
+      else
+        mesh_text += " (3D round quarter)";
+    }
     fmt::print("formflow {}: {} {} {}, volumetric rule {}x{}, mu = {:.6g}\n", FORMFLOW_VERSION,
                case_.source, fem::element_name(case_.element), mesh_text, case_.volumetric_points,
                case_.volumetric_points, case_.friction.mu);

@@ -7,6 +7,7 @@
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/solid_channel_mesh.hpp"
 #include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
@@ -37,6 +38,12 @@ bool structured_size_fits(const mesh::ChannelGeometry& g, Real size) {
   return mesh::cells_along(g.exit_half_height, size) < mesh::cells_along(g.entry_half_height, size);
 }
 
+/// The same for the mesh of `spec`, plane or solid (the rectangle's widths too).
+bool size_fits(const mesh::MeshSpec& spec, Real size) {
+  return spec.dimension == 3 ? mesh::solid_lengths_fit(spec.geometry, spec.solid, size)
+                             : structured_size_fits(spec.geometry, size);
+}
+
 } // namespace
 
 template <int dim>
@@ -47,7 +54,7 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
   int levels = 0;
   while (levels < case_.solver.coarse_levels &&
          (case_.mesh.source != mesh::MeshSource::Structured ||
-          structured_size_fits(case_.mesh.geometry, case_.mesh.size * std::ldexp(1.0, levels + 1))))
+          size_fits(case_.mesh, case_.mesh.size * std::ldexp(1.0, levels + 1))))
     ++levels;
   if (levels == 0) return std::nullopt;
   CoarseStart start;

@@ -3,8 +3,12 @@
 #include "formflow/io/case_validation_3d.hpp"
 
 #include "formflow/io/case_keys.hpp"
+#include "formflow/mesh/channel_mesh.hpp"
 
 #include <array>
+#include <string_view>
+
+#include <fmt/format.h>
 
 namespace formflow::io {
 
@@ -52,11 +56,12 @@ std::optional<KeyRefusal> unused_solid_key(const Case& case_,
 /// What a solid case asks that the solid run does not do yet.
 std::optional<KeyRefusal> unsupported_in_3d(const Case& case_) {
   if (case_.mesh.dimension != 3) return std::nullopt;
-  if (case_.mesh.solid.section != ChannelSection::Slab)
-    return KeyRefusal{{"geometry.section"},
-                      "this section is not implemented yet (issue 15: the slab runs; rectangle "
-                      "and round come next)",
-                      "use geometry.section = \"slab\""};
+  if (case_.mesh.solid.section == ChannelSection::Round &&
+      case_.mesh.geometry.die == mesh::DieShape::Square)
+    return KeyRefusal{{"geometry.die", "geometry.section"},
+                      "a round billet through a square die (an annular die face) is not "
+                      "implemented yet: the round section runs with the revolved dies",
+                      "use geometry.die = \"wedge\" (a conical die), \"arc\" or \"polyline\""};
   if (case_.symmetry == physics::Symmetry::Axisymmetric)
     return KeyRefusal{{"geometry.symmetry", "geometry.dimension"},
                       "the axisymmetric model is two-dimensional (y = r in the meridian plane)",
@@ -75,12 +80,44 @@ std::optional<KeyRefusal> unsupported_in_3d(const Case& case_) {
   return std::nullopt;
 }
 
+/// The rectangle's half widths: no wider exit than container, and cells of
+/// mesh.size across them (the square die's lattice needs both, a swept die the
+/// container's: mesh/solid_channel_mesh.hpp).
+std::optional<KeyRefusal> rectangle_problem(const Case& case_) {
+  if (case_.mesh.dimension != 3 || case_.mesh.solid.section != ChannelSection::Rectangle)
+    return std::nullopt;
+  const mesh::SolidChannel& solid = case_.mesh.solid;
+  if (!(solid.exit_half_width <= solid.entry_half_width))
+    return KeyRefusal{{"geometry.exit_half_width", "geometry.entry_half_width"},
+                      fmt::format("the product ({} wide) is wider than the billet ({})",
+                                  2 * solid.exit_half_width, 2 * solid.entry_half_width),
+                      "make geometry.exit_half_width ≤ geometry.entry_half_width"};
+  const Real size = case_.mesh.size;
+  const bool square = case_.mesh.geometry.die == mesh::DieShape::Square;
+  for (const char* name : {"geometry.entry_half_width", "geometry.exit_half_width"}) {
+    const bool exit = std::string_view(name) == "geometry.exit_half_width";
+    if (exit && !square) continue;
+    const Real width = exit ? solid.exit_half_width : solid.entry_half_width;
+    if (mesh::cells_along(width, size) > 0) continue;
+    return KeyRefusal{{name, "mesh.size"},
+                      fmt::format("the half width {} is not a multiple of mesh.size = {} "
+                                  "({:.6g} cells)",
+                                  width, size, width / size),
+                      square ? "with the square die both half widths are cut into cells of "
+                               "mesh.size: make them multiples of it"
+                             : "the container's half width is cut into cells of mesh.size: "
+                               "make it a multiple of it"};
+  }
+  return std::nullopt;
+}
+
 } // namespace
 
 std::optional<KeyRefusal>
 solid_case_problem(const Case& case_, const std::function<bool(const std::string&)>& is_set) {
   if (auto refusal = unused_solid_key(case_, is_set)) return refusal;
-  return unsupported_in_3d(case_);
+  if (auto refusal = unsupported_in_3d(case_)) return refusal;
+  return rectangle_problem(case_);
 }
 
 } // namespace formflow::io

@@ -6,7 +6,7 @@
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
-#include "formflow/mesh/extruded_mesh.hpp"
+#include "formflow/mesh/solid_channel_mesh.hpp"
 #if FORMFLOW_WITH_GMSH
 #include "formflow/mesh/facet_axis.hpp"
 #include "formflow/mesh/gmsh_channel.hpp"
@@ -137,15 +137,11 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
   const int order = fem::element_order(case_.element);
   const bool drawing = case_.process.type == physics::ProcessType::Drawing;
   if (spec.source == mesh::MeshSource::Structured) {
+    if (spec.dimension == 3) // every section: io/case_validation_3d.cpp checked what it needs
+      return mesh::make_solid_channel_mesh(spec.geometry, spec.solid, spec.size, order, drawing);
     mesh::Mesh<2> mesh = mesh::make_die_channel_mesh(spec.geometry, spec.size, order);
     if (drawing) mesh::free_container_wall(mesh);
-    if (spec.dimension == 2) return mesh;
-    // The slab (the only solid section so far, io/case_validation_3d.cpp): both z
-    // faces are symmetry planes, u_z = 0 and no shear, so the plane-strain field is
-    // a solution of the solid problem.
-    return mesh::extrude_mesh(mesh, spec.solid.thickness,
-                              mesh::extrusion_layers(spec.solid.thickness, spec.size),
-                              mesh::BoundaryLabel::Symmetry);
+    return mesh;
   }
 #if FORMFLOW_WITH_GMSH
   if (spec.source == mesh::MeshSource::Gmsh) {

@@ -4,8 +4,8 @@
 
 #include "formflow/fem/lagrange.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
-#include "formflow/mesh/extruded_mesh.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
+#include "formflow/mesh/solid_channel_mesh.hpp"
 
 #include <fmt/format.h>
 
@@ -83,10 +83,11 @@ std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real s
   else if (case_.mesh.source == mesh::MeshSource::File)
     return std::nullopt;
   else
-    cells = mesh::die_channel_cell_count(case_.mesh.geometry, size);
+    cells = case_.mesh.dimension == 3
+                ? mesh::solid_channel_cell_count(case_.mesh.geometry, case_.mesh.solid, size)
+                : mesh::die_channel_cell_count(case_.mesh.geometry, size);
   const int order = fem::element_order(case_.element);
-  if (case_.mesh.dimension == 3) { // the slab: the plane channel's cells in layers
-    cells *= mesh::extrusion_layers(case_.mesh.solid.thickness, size);
+  if (case_.mesh.dimension == 3) {
     return MeshMemoryEstimate{cells, 3.0 * order * order * order * cells,
                               run_bytes_per_dof * 3.0 * order * order * order * cells};
   }

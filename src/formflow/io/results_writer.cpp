@@ -4,10 +4,12 @@
 
 #include "formflow/io/csv.hpp"
 #include "formflow/io/plot/pictures.hpp"
+#include "formflow/io/plot/solid_pictures.hpp"
 #include "formflow/io/report_html.hpp"
 #include "formflow/io/result_set.hpp"
 #include "formflow/io/vtu.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <variant>
@@ -19,10 +21,13 @@ std::span<const std::string> result_file_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> all = {"summary.json", "history.csv", "contact.csv", "fields.vtu",
                                     "report.html"};
-    for (const std::string& picture : plot::picture_names()) {
-      all.push_back(picture + ".png");
-      all.push_back(picture + ".svg");
-    }
+    // The plane pictures and the solid ones: either set replaces the other's files.
+    for (const auto& names : {plot::picture_names(), plot::solid_picture_names()})
+      for (const std::string& picture : names) {
+        if (std::find(all.begin(), all.end(), picture + ".png") != all.end()) continue;
+        all.push_back(picture + ".png");
+        all.push_back(picture + ".svg");
+      }
     return all;
   }();
   return names;
@@ -39,14 +44,18 @@ void write_results(const std::string& directory, const Case& case_, const mesh::
   files.push_back({"contact.csv", contact_csv(results.contact, results.stop_reason, dim)});
   files.push_back({"fields.vtu", fields_vtu(mesh, results.fields, results.stop_reason)});
   if (is_stop_requested(stop_requested)) throw Stopped("stopped before drawing the pictures");
-  // The pictures draw the plane channel; a solid run has none (see the header).
+  // The plane pictures, or a solid run's sections and unrolled die surface.
   std::vector<ReportPicture> report_pictures;
+  std::vector<plot::Picture> pictures;
   if constexpr (dim == 2)
-    for (plot::Picture& picture : plot::render_pictures(case_, mesh, results)) {
-      report_pictures.push_back({picture.name, picture.svg});
-      files.push_back({picture.name + ".png", std::move(picture.png)});
-      files.push_back({picture.name + ".svg", std::move(picture.svg)});
-    }
+    pictures = plot::render_pictures(case_, mesh, results);
+  else
+    pictures = plot::render_solid_pictures(case_, mesh, results);
+  for (plot::Picture& picture : pictures) {
+    report_pictures.push_back({picture.name, picture.svg});
+    files.push_back({picture.name + ".png", std::move(picture.png)});
+    files.push_back({picture.name + ".svg", std::move(picture.svg)});
+  }
   files.push_back({"report.html", report_html(case_, results, report_pictures)});
   publish_result_set(directory, files, "summary.json", result_file_names(), stop_requested);
 }

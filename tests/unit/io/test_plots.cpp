@@ -121,7 +121,7 @@ protected:
   }
   /// The PNG pixel showing data point (x, y) in a field picture.
   plot::Rgb field_pixel(cairo_surface_t* surface, double x, double y) const {
-    const plot::Pixel at = plot::field_layout(mesh_).axes.at(x, y);
+    const plot::Pixel at = plot::field_layout({case_, mesh_, results_}).axes.at(x, y);
     return pixel(surface, at[0], at[1]);
   }
 

@@ -85,10 +85,20 @@ TEST(SolidKeys, SolidKeysInAPlaneCaseAreRefusedByNameUnlessAtTheirDefaults) {
 }
 
 TEST(SolidKeys, WhatThreeDimensionsCannotRunYetIsRefusedNamingTheKeySetLast) {
+  // A round billet through the (default) square die: an annular die face.
   const InputError round =
       error_in("[geometry]\ndimension = 3\nsection = \"round\"\n", "geometry.section", 3);
   EXPECT_TRUE(has_text(round.message, "not implemented yet")) << round.message;
-  error_in("[geometry]\nsection = \"rectangle\"\ndimension = 3\n", "geometry.section", 2);
+  error_in("[geometry]\nsection = \"round\"\ndimension = 3\ndie = \"square\"\n", "geometry.die", 4);
+  // The rectangle's half widths: no wider exit, cells of mesh.size across them (the
+  // exit's only with the square die).
+  error_in("[geometry]\ndimension = 3\nsection = \"rectangle\"\nexit_half_width = 11\n",
+           "geometry.exit_half_width", 4);
+  error_in("[geometry]\ndimension = 3\nsection = \"rectangle\"\nexit_half_width = 4.5\n",
+           "geometry.exit_half_width", 4);
+  error_in("[geometry]\ndimension = 3\nsection = \"rectangle\"\ndie = \"wedge\"\n"
+           "entry_half_width = 9.5\n",
+           "geometry.entry_half_width", 5);
   // Two keys make the combination: the one set last is blamed.
   error_in("[geometry]\nsymmetry = \"axisymmetric\"\ndimension = 3\n", "geometry.dimension", 3);
   error_in("[geometry]\ndimension = 3\nsymmetry = \"axisymmetric\"\n", "geometry.symmetry", 3);

@@ -46,8 +46,8 @@ KeySpec section_key() {
               {"rectangle", ChannelSection::Rectangle},
               {"round", ChannelSection::Round}},
              [](auto& c) -> auto& { return c.mesh.solid.section; })
-      .constraint("only with geometry.dimension = 3; \"rectangle\" and \"round\" are not "
-                  "implemented yet")
+      .constraint("only with geometry.dimension = 3; \"round\" not with geometry.die = "
+                  "\"square\"")
       .doc("solid channel (quarter model, symmetry planes y = 0 and z = 0): slab (the plane "
            "channel extruded over geometry.thickness, u_z = 0 on both z faces: plane strain in "
            "3D), rectangle (half widths in z), round (a round billet, radius = the half heights)");
@@ -136,8 +136,8 @@ std::vector<CaseKey> geometry_keys() {
           [](auto& c) -> auto& { return c.mesh.solid.entry_half_width; })
           .within(1e-6, 1e6)
           .why(length_range)
-          .constraint("> geometry.exit_half_width; only with geometry.dimension = 3 and "
-                      "geometry.section = \"rectangle\"")
+          .constraint("≥ geometry.exit_half_width; a multiple of mesh.size; only with "
+                      "geometry.dimension = 3 and geometry.section = \"rectangle\"")
           .unit("length")
           .doc("rectangle: half width (in z) of the billet in the container"),
       real_key(
@@ -145,8 +145,8 @@ std::vector<CaseKey> geometry_keys() {
           [](auto& c) -> auto& { return c.mesh.solid.exit_half_width; })
           .within(1e-6, 1e6)
           .why(length_range)
-          .constraint("< geometry.entry_half_width; only with geometry.dimension = 3 and "
-                      "geometry.section = \"rectangle\"")
+          .constraint("≤ geometry.entry_half_width; a multiple of mesh.size with the square "
+                      "die; only with geometry.dimension = 3 and geometry.section = \"rectangle\"")
           .unit("length")
           .doc("rectangle: half width (in z) of the product after the die"),
       enum_key(

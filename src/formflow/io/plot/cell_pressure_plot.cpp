@@ -31,7 +31,7 @@ mesh::Mesh<2> broken_mesh(const mesh::Mesh<2>& mesh) {
 void draw_cell_pressure(const Canvas& canvas, const PictureData& data, const VectorX& cell_pressure,
                         const std::string& title) {
   draw_title(canvas, title, run_description(data.case_, data.results));
-  const FieldLayout layout = field_layout(data.mesh);
+  const FieldLayout layout = field_layout(data);
   if (data.mesh.n_cells() == 0 || cell_pressure.size() != data.mesh.n_cells()) {
     draw_no_data(canvas, layout.axes.area(), "no cell pressure");
     return;

@@ -59,11 +59,16 @@ std::string run_description(const Case& case_, const post::Results& results) {
                      results.pressure.ram_reaction);
 }
 
-FieldLayout field_layout(const mesh::Mesh<2>& mesh) {
+FieldLayout field_layout(const PictureData& data) {
   // Left margin for y tick labels, right margin for the colour bar and its labels.
   const Rect area{62, 70, 690, picture_height - 70 - 72};
-  const Box box = bounding_box(mesh);
+  const Box box = bounding_box(data.mesh);
   Axes axes = equal_aspect_axes(area, box.x0, box.x1, box.y0, box.y1);
+  if (data.vertical_axis != axes.y_axis().label) {
+    Axis vertical = axes.y_axis();
+    vertical.label = data.vertical_axis;
+    axes = Axes(axes.area(), axes.x_axis(), vertical);
+  }
   const Rect& plot = axes.area();
   return {std::move(axes), Rect{plot.right() + 26, plot.y, 20, plot.height}};
 }

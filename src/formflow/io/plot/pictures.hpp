@@ -23,6 +23,9 @@ struct PictureData {
   const Case& case_;
   const mesh::Mesh<2>& mesh;
   const post::Results& results;
+  /// The label of the vertical axis of a field picture: "y" in the plane, "z" on a
+  /// solid's y = 0 section (io/plot/solid_pictures.hpp).
+  std::string vertical_axis = "y";
 };
 
 /// A rendered picture: file stem ("strain_rate") and the PNG and SVG file contents.
@@ -75,8 +78,9 @@ struct FieldLayout {
   Axes axes;
   Rect colour_bar;
 };
-/// The field-picture layout for `mesh` on a picture_width × picture_height canvas.
-FieldLayout field_layout(const mesh::Mesh<2>& mesh);
+/// The field-picture layout for `data.mesh` on a picture_width × picture_height
+/// canvas, the vertical axis labelled data.vertical_axis.
+FieldLayout field_layout(const PictureData& data);
 
 /// The plot area of a graph picture (contact, convergence), leaving room for
 /// axis labels on both sides.

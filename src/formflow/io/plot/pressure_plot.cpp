@@ -36,7 +36,7 @@ ColourScale pressure_scale(const VectorX& pressure) {
 void draw_pressure(const Canvas& canvas, const PictureData& data) {
   draw_title(canvas, "Hydrostatic pressure p = −σ_{H} (compression positive)",
              run_description(data.case_, data.results));
-  const FieldLayout layout = field_layout(data.mesh);
+  const FieldLayout layout = field_layout(data);
   const VectorX& stress = data.results.fields.hydrostatic_stress;
   if (data.mesh.n_cells() == 0 || stress.size() != data.mesh.n_nodes()) {
     draw_no_data(canvas, layout.axes.area(), "no pressure field");

@@ -52,7 +52,7 @@ void mark_maximum(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& m
 void draw_strain_rate(const Canvas& canvas, const PictureData& data) {
   draw_title(canvas, "Equivalent strain rate ε\u0304\u0307 (log scale)",
              run_description(data.case_, data.results));
-  const FieldLayout layout = field_layout(data.mesh);
+  const FieldLayout layout = field_layout(data);
   const VectorX& rate = data.results.fields.equivalent_strain_rate;
   if (data.mesh.n_cells() == 0 || rate.size() != data.mesh.n_nodes()) {
     draw_no_data(canvas, layout.axes.area(), "no strain-rate field");

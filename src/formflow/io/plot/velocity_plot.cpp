@@ -66,7 +66,7 @@ void draw_arrow(const Canvas& canvas, Pixel from, Pixel to, const Rgb& colour) {
 
 void draw_velocity(const Canvas& canvas, const PictureData& data) {
   draw_title(canvas, "Velocity (arrow length ∝ speed)", run_description(data.case_, data.results));
-  const FieldLayout layout = field_layout(data.mesh);
+  const FieldLayout layout = field_layout(data);
   const Axes& axes = layout.axes;
   const VectorX& velocity = data.results.fields.velocity;
   if (data.mesh.n_cells() == 0 || velocity.size() != 2 * data.mesh.n_nodes()) {
