@@ -18,8 +18,9 @@ namespace {
 // away from the rear end, friction on the die only keeps Γ3's heat there too, so the
 // heat conducted back into the billet is nil and all of it is convected. (Heat released
 // in the cells at the rear end goes partly into its Dirichlet rows, "conducted": with
-// container friction at μ = 0.1 on mesh II that is 1.1e-3 of the total, O(h).) d = 1e-3 leaves ∇·u = O(d σ_H), which does not enter: the
-// convected heat is the discrete ∫ ρc u·∇T dx the equations balance.
+// container friction at μ = 0.1 on mesh II that is 1.1e-3 of the total, O(h).) d = 1e-3 leaves ∇·u
+// = O(d σ_H), which does not enter: the convected heat is the discrete ∫ ρc u·∇T dx the equations
+// balance.
 const std::string thermal_text = R"(
 [process]
 ram = "sticking"
@@ -59,8 +60,7 @@ void expect_balance(const post::Results& results) {
   ASSERT_GT(heat, 0.0);
   // The discrete budget (test function 1): exact up to the LU's residual, ~1e-12 of
   // the largest row sums here; 1e-9 relative leaves a margin for any BLAS.
-  EXPECT_NEAR(heat,
-              thermal.tools + thermal.free_surfaces + thermal.convected + thermal.conducted,
+  EXPECT_NEAR(heat, thermal.tools + thermal.free_surfaces + thermal.convected + thermal.conducted,
               1e-9 * heat);
   EXPECT_EQ(thermal.tools, 0.0);
   // The issue's criterion: convected out − in = β P_plastic + share P_friction within 1e-3.
@@ -70,7 +70,9 @@ void expect_balance(const post::Results& results) {
   EXPECT_GE(thermal.exit_mean, thermal.exit_min);
 }
 
-TEST(ThermalBalance, PaperGeometryAdiabaticTools) { expect_balance(run("")); }
+TEST(ThermalBalance, PaperGeometryAdiabaticTools) {
+  expect_balance(run(""));
+}
 
 TEST(ThermalBalance, WedgeDieAdiabaticTools) {
   expect_balance(run("[geometry]\ndie = \"wedge\"\ndie_angle = 30\n"));
@@ -80,9 +82,9 @@ TEST(ThermalBalance, ToolsTakeHeatAndTheBudgetCloses) {
   // Cold tools (T_tool < T_billet): heat flows out through Γ3 (tools > 0) and the
   // workpiece leaves cooler on average than the adiabatic run's exit.
   const post::Results adiabatic = run("");
-  io::Case case_ = io::load_case_text(
-      thermal_text, "thermal.toml",
-      {{"thermal.heat_transfer", "0.05"}, {"thermal.tool_temperature", "-1"}});
+  io::Case case_ =
+      io::load_case_text(thermal_text, "thermal.toml",
+                         {{"thermal.heat_transfer", "0.05"}, {"thermal.tool_temperature", "-1"}});
   const post::Results results = app::simulate(case_).results;
   EXPECT_GT(results.thermal.tools, 0.0);
   const post::ThermalResults& t = results.thermal;

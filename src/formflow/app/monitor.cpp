@@ -21,8 +21,9 @@ void Monitor::operator()(const solvers::IterationRecord& record) {
     // came before it); the flow iterations restart their estimate after it.
     elapsed_ += record.seconds;
     recent_changes_.clear();
-    fmt::print(out_, "coupling {:>3}  ΔT/rise {:>10.3e}  Δp/p {:>10.3e}  pressure {:>12.6f}  "
-                     "T_max {:>10.3f}\n",
+    fmt::print(out_,
+               "coupling {:>3}  ΔT/rise {:>10.3e}  Δp/p {:>10.3e}  pressure {:>12.6f}  "
+               "T_max {:>10.3f}\n",
                record.coupling, record.relative_change, record.force_change, record.pressure,
                record.max_temperature);
     std::fflush(out_);

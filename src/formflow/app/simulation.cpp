@@ -32,8 +32,8 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
     std::visit(
         [&](auto& law) {
           if constexpr (physics::TemperatureDependent<std::decay_t<decltype(law)>>)
-            law.temperature = std::min(case_.thermal.billet_temperature,
-                                       case_.thermal.max_temperature);
+            law.temperature =
+                std::min(case_.thermal.billet_temperature, case_.thermal.max_temperature);
         },
         settings.law.model);
   settings.viscous_strain = case_.viscous_strain;

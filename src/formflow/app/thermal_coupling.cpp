@@ -52,8 +52,8 @@ std::optional<VectorX> solve_heat(const assembly::HeatProblem<dim>& heat,
   }
   ScopedTimer timer(timing, "thermal_solve");
   // The convection term makes A unsymmetric: LU (UMFPACK), every entry handed over.
-  auto solver = solvers::make_linear_solver(solvers::LinearSolverKind::Umfpack,
-                                            solvers::MatrixStorage::Full);
+  auto solver =
+      solvers::make_linear_solver(solvers::LinearSolverKind::Umfpack, solvers::MatrixStorage::Full);
   VectorX free;
   if (!solver->analyze(system.matrix) || !solver->factorize(system.matrix) ||
       !solver->solve(system.rhs, free) || !free.allFinite())
@@ -82,6 +82,8 @@ couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
       thermal, std::vector<Real>(static_cast<std::size_t>(n_points), thermal.billet_temperature)));
   solvers::SecantOutcome outcome = solve_flow(nullptr);
   out.flow_iterations.push_back(static_cast<int>(outcome.history.size()));
+  // history.csv and `iterations` count every flow iteration of every coupling step.
+  std::vector<solvers::IterationRecord> history = outcome.history;
   VectorX previous = VectorX::Constant(heat.n_nodes(), thermal.billet_temperature);
   Real previous_pressure = last_pressure(outcome);
   for (int step = 1; step <= thermal.max_coupling_iterations; ++step) {
@@ -100,6 +102,7 @@ couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
     const VectorX velocity = outcome.velocity;
     outcome = solve_flow(&velocity);
     out.flow_iterations.push_back(static_cast<int>(outcome.history.size()));
+    history.insert(history.end(), outcome.history.begin(), outcome.history.end());
     const Real pressure = last_pressure(outcome);
     const Real force_change =
         std::abs(pressure - previous_pressure) / std::max(std::abs(pressure), 1e-300);
@@ -128,6 +131,7 @@ couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
   }
   if (outcome.stop_reason == solvers::StopReason::Converged && !out.coupling_converged)
     outcome.stop_reason = solvers::StopReason::MaxIterations;
+  outcome.history = std::move(history);
   // What is reported: the heat solve at the final velocity (the flow there was solved
   // at the previous T, within the coupling tolerance of this one).
   const auto sources = heat_sources(problem, thermal, outcome.velocity, &multipliers);

@@ -164,23 +164,22 @@ HeatSystem HeatProblem<dim>::assemble(const VectorX& u, const HeatSources& sourc
                      matrix, load);
     }
   };
-  for_each_block<dim>(
-      discretisation_, free_surface_, cell_part, face_part,
-      [&](Index cell, const MatrixX& matrix, const VectorX& load) {
-        const auto nodes = mesh.cells.col(cell);
-        for (int a = 0; a < matrix.rows(); ++a) {
-          const Index row = free_index_[nodes[a]];
-          if (row < 0) continue;
-          system.rhs[row] += load[a];
-          for (int b = 0; b < matrix.cols(); ++b) {
-            const Index column = free_index_[nodes[b]];
-            if (column >= 0)
-              entries.emplace_back(row, column, matrix(a, b));
-            else
-              system.rhs[row] -= matrix(a, b) * thermal_.billet_temperature;
-          }
-        }
-      });
+  for_each_block<dim>(discretisation_, free_surface_, cell_part, face_part,
+                      [&](Index cell, const MatrixX& matrix, const VectorX& load) {
+                        const auto nodes = mesh.cells.col(cell);
+                        for (int a = 0; a < matrix.rows(); ++a) {
+                          const Index row = free_index_[nodes[a]];
+                          if (row < 0) continue;
+                          system.rhs[row] += load[a];
+                          for (int b = 0; b < matrix.cols(); ++b) {
+                            const Index column = free_index_[nodes[b]];
+                            if (column >= 0)
+                              entries.emplace_back(row, column, matrix(a, b));
+                            else
+                              system.rhs[row] -= matrix(a, b) * thermal_.billet_temperature;
+                          }
+                        }
+                      });
   system.matrix.resize(n_free_, n_free_);
   system.matrix.setFromTriplets(entries.begin(), entries.end());
   return system;
@@ -189,8 +188,8 @@ HeatSystem HeatProblem<dim>::assemble(const VectorX& u, const HeatSources& sourc
 template <int dim> VectorX HeatProblem<dim>::expand(const VectorX& free_temperatures) const {
   VectorX T(n_nodes());
   for (Index node = 0; node < n_nodes(); ++node)
-    T[node] = free_index_[node] < 0 ? thermal_.billet_temperature
-                                    : free_temperatures[free_index_[node]];
+    T[node] =
+        free_index_[node] < 0 ? thermal_.billet_temperature : free_temperatures[free_index_[node]];
   return T;
 }
 
@@ -275,10 +274,9 @@ HeatBalance HeatProblem<dim>::balance(const VectorX& u, const HeatSources& sourc
     discretisation_.gather(facet.cell, nullptr, coordinates, unused);
     discretisation_.reinit(face, coordinates, facet.local_face);
     for (int q = 0; q < face.n_points(); ++q)
-      balance.free_surfaces += thermal_.free_surface_transfer *
-                               (face_temperature(face, facet.cell, q) -
-                                thermal_.ambient_temperature) *
-                               face.JxW(q);
+      balance.free_surfaces +=
+          thermal_.free_surface_transfer *
+          (face_temperature(face, facet.cell, q) - thermal_.ambient_temperature) * face.JxW(q);
   }
   return balance;
 }
@@ -292,7 +290,8 @@ template <int dim> std::vector<Real> HeatProblem<dim>::point_values(const Vector
     discretisation_.load_cell(cell, values, nullptr); // shape values only: no geometry needed
     for (int q = 0; q < values.n_points(); ++q) {
       Real value = 0.0;
-      for (int a = 0; a < values.n_nodes(); ++a) value += values.shape(q)[a] * T[mesh.cells(a, cell)];
+      for (int a = 0; a < values.n_nodes(); ++a)
+        value += values.shape(q)[a] * T[mesh.cells(a, cell)];
       result.push_back(value);
     }
   }

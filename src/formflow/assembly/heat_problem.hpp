@@ -71,8 +71,8 @@ public:
 
 private:
   /// The cell matrix A_e and load b_e (n_nodes × n_nodes, n_nodes).
-  void cell_system(Index cell, const VectorX& u, std::span<const Real> deformation,
-                   MatrixX& matrix, VectorX& load) const;
+  void cell_system(Index cell, const VectorX& u, std::span<const Real> deformation, MatrixX& matrix,
+                   VectorX& load) const;
   /// Robin terms h (T − T_ref) and the friction heat on one boundary face; `add` gets
   /// (matrix, load) of the face's cell.
   template <class Values>
@@ -81,8 +81,8 @@ private:
 
   const Discretisation<dim>& discretisation_;
   physics::Thermal thermal_;
-  std::vector<bool> prescribed_;    ///< per node: on the rear end (T = T_billet)
-  std::vector<Index> free_index_;   ///< per node: index in T_f, or −1
+  std::vector<bool> prescribed_;  ///< per node: on the rear end (T = T_billet)
+  std::vector<Index> free_index_; ///< per node: index in T_f, or −1
   Index n_free_ = 0;
   std::vector<Index> free_surface_; ///< Mesh::facets indices of Γ2, Γ4
   std::vector<Index> outflow_;      ///< Mesh::facets indices of Γ5

@@ -342,9 +342,12 @@ private:
     if (!thermal.enabled) return;
     const std::initializer_list<std::string> switch_key = {"thermal.enabled"};
     if (case_.manufactured != physics::ManufacturedSolution::None)
-      die_error("thermal.enabled", "a manufactured solution (verification.solution) has no heat "
-                "problem", "set thermal.enabled = false", {"verification.solution"});
-    if (case_.friction.law != physics::FrictionLaw::Coulomb && !physics::friction_vanishes(case_.friction))
+      die_error("thermal.enabled",
+                "a manufactured solution (verification.solution) has no heat "
+                "problem",
+                "set thermal.enabled = false", {"verification.solution"});
+    if (case_.friction.law != physics::FrictionLaw::Coulomb &&
+        !physics::friction_vanishes(case_.friction))
       die_error("friction.law",
                 "Tresca and hybrid friction with thermal.enabled = true are not done yet: their "
                 "shear yield k on Γ3 would be the isothermal law's",
@@ -374,14 +377,14 @@ private:
     const physics::FlowLaw law = case_.material.selected();
     if (!law.is_temperature_dependent()) return;
     if (const auto violation = physics::check_flow_law_over(law, low, thermal.max_temperature))
-      die_error("material.law",
+      die_error("thermal.max_temperature",
                 "the flow law violates condition (2.11) on the run's temperature range [" +
                     format_key_value(low) + ", " + format_key_value(thermal.max_temperature) +
                     "]: " + *violation,
                 "choose parameters with σ_p increasing and σ_p′ ≤ σ_p/ε̄̇ at every temperature "
                 "(hensel_spittel: 0 < m3 + m8 T ≤ 1), or a lower thermal.max_temperature",
-                {"thermal.max_temperature", "material.hs_m3", "material.hs_m8",
-                 "material.st_n"});
+                {"material.law", "material.hs_m3", "material.hs_m8", "material.st_n",
+                 "thermal.billet_temperature", "thermal.tool_temperature"});
   }
 
   /// A mesh that cannot fit in this machine's memory is refused now, not by the allocator.

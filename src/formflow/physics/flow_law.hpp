@@ -32,7 +32,9 @@ using FlowLaws =
 /// True for a law whose response depends on a `temperature` member (hot-forming laws):
 /// a thermal run evaluates it at each point's temperature (FlowLawAt).
 template <class Law>
-concept TemperatureDependent = requires(Law law) { law.temperature = Real{}; };
+concept TemperatureDependent = requires(Law law) {
+  law.temperature = Real{};
+};
 
 /// What every flow law answers, from its `response(rate)` (the law's own response at a
 /// rate clamped to [rate1, rate2]): the continuation outside [rate1, rate2], linear
@@ -114,8 +116,8 @@ struct FlowLaw : FlowLawMethods<FlowLaw> {
   template <class Law> const Law& as() const { return std::get<Law>(model); }
   /// True when the law held reads a temperature (TemperatureDependent).
   bool is_temperature_dependent() const {
-    return std::visit([](const auto& law) { return TemperatureDependent<std::decay_t<decltype(law)>>; },
-                      model);
+    return std::visit(
+        [](const auto& law) { return TemperatureDependent<std::decay_t<decltype(law)>>; }, model);
   }
 };
 

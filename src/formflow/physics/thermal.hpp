@@ -21,14 +21,14 @@ inline Real absolute_offset(TemperatureUnit unit) {
 struct Thermal {
   bool enabled = false;
   TemperatureUnit unit = TemperatureUnit::Celsius;
-  Real billet_temperature = 450.0; ///< T on the inflow end
-  Real density = 1.0;              ///< ρ (mass/length³)
-  Real heat_capacity = 1.0;        ///< c (energy/(mass·temperature)); ρc in stress/temperature
-  Real conductivity = 1.0;         ///< κ (power/(length·temperature))
-  Real taylor_quinney = 0.9;       ///< β: share of the plastic work turned into heat
-  Real friction_share = 0.5;       ///< share of τ_f|u_T| entering the workpiece
-  Real tool_temperature = 450.0;   ///< T of container and die
-  Real heat_transfer = 0.0;        ///< h on Γ3 (power/(area·temperature)); 0: adiabatic tools
+  Real billet_temperature = 450.0;  ///< T on the inflow end
+  Real density = 1.0;               ///< ρ (mass/length³)
+  Real heat_capacity = 1.0;         ///< c (energy/(mass·temperature)); ρc in stress/temperature
+  Real conductivity = 1.0;          ///< κ (power/(length·temperature))
+  Real taylor_quinney = 0.9;        ///< β: share of the plastic work turned into heat
+  Real friction_share = 0.5;        ///< share of τ_f|u_T| entering the workpiece
+  Real tool_temperature = 450.0;    ///< T of container and die
+  Real heat_transfer = 0.0;         ///< h on Γ3 (power/(area·temperature)); 0: adiabatic tools
   Real free_surface_transfer = 0.0; ///< h on Γ2, Γ4; 0: adiabatic free surfaces
   Real ambient_temperature = 20.0;  ///< T of the surroundings of Γ2, Γ4
   Real max_temperature = 700.0;     ///< the flow law is taken at min(T, this) (checked range)

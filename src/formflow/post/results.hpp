@@ -64,20 +64,20 @@ struct Augmentation {
 /// depth (per radian in axisymmetry), at the final velocity (assembly/heat_problem.hpp).
 struct ThermalResults {
   bool enabled = false;
-  VectorX temperature;            ///< n_nodes
+  VectorX temperature;                                  ///< n_nodes
   Real exit_min = 0.0, exit_mean = 0.0, exit_max = 0.0; ///< on Γ5; mean flux-weighted
-  Real max_temperature = 0.0;     ///< max nodal T
-  Real min_temperature = 0.0;     ///< min nodal T
-  Real deformation = 0.0;         ///< β ∫ σ_p ε̄̇ dx
-  Real friction = 0.0;            ///< share ∫_Γ3 τ_f|u_T| dΓ
-  Real tools = 0.0;               ///< ∫_Γ3 h (T − T_tool) dΓ, positive out of the workpiece
-  Real free_surfaces = 0.0;       ///< ∫_Γ2∪Γ4 h_free (T − T_ambient) dΓ
-  Real convected = 0.0;           ///< ∫ ρc u·∇T dx (convected out − in)
-  Real conducted = 0.0;           ///< conducted out through the rear end
-  int coupling_iterations = 0;    ///< staggered steps (a flow solve and a heat solve each)
+  Real max_temperature = 0.0;                           ///< max nodal T
+  Real min_temperature = 0.0;                           ///< min nodal T
+  Real deformation = 0.0;                               ///< β ∫ σ_p ε̄̇ dx
+  Real friction = 0.0;                                  ///< share ∫_Γ3 τ_f|u_T| dΓ
+  Real tools = 0.0;            ///< ∫_Γ3 h (T − T_tool) dΓ, positive out of the workpiece
+  Real free_surfaces = 0.0;    ///< ∫_Γ2∪Γ4 h_free (T − T_ambient) dΓ
+  Real convected = 0.0;        ///< ∫ ρc u·∇T dx (convected out − in)
+  Real conducted = 0.0;        ///< conducted out through the rear end
+  int coupling_iterations = 0; ///< staggered steps (a flow solve and a heat solve each)
   bool coupling_converged = false;
-  Real temperature_change = 0.0;  ///< last coupling step's max|ΔT| / max|T − T_billet|
-  Real force_change = 0.0;        ///< last coupling step's |Δp|/|p|
+  Real temperature_change = 0.0;    ///< last coupling step's max|ΔT| / max|T − T_billet|
+  Real force_change = 0.0;          ///< last coupling step's |Δp|/|p|
   std::vector<int> flow_iterations; ///< nonlinear iterations of each flow solve
 };
 

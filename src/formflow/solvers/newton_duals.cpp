@@ -87,9 +87,8 @@ template <int dim, class F>
 void for_each_point_law(const assembly::FormingProblem<dim>& problem, F&& f) {
   const std::vector<Real>& temperatures = problem.point_temperatures();
   if (temperatures.empty()) {
-    problem.settings().law.visit_bound([&](const auto& law) {
-      f([&](Index, int) -> const auto& { return law; });
-    });
+    problem.settings().law.visit_bound(
+        [&](const auto& law) { f([&](Index, int) -> const auto& { return law; }); });
     return;
   }
   const int n_q = problem.full_rule().size();

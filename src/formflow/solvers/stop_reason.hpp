@@ -56,8 +56,8 @@ struct IterationRecord {
   /// (its relative_change is the temperature's, `force_change` the load's); 0 on every
   /// iteration of a flow solve.
   int coupling = 0;
-  Real force_change = 0.0;     ///< coupling records: |pᵏ − pᵏ⁻¹|/|pᵏ|
-  Real max_temperature = 0.0;  ///< coupling records: max T
+  Real force_change = 0.0;    ///< coupling records: |pᵏ − pᵏ⁻¹|/|pᵏ|
+  Real max_temperature = 0.0; ///< coupling records: max T
 };
 
 } // namespace formflow::solvers

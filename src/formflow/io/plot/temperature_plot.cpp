@@ -10,8 +10,9 @@ namespace formflow::io::plot {
 void draw_temperature(const Canvas& canvas, const PictureData& data) {
   const post::ThermalResults& thermal = data.results.thermal;
   draw_title(canvas, "Temperature T",
-             fmt::format("{}; exit mean {:.4g}, max {:.4g}", run_description(data.case_, data.results),
-                         thermal.exit_mean, thermal.max_temperature));
+             fmt::format("{}; exit mean {:.4g}, max {:.4g}",
+                         run_description(data.case_, data.results), thermal.exit_mean,
+                         thermal.max_temperature));
   const FieldLayout layout = field_layout(data.mesh);
   const VectorX& T = data.results.fields.temperature;
   if (data.mesh.n_cells() == 0 || T.size() != data.mesh.n_nodes()) {

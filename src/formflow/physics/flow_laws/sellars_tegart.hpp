@@ -17,12 +17,12 @@ namespace formflow::physics {
 struct SellarsTegart {
   static constexpr std::string_view name = "sellars_tegart";
   static constexpr bool rate_independent = false;
-  Real alpha = 0.040;          ///< α_s (1/stress)
-  Real n = 5.385;              ///< stress exponent (≥ 1)
-  Real activation = 141550.0;  ///< Q (energy/mol)
-  Real A = 5.91e9;             ///< A (1/time)
-  Real gas_constant = 8.314;   ///< R (energy/(mol·K))
-  Real temperature = 0.0;      ///< T in the case's temperature unit
+  Real alpha = 0.040;            ///< α_s (1/stress)
+  Real n = 5.385;                ///< stress exponent (≥ 1)
+  Real activation = 141550.0;    ///< Q (energy/mol)
+  Real A = 5.91e9;               ///< A (1/time)
+  Real gas_constant = 8.314;     ///< R (energy/(mol·K))
+  Real temperature = 0.0;        ///< T in the case's temperature unit
   Real absolute_offset = 273.15; ///< T_abs = T + offset (thermal.temperature_unit: °C)
   /// ln of Z/A at unit rate: Q/(R T_abs) − ln A (kept in logs: Z reaches 1e15 and beyond).
   Real log_z_over_a_unit_rate() const {
