@@ -78,6 +78,14 @@ TEST(ThermalBalance, WedgeDieAdiabaticTools) {
   expect_balance(run("[geometry]\ndie = \"wedge\"\ndie_angle = 30\n"));
 }
 
+TEST(ThermalBalance, AxisymmetricAndQ2) {
+  // Per radian (r-weighted integrals) and with the Q2 temperature of a Q2 velocity.
+  expect_balance(run("[geometry]\nsymmetry = \"axisymmetric\"\n"));
+  const io::Case q2 = io::load_case_text(thermal_text, "thermal.toml",
+                                         {{"mesh.element", "Q2"}, {"integration.volumetric", "2"}});
+  expect_balance(app::simulate(q2).results);
+}
+
 TEST(ThermalBalance, ToolsTakeHeatAndTheBudgetCloses) {
   // Cold tools (T_tool < T_billet): heat flows out through Γ3 (tools > 0) and the
   // workpiece leaves cooler on average than the adiabatic run's exit.
