@@ -16,6 +16,19 @@ void Monitor::header() const {
 }
 
 void Monitor::operator()(const solvers::IterationRecord& record) {
+  if (record.coupling > 0) {
+    // Hot forming: the line that closes a staggered step (the flow solve's own lines
+    // came before it); the flow iterations restart their estimate after it.
+    elapsed_ += record.seconds;
+    recent_changes_.clear();
+    fmt::print(out_,
+               "coupling {:>3}  ΔT/rise {:>10.3e}  Δp/p {:>10.3e}  pressure {:>12.6f}  "
+               "T_max {:>10.3f}\n",
+               record.coupling, record.relative_change, record.force_change, record.pressure,
+               record.max_temperature);
+    std::fflush(out_);
+    return;
+  }
   elapsed_ += record.seconds;
   constexpr std::size_t window = 5;
   recent_changes_.push_back(record.relative_change);

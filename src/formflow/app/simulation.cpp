@@ -3,6 +3,7 @@
 #include "formflow/app/simulation.hpp"
 #include "formflow/app/coarse_start.hpp"
 #include "formflow/app/solve_plan.hpp"
+#include "formflow/app/thermal_coupling.hpp"
 
 #include "formflow/core/error.hpp"
 #include "formflow/io/mesh_input.hpp"
@@ -25,6 +26,16 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   assembly::ProblemSettings settings;
   settings.process = case_.process;
   settings.law = case_.material.selected();
+  // Hot forming: what is not at a point's temperature (the constant-viscosity start, the
+  // coarse levels of mesh sequencing) is at the billet's.
+  if (case_.thermal.enabled)
+    std::visit(
+        [&](auto& law) {
+          if constexpr (physics::TemperatureDependent<std::decay_t<decltype(law)>>)
+            law.temperature =
+                std::min(case_.thermal.billet_temperature, case_.thermal.max_temperature);
+        },
+        settings.law.model);
   settings.viscous_strain = case_.viscous_strain;
   settings.penalty = case_.penalty;
   settings.friction = case_.friction;
@@ -141,8 +152,18 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
     }
   }
   assembly::FrictionMultipliers<dim> multipliers;
-  solvers::SecantOutcome outcome = run_loop(plan, case_, *problem, on_iteration, results,
-                                            coarse ? &coarse->velocity : nullptr, multipliers);
+  solvers::SecantOutcome outcome;
+  if (case_.thermal.enabled) {
+    // Hot forming (app/thermal_coupling.hpp): the loop below, again at each coupling step.
+    const FlowSolve solve_flow = [&](const VectorX* start) {
+      return run_loop(plan, case_, *problem, on_iteration, results,
+                      start ? start : (coarse ? &coarse->velocity : nullptr), multipliers);
+    };
+    outcome = couple_thermal(case_, *problem, solve_flow, on_iteration, multipliers, results);
+  } else {
+    outcome = run_loop(plan, case_, *problem, on_iteration, results,
+                       coarse ? &coarse->velocity : nullptr, multipliers);
+  }
   results.method = plan.name(coarse.has_value());
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
@@ -152,6 +173,7 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
                                ? case_.solver.tolerance * case_.process.speed
                                : 0.0;
   post::evaluate_results(*problem, outcome.velocity, results, &multipliers, stick_speed);
+  if (results.thermal.enabled) results.fields.temperature = results.thermal.temperature;
   if (estimate_condition)
     simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
 }

@@ -51,31 +51,42 @@ void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink
     discretisation_.gather(cell, request.velocity, coordinates, velocities);
     discretisation_.load_cell(cell, full, &volumetric);
     cell_state.cell = cell;
-    for (int q = 0; q < n_q; ++q) {
-      if (!request.velocity) {
-        viscosity[q] = request.initial_viscosity;
-        continue;
+    // The flow law of point q: the isothermal law itself, or (hot forming) the law at
+    // the point's temperature. One body for both, so the isothermal path is unchanged.
+    const auto evaluate_points = [&](const auto& law_at) {
+      for (int q = 0; q < n_q; ++q) {
+        if (!request.velocity) {
+          viscosity[q] = request.initial_viscosity;
+          continue;
+        }
+        const Tensor3 rate = discretisation_.strain_rate_at(full, velocities, q);
+        const Real equivalent = physics::equivalent_strain_rate(rate);
+        if (pass == AssemblyPass::Secant) {
+          viscosity[q] = law_at(q).secant_viscosity(equivalent);
+          continue;
+        }
+        rates[q] = rate;
+        if (!tangent) {
+          viscosity[q] = law_at(q).secant_viscosity(equivalent);
+          continue;
+        }
+        const auto [secant, derivative] = law_at(q).secant_viscosity_and_derivative(equivalent);
+        viscosity[q] = secant;
+        deviators[q] = physics::deviator(rate);
+        duals[q] = primal ? Tensor3(secant * deviators[q]) : request.duals->stress[cell * n_q + q];
+        // a = (4/9) σ_p′/ε̄̇², b = −(4/9)/ε̄̇² (kernels/tangent_kernels.hpp); at ε̄̇ = 0 the
+        // law is on its linear branch and the secant matrix is already the tangent.
+        const Real scale = equivalent > 0 ? 4.0 / 9.0 / (equivalent * equivalent) : 0.0;
+        a[q] = scale * derivative;
+        b[q] = -scale;
       }
-      const Tensor3 rate = discretisation_.strain_rate_at(full, velocities, q);
-      const Real equivalent = physics::equivalent_strain_rate(rate);
-      if (pass == AssemblyPass::Secant) {
-        viscosity[q] = law_.secant_viscosity(equivalent);
-        continue;
-      }
-      rates[q] = rate;
-      if (!tangent) {
-        viscosity[q] = law_.secant_viscosity(equivalent);
-        continue;
-      }
-      const auto [secant, derivative] = law_.secant_viscosity_and_derivative(equivalent);
-      viscosity[q] = secant;
-      deviators[q] = physics::deviator(rate);
-      duals[q] = primal ? Tensor3(secant * deviators[q]) : request.duals->stress[cell * n_q + q];
-      // a = (4/9) σ_p′/ε̄̇², b = −(4/9)/ε̄̇² (kernels/tangent_kernels.hpp); at ε̄̇ = 0 the
-      // law is on its linear branch and the secant matrix is already the tangent.
-      const Real scale = equivalent > 0 ? 4.0 / 9.0 / (equivalent * equivalent) : 0.0;
-      a[q] = scale * derivative;
-      b[q] = -scale;
+    };
+    if (temperatures_.empty()) {
+      evaluate_points([&](int) -> const physics::FlowLaw& { return law_; });
+    } else {
+      const Real* cell_temperatures = temperatures_.data() + cell * n_q;
+      cell_state.temperatures = std::span<const Real>(cell_temperatures, n_q);
+      evaluate_points([&](int q) { return physics::FlowLawAt(law_, cell_temperatures[q]); });
     }
     const auto faces = discretisation_.cell_contact_faces(cell);
 
@@ -138,6 +149,29 @@ template <int dim> std::vector<CellPressure> Assembler<dim>::pressures(const Vec
     discretisation_.load_cell(cell, full, &volumetric);
     const CellState<dim> state{cell, full, volumetric, coordinates, velocities, {}, {}, {}};
     result.push_back(terms_.pressure().pressure(state));
+  }
+  return result;
+}
+
+template <int dim> std::vector<Real> Assembler<dim>::dissipation_density(const VectorX& u) const {
+  const mesh::Mesh<dim>& mesh = discretisation_.mesh();
+  fem::CellValues<dim> full(mesh.order, discretisation_.full_rule());
+  typename fem::CellValues<dim>::Gradients coordinates, velocities;
+  const int n_q = full.n_points();
+  std::vector<Real> result(static_cast<std::size_t>(mesh.n_cells()) * n_q);
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    discretisation_.gather(cell, &u, coordinates, velocities);
+    discretisation_.load_cell(cell, full, nullptr);
+    for (int q = 0; q < n_q; ++q) {
+      const Real equivalent =
+          physics::equivalent_strain_rate(discretisation_.strain_rate_at(full, velocities, q));
+      const Index k = cell * n_q + q;
+      // The expression of the viscous term's add_power, so that Σ density·JxW is the
+      // plastic power of the Power pass.
+      result[k] = temperatures_.empty()
+                      ? law_.dissipation(equivalent)
+                      : physics::FlowLawAt(law_, temperatures_[k]).dissipation(equivalent);
+    }
   }
   return result;
 }

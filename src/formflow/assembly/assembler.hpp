@@ -32,9 +32,11 @@ template <int dim> struct AssemblyRequest {
 
 template <int dim> class Assembler {
 public:
+  /// `temperatures`: hot forming's T per full-rule point (cell-major), read at every pass;
+  /// empty: the isothermal law (the path of every isothermal run, unchanged).
   Assembler(const Discretisation<dim>& discretisation, const physics::FlowLaw& law,
-            const TermSet<dim>& terms)
-      : discretisation_(discretisation), law_(law), terms_(terms) {}
+            const TermSet<dim>& terms, const std::vector<Real>& temperatures)
+      : discretisation_(discretisation), law_(law), terms_(terms), temperatures_(temperatures) {}
 
   /// Runs `request.pass` over every cell into `sink` (null for Power) and, for Power,
   /// adds the terms' powers to `powers`.
@@ -42,11 +44,16 @@ public:
            PowerTerms* powers = nullptr) const;
   /// σ_H of every cell at the velocity `u`, from the pressure term.
   std::vector<CellPressure> pressures(const VectorX& u) const;
+  /// The plastic dissipation density σ_p(ε̄̇) ε̄̇ at every full-rule point (cell-major) at
+  /// `u`: the integrand of PowerTerms::plastic_dissipation, point by point (hot forming's
+  /// heat source).
+  std::vector<Real> dissipation_density(const VectorX& u) const;
 
 private:
   const Discretisation<dim>& discretisation_;
   const physics::FlowLaw& law_;
   const TermSet<dim>& terms_;
+  const std::vector<Real>& temperatures_;
 };
 
 } // namespace formflow::assembly

@@ -127,7 +127,8 @@ template <int dim> void FormingProblem<dim>::choose_terms() {
   const Real augmentation =
       settings_.penalty.d_n > 0 ? settings_.friction.augmentation / settings_.penalty.d_n : 0.0;
   terms_ = make_terms<dim>(settings_, *discretisation_, multipliers_, body_force_, augmentation);
-  assembler_ = std::make_unique<Assembler<dim>>(*discretisation_, settings_.law, terms_);
+  assembler_ = std::make_unique<Assembler<dim>>(*discretisation_, settings_.law, terms_,
+                                                point_temperatures_);
 }
 
 template <int dim>

@@ -80,6 +80,16 @@ public:
   std::vector<CellPressure> cell_pressures(const VectorX& u) const {
     return assembler_->pressures(u);
   }
+  /// Hot forming: the temperature at every full-rule point (cell-major, n_cells × points),
+  /// at which every later pass takes the flow law; empty: the isothermal law.
+  void set_point_temperatures(std::vector<Real> temperatures) {
+    point_temperatures_ = std::move(temperatures);
+  }
+  const std::vector<Real>& point_temperatures() const { return point_temperatures_; }
+  /// σ_p ε̄̇ at every full-rule point at `u` (cell-major; Assembler::dissipation_density).
+  std::vector<Real> dissipation_density(const VectorX& u) const {
+    return assembler_->dissipation_density(u);
+  }
   /// The problem's weak-form terms (terms/term_set.cpp).
   const TermSet<dim>& terms() const { return terms_; }
 
@@ -154,6 +164,7 @@ private:
   std::unique_ptr<Discretisation<dim>> discretisation_;
   ConstraintMultipliers<dim>* multipliers_ = nullptr;
   TermSet<dim> terms_;
+  std::vector<Real> point_temperatures_; ///< hot forming (before assembler_, which reads it)
   std::unique_ptr<Assembler<dim>> assembler_;
 };
 

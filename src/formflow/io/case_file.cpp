@@ -10,6 +10,7 @@
 #include "formflow/io/toml_key_value.hpp"
 #include "formflow/io/toml_lines.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
+#include "formflow/physics/friction.hpp"
 
 #include <fmt/format.h>
 #include <toml.hpp>
@@ -117,6 +118,9 @@ public:
   /// is the element's reduced rule unless set (the complete rule locks Q1,
   /// paper Remark 5.1); an explicit complete rule with Q1 gets a warning.
   void resolve_dependent_defaults() {
+    // Laws of an absolute temperature read the case's temperatures in its unit.
+    case_.material.parameters_of<physics::SellarsTegart>().absolute_offset =
+        physics::absolute_offset(case_.thermal.unit);
     const bool q1 = case_.element == fem::ElementKind::Q1;
     if (origin("integration.volumetric").order == 0) {
       case_.volumetric_points = q1 ? 1 : 2;
@@ -143,6 +147,7 @@ public:
     check_flow_law();
     check_formulation();
     check_verification();
+    check_thermal();
     check_mesh_memory();
   }
 
@@ -328,6 +333,58 @@ private:
                                    format_key_value(case_.mesh.distortion.amplitude)),
                        "must be ≤ 0.1 with verification.distortion = \"smooth\"");
     }
+  }
+
+  /// Hot forming (docs/thermal.md): the temperature range the flow law will meet, and
+  /// what a coupled run does not do yet.
+  void check_thermal() const {
+    const physics::Thermal& thermal = case_.thermal;
+    if (!thermal.enabled) return;
+    const std::initializer_list<std::string> switch_key = {"thermal.enabled"};
+    if (case_.manufactured != physics::ManufacturedSolution::None)
+      die_error("thermal.enabled",
+                "a manufactured solution (verification.solution) has no heat "
+                "problem",
+                "set thermal.enabled = false", {"verification.solution"});
+    if (case_.friction.law != physics::FrictionLaw::Coulomb &&
+        !physics::friction_vanishes(case_.friction))
+      die_error("friction.law",
+                "Tresca and hybrid friction with thermal.enabled = true are not done yet: their "
+                "shear yield k on Γ3 would be the isothermal law's",
+                "use friction.law = \"coulomb\" with thermal.enabled = true (docs/thermal.md)",
+                switch_key);
+    const bool convective = thermal.free_surface_transfer > 0;
+    const Real low = std::min({thermal.billet_temperature, thermal.tool_temperature,
+                               convective ? thermal.ambient_temperature : INFINITY});
+    const Real high = std::max({thermal.billet_temperature, thermal.tool_temperature,
+                                convective ? thermal.ambient_temperature : -INFINITY});
+    if (!(thermal.max_temperature > high))
+      die_error("thermal.max_temperature",
+                fmt::format("value {} is not above the highest prescribed temperature {}",
+                            format_key_value(thermal.max_temperature), format_key_value(high)),
+                "must be > thermal.billet_temperature and thermal.tool_temperature (and "
+                "thermal.ambient_temperature when thermal.free_surface_transfer > 0)",
+                {"thermal.billet_temperature", "thermal.tool_temperature",
+                 "thermal.ambient_temperature"});
+    const Real offset = physics::absolute_offset(thermal.unit);
+    if (low + offset <= 0)
+      die_error("thermal.temperature_unit",
+                fmt::format("the lowest prescribed temperature {} is not above absolute zero",
+                            format_key_value(low)),
+                "temperatures are in °C with \"celsius\" (T + 273.15 > 0), in K with \"kelvin\"",
+                {"thermal.billet_temperature", "thermal.tool_temperature",
+                 "thermal.ambient_temperature"});
+    const physics::FlowLaw law = case_.material.selected();
+    if (!law.is_temperature_dependent()) return;
+    if (const auto violation = physics::check_flow_law_over(law, low, thermal.max_temperature))
+      die_error("thermal.max_temperature",
+                "the flow law violates condition (2.11) on the run's temperature range [" +
+                    format_key_value(low) + ", " + format_key_value(thermal.max_temperature) +
+                    "]: " + *violation,
+                "choose parameters with σ_p increasing and σ_p′ ≤ σ_p/ε̄̇ at every temperature "
+                "(hensel_spittel: 0 < m3 + m8 T ≤ 1), or a lower thermal.max_temperature",
+                {"material.law", "material.hs_m3", "material.hs_m8", "material.st_n",
+                 "thermal.billet_temperature", "thermal.tool_temperature"});
   }
 
   /// A mesh that cannot fit in this machine's memory is refused now, not by the allocator.

@@ -19,7 +19,7 @@ std::vector<CaseKey> make_table() {
   // Section order = case_sections() order (the reference and the JSON follow it).
   for (auto part : {process_keys(), geometry_keys(), mesh_keys(), integration_keys(),
                     formulation_keys(), material_keys(), contact_keys(), friction_keys(),
-                    penalty_keys(), solver_keys(), verification_keys()})
+                    penalty_keys(), solver_keys(), thermal_keys(), verification_keys()})
     for (CaseKey& key : part) table.push_back(std::move(key));
   return table;
 }
@@ -116,6 +116,8 @@ const std::vector<CaseSection>& case_sections() {
       {"penalty", "Penalty and regularisation parameters (paper eq. 3.8, 3.14)."},
       {"solver", "The nonlinear iteration: Newton, or the paper's secant-modulus (Kachanov) "
                  "iteration (eq. 5.2–5.3)."},
+      {"thermal", "Hot forming: the steady heat equation in the workpiece, coupled to a "
+                  "temperature-dependent flow law (docs/thermal.md)."},
       {"verification",
        "Manufactured solutions for the convergence studies (docs/verification.md)."},
   };

@@ -28,6 +28,10 @@ std::span<const std::string> result_file_names() {
         all.push_back(picture + ".png");
         all.push_back(picture + ".svg");
       }
+    // Hot forming's picture (written only when thermal.enabled; listed so that a stale
+    // one is removed from a directory an isothermal run reuses).
+    all.push_back("temperature.png");
+    all.push_back("temperature.svg");
     return all;
   }();
   return names;

@@ -106,6 +106,29 @@ json mesh_json(const Case& case_, const post::Results& results) {
   return out;
 }
 
+/// Hot forming (docs/thermal.md): exit and peak temperature and where the heat went,
+/// per unit depth (per radian in axisymmetry): deformation + friction = tools +
+/// free_surfaces + convected + conducted.
+json thermal_json(const post::ThermalResults& thermal) {
+  return {{"exit_temperature",
+           {{"min", thermal.exit_min}, {"mean", thermal.exit_mean}, {"max", thermal.exit_max}}},
+          {"max_temperature", thermal.max_temperature},
+          {"min_temperature", thermal.min_temperature},
+          {"heat",
+           {{"deformation", thermal.deformation},
+            {"friction", thermal.friction},
+            {"tools", thermal.tools},
+            {"convected", thermal.convected},
+            {"free_surfaces", thermal.free_surfaces},
+            {"conducted", thermal.conducted}}},
+          {"coupling",
+           {{"iterations", thermal.coupling_iterations},
+            {"converged", thermal.coupling_converged},
+            {"temperature_change", thermal.temperature_change},
+            {"force_change", thermal.force_change},
+            {"flow_iterations", thermal.flow_iterations}}}};
+}
+
 json timing_json(const PhaseTimes& timing) {
   json out = json::object();
   // The phases every run has are always present, so readers need no defaults.
@@ -139,6 +162,7 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["power"] = power_json(results.power);
   out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;
   out["contact"] = contact_json(case_, results);
+  if (results.thermal.enabled) out["thermal"] = thermal_json(results.thermal);
   out["mesh"] = mesh_json(case_, results);
   out["timing_s"] = timing_json(results.timing);
   // What the time bought: every factorisation (coarse levels and secant steps

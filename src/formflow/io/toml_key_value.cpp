@@ -47,6 +47,10 @@ std::optional<KeyValue> convert_toml_value(const CaseKey& key, const toml::value
     return std::nullopt;
   case KeyType::Enum:
     if (value.is_string()) return KeyValue{value.as_string().str};
+    // A switch (choices "false", "true", e.g. thermal.enabled) takes a TOML boolean.
+    if (value.is_boolean() && key.choices.size() == 2 && key.choices[0] == "false" &&
+        key.choices[1] == "true")
+      return KeyValue{std::string(value.as_boolean() ? "true" : "false")};
     return std::nullopt;
   case KeyType::StringList: {
     if (!value.is_array()) return std::nullopt;

@@ -136,6 +136,7 @@ void point_data_section(Out out, const mesh::Mesh<dim>& mesh, const post::Fields
   scalar_array(out, "hydrostatic_pressure", fields.hydrostatic_stress, -1.0);
   scalar_array(out, "contact_pressure", fields.contact_pressure);
   scalar_array(out, "friction_stress", fields.friction_stress);
+  if (fields.temperature.size() > 0) scalar_array(out, "temperature", fields.temperature);
   fmt::format_to(out, "      </PointData>\n");
 }
 
@@ -168,6 +169,10 @@ template <int dim> void check_fields(const mesh::Mesh<dim>& mesh, const post::Fi
   for (const auto& [name, values] : nodal) check_finite(name, *values);
   check_finite("cell equivalent_strain_rate", fields.cell_equivalent_strain_rate);
   check_finite("cell hydrostatic_stress", fields.cell_hydrostatic_stress);
+  if (fields.temperature.size() > 0) {
+    check_size("temperature", static_cast<Index>(fields.temperature.size()), n_nodes);
+    check_finite("temperature", fields.temperature);
+  }
   for (Index n = 0; n < mesh.n_nodes(); ++n)
     if (!mesh.nodes.col(n).allFinite())
       throw InternalError(fmt::format("fields.vtu: node {} has a non-finite coordinate", n));

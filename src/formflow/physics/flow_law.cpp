@@ -50,4 +50,20 @@ std::optional<std::string> check_flow_law(const FlowLaw& law) {
   return std::nullopt;
 }
 
+std::optional<std::string> check_flow_law_over(const FlowLaw& law, Real low, Real high) {
+  for (int k = 0; k <= 20; ++k) {
+    const Real temperature = low + (high - low) * k / 20.0;
+    FlowLaw at = law;
+    std::visit(
+        [&](auto& model) {
+          if constexpr (TemperatureDependent<std::decay_t<decltype(model)>>)
+            model.temperature = temperature;
+        },
+        at.model);
+    if (auto violation = check_flow_law(at))
+      return fmt::format("at T = {:g}: {}", temperature, *violation);
+  }
+  return std::nullopt;
+}
+
 } // namespace formflow::physics

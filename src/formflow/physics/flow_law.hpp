@@ -8,6 +8,7 @@
 #include "formflow/physics/flow_laws/norton_hoff.hpp"
 #include "formflow/physics/flow_laws/perfectly_plastic.hpp"
 #include "formflow/physics/flow_laws/piecewise_power.hpp"
+#include "formflow/physics/flow_laws/sellars_tegart.hpp"
 
 #include <optional>
 #include <string>
@@ -25,7 +26,15 @@ template <class... Laws> struct FlowLawList {
   using Variant = std::variant<Laws...>;
   using Tuple = std::tuple<Laws...>;
 };
-using FlowLaws = FlowLawList<PiecewisePower, NortonHoff, HenselSpittel, PerfectlyPlastic>;
+using FlowLaws =
+    FlowLawList<PiecewisePower, NortonHoff, HenselSpittel, PerfectlyPlastic, SellarsTegart>;
+
+/// True for a law whose response depends on a `temperature` member (hot-forming laws):
+/// a thermal run evaluates it at each point's temperature (FlowLawAt).
+template <class Law>
+concept TemperatureDependent = requires(Law law) {
+  law.temperature = Real{};
+};
 
 /// What every flow law answers, from its `response(rate)` (the law's own response at a
 /// rate clamped to [rate1, rate2]): the continuation outside [rate1, rate2], linear
@@ -105,6 +114,37 @@ struct FlowLaw : FlowLawMethods<FlowLaw> {
   /// The parameters of law `Law`, which `model` holds.
   template <class Law> Law& as() { return std::get<Law>(model); }
   template <class Law> const Law& as() const { return std::get<Law>(model); }
+  /// True when the law held reads a temperature (TemperatureDependent).
+  bool is_temperature_dependent() const {
+    return std::visit(
+        [](const auto& law) { return TemperatureDependent<std::decay_t<decltype(law)>>; }, model);
+  }
+};
+
+/// The law of `law` at temperature `temperature` (a thermal run's value at one quadrature
+/// point): a law that is not TemperatureDependent answers as `law` does. The isothermal
+/// path never builds one (it asks FlowLaw itself), so isothermal runs are unchanged.
+struct FlowLawAt : FlowLawMethods<FlowLawAt> {
+  const FlowLaw& law;
+  Real temperature;
+  Real rate1, rate2;
+  FlowLawAt(const FlowLaw& law_, Real temperature_)
+      : law(law_), temperature(temperature_), rate1(law_.rate1), rate2(law_.rate2) {}
+  FlowResponse response(Real rate) const {
+    const Real clamped = rate <= rate1 ? rate1 : (rate >= rate2 ? rate2 : rate);
+    return std::visit(
+        [&](const auto& model) {
+          using Law = std::decay_t<decltype(model)>;
+          if constexpr (TemperatureDependent<Law>) {
+            Law at_point = model;
+            at_point.temperature = temperature;
+            return at_point.at(clamped);
+          } else {
+            return model.at(clamped);
+          }
+        },
+        law.model);
+  }
 };
 
 /// What the case file says of the material: the law by name, its range and the
@@ -128,5 +168,10 @@ struct FlowLawChoice {
 /// [rate1/10, 10 rate2] that includes the break points. Returns what is violated, or
 /// std::nullopt. A law that fails is refused at load time (io/case_file.cpp).
 std::optional<std::string> check_flow_law(const FlowLaw& law);
+
+/// Condition (2.11) of a temperature-dependent law at every temperature of
+/// [low, high] (a sweep of 21 temperatures including both ends); the message names the
+/// temperature where it fails.
+std::optional<std::string> check_flow_law_over(const FlowLaw& law, Real low, Real high);
 
 } // namespace formflow::physics

@@ -60,6 +60,27 @@ struct Augmentation {
   Real friction_residual = 0.0;
 };
 
+/// Hot forming (thermal.enabled): the temperature and where the heat went, per unit
+/// depth (per radian in axisymmetry), at the final velocity (assembly/heat_problem.hpp).
+struct ThermalResults {
+  bool enabled = false;
+  VectorX temperature;                                  ///< n_nodes
+  Real exit_min = 0.0, exit_mean = 0.0, exit_max = 0.0; ///< on Γ5; mean flux-weighted
+  Real max_temperature = 0.0;                           ///< max nodal T
+  Real min_temperature = 0.0;                           ///< min nodal T
+  Real deformation = 0.0;                               ///< β ∫ σ_p ε̄̇ dx
+  Real friction = 0.0;                                  ///< share ∫_Γ3 τ_f|u_T| dΓ
+  Real tools = 0.0;            ///< ∫_Γ3 h (T − T_tool) dΓ, positive out of the workpiece
+  Real free_surfaces = 0.0;    ///< ∫_Γ2∪Γ4 h_free (T − T_ambient) dΓ
+  Real convected = 0.0;        ///< ∫ ρc u·∇T dx (convected out − in)
+  Real conducted = 0.0;        ///< conducted out through the rear end
+  int coupling_iterations = 0; ///< staggered steps (a flow solve and a heat solve each)
+  bool coupling_converged = false;
+  Real temperature_change = 0.0;    ///< last coupling step's max|ΔT| / max|T − T_billet|
+  Real force_change = 0.0;          ///< last coupling step's |Δp|/|p|
+  std::vector<int> flow_iterations; ///< nonlinear iterations of each flow solve
+};
+
 /// Fields on the mesh nodes (averaged from integration points) and cell means.
 struct Fields {
   /// Velocity, shape (dim · n_nodes), node-major: (u_x, u_y) of node 0, node 1, ...
@@ -70,6 +91,7 @@ struct Fields {
   VectorX friction_stress;             ///< n_nodes, 0 away from Γ3
   VectorX cell_equivalent_strain_rate; ///< n_cells, cell mean
   VectorX cell_hydrostatic_stress;     ///< n_cells, cell mean
+  VectorX temperature;                 ///< n_nodes (hot forming); empty: isothermal
 };
 
 struct Results {
@@ -97,6 +119,7 @@ struct Results {
   std::vector<ContactSample> contact;
   ContactZones container_zones, die_zones;
   Augmentation augmentation;
+  ThermalResults thermal;
   PhaseTimes timing; ///< seconds per phase: total, mesh, assembly, factorization, solve, post
 };
 

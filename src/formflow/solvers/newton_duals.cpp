@@ -80,6 +80,23 @@ void update_exact_slip_duals(const assembly::FormingProblem<dim>& problem, const
   }
 }
 
+/// Calls `f(law_of)`, `law_of(cell, q)` the flow law at full-rule point q of `cell`: the
+/// isothermal law bound once (one dispatch for the loop), or hot forming's law at the
+/// point's temperature (FormingProblem::point_temperatures).
+template <int dim, class F>
+void for_each_point_law(const assembly::FormingProblem<dim>& problem, F&& f) {
+  const std::vector<Real>& temperatures = problem.point_temperatures();
+  if (temperatures.empty()) {
+    problem.settings().law.visit_bound(
+        [&](const auto& law) { f([&](Index, int) -> const auto& { return law; }); });
+    return;
+  }
+  const int n_q = problem.full_rule().size();
+  f([&](Index cell, int q) {
+    return physics::FlowLawAt(problem.settings().law, temperatures[cell * n_q + q]);
+  });
+}
+
 } // namespace
 
 template <int dim>
@@ -98,13 +115,14 @@ void update_duals(const assembly::FormingProblem<dim>& problem, const VectorX& u
   typename fem::CellValues<dim>::Gradients coordinates, velocities, step_velocities,
       next_velocities;
   // One law dispatch for the whole loop: it evaluates the law twice per point.
-  problem.settings().law.visit_bound([&](const auto& law) {
+  for_each_point_law(problem, [&](const auto& law_of) {
     for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
       problem.gather(cell, &u, coordinates, velocities);
       problem.gather(cell, &step, coordinates, step_velocities);
       problem.gather(cell, &next, coordinates, next_velocities);
       problem.load_cell(cell, values, nullptr);
       for (int q = 0; q < n_q; ++q) {
+        const auto& law = law_of(cell, q);
         const Tensor3 next_dev =
             physics::deviator(problem.strain_rate_at(values, next_velocities, q));
         const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
@@ -145,12 +163,13 @@ void secant_duals(const assembly::FormingProblem<dim>& problem, const VectorX* p
   duals.resize(static_cast<std::size_t>(problem.mesh().n_cells()) * n_q);
   fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, previous_velocities, next_velocities;
-  problem.settings().law.visit_bound([&](const auto& law) {
+  for_each_point_law(problem, [&](const auto& law_of) {
     for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
       if (previous) problem.gather(cell, previous, coordinates, previous_velocities);
       problem.gather(cell, &next, coordinates, next_velocities);
       problem.load_cell(cell, values, nullptr);
       for (int q = 0; q < n_q; ++q) {
+        const auto& law = law_of(cell, q);
         const Tensor3 next_dev =
             physics::deviator(problem.strain_rate_at(values, next_velocities, q));
         const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());

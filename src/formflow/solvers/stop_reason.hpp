@@ -52,6 +52,12 @@ struct IterationRecord {
   Real relative_change = 0.0; ///< ‖uⁿ⁺¹ − uⁿ‖ / ‖uⁿ⁺¹‖
   Real pressure = 0.0;        ///< current process pressure (ram reaction / height)
   Real seconds = 0.0;         ///< wall time of this iteration
+  /// Hot forming: > 0 on the record that closes staggered coupling step `coupling`
+  /// (its relative_change is the temperature's, `force_change` the load's); 0 on every
+  /// iteration of a flow solve.
+  int coupling = 0;
+  Real force_change = 0.0;    ///< coupling records: |pᵏ − pᵏ⁻¹|/|pᵏ|
+  Real max_temperature = 0.0; ///< coupling records: max T
 };
 
 } // namespace formflow::solvers

@@ -55,6 +55,9 @@ template <int dim> struct CellState {
   std::span<const Real> viscosity;        ///< secant ν at the full-rule points
   std::span<const Tensor3> rates;         ///< ε̇ at the full-rule points (force, tangent, power)
   ViscousTangentData tangent;             ///< tangent passes only
+  /// Hot forming: the temperature at each full-rule point, at which the flow law is taken
+  /// (empty: the isothermal law, whose own parameters hold its temperature).
+  std::span<const Real> temperatures = {};
   /// The nodal velocities as one node-major local vector (local dof a·dim + i).
   Eigen::Map<const VectorX> local_velocity() const {
     return {velocities.data(), velocities.size()};

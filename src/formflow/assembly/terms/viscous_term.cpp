@@ -81,7 +81,11 @@ public:
       const Tensor3& rate = cell.rates[q];
       const Real equivalent = physics::equivalent_strain_rate(rate);
       const Tensor3 measured = deviatoric ? physics::deviator(rate) : rate;
-      power.plastic_dissipation += law_.dissipation(equivalent) * cell.full.JxW(q);
+      const Real dissipation =
+          cell.temperatures.empty()
+              ? law_.dissipation(equivalent)
+              : physics::FlowLawAt(law_, cell.temperatures[q]).dissipation(equivalent);
+      power.plastic_dissipation += dissipation * cell.full.JxW(q);
       power.viscous_form +=
           2.0 / 3.0 * cell.viscosity[q] * measured.cwiseProduct(measured).sum() * cell.full.JxW(q);
     }

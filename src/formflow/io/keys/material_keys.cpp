@@ -23,6 +23,19 @@ template <class Law> auto law_parameter(Real Law::*field) {
   };
 }
 
+/// material.temperature: the isothermal T of every temperature-dependent law.
+KeySpec temperature_key() {
+  KeySpec spec("material.temperature", KeyType::Real, 0.0);
+  spec.key.set = [](Case& c, const KeyValue& value) {
+    c.material.parameters_of<physics::HenselSpittel>().temperature = std::get<Real>(value);
+    c.material.parameters_of<physics::SellarsTegart>().temperature = std::get<Real>(value);
+  };
+  spec.key.get = [](const Case& c) -> KeyValue {
+    return c.material.parameters_of<physics::HenselSpittel>().temperature;
+  };
+  return spec;
+}
+
 } // namespace
 
 std::vector<CaseKey> material_keys() {
@@ -30,6 +43,7 @@ std::vector<CaseKey> material_keys() {
   using physics::NortonHoff;
   using physics::PerfectlyPlastic;
   using physics::PiecewisePower;
+  using physics::SellarsTegart;
   return {
       enum_key(
           "material.law", "piecewise_power", law_names(),
@@ -37,7 +51,8 @@ std::vector<CaseKey> material_keys() {
           .constraint("the law must satisfy condition (2.11) (checked at load time)")
           .doc("σ_p on [rate1, rate2], linear through the origin outside: piecewise_power "
                "A ε̄̇^α (paper eq. 5.4); norton_hoff √3 K (√3 ε̄̇)^m; hensel_spittel "
-               "A e^(m1 T) ε^m2 e^(m4/ε) ε̄̇^(m3 + m8 T); perfectly_plastic σ0"),
+               "A e^(m1 T) ε^m2 e^(m4/ε) ε̄̇^(m3 + m8 T); perfectly_plastic σ0; sellars_tegart "
+               "(1/α_s) asinh((ε̄̇ e^(Q/(R T))/A)^(1/n))"),
       real_key("material.A", 1.7320508075688772, law_parameter(&PiecewisePower::A))
           .within(1e-12, 1e12)
           .why(stress_range)
@@ -104,16 +119,41 @@ std::vector<CaseKey> material_keys() {
           .unit("1/temperature")
           .constraint("0 < m3 + m8 T ≤ 1")
           .doc("hensel_spittel: temperature dependence m8 T of the strain-rate exponent"),
-      real_key("material.temperature", 0.0, law_parameter(&HenselSpittel::temperature))
+      temperature_key()
           .within(-10000.0, 10000.0)
           .why(law_parameter_range)
           .unit("temperature")
-          .doc("hensel_spittel: the (uniform, constant) temperature T of the isothermal form"),
+          .doc("hensel_spittel, sellars_tegart: the (uniform, constant) temperature T of the "
+               "isothermal form (thermal.enabled replaces it by the field's T at each point)"),
       real_key("material.strain", 1.0, law_parameter(&HenselSpittel::strain))
           .within(1e-6, 1e6)
           .why(law_parameter_range)
           .doc("hensel_spittel: the reference equivalent strain ε at which the law is taken "
                "(the steady model carries no strain history)"),
+      real_key("material.st_alpha", 0.040, law_parameter(&SellarsTegart::alpha))
+          .within(1e-12, 1e12)
+          .why(law_parameter_range)
+          .unit("1/stress")
+          .doc("sellars_tegart: α_s of σ_p = (1/α_s) asinh((Z/A)^(1/n)), Z = ε̄̇ e^(Q/(R T))"),
+      real_key("material.st_n", 5.385, law_parameter(&SellarsTegart::n))
+          .within(1, 100)
+          .why("n ≥ 1 keeps σ_p′ ≤ σ_p/ε̄̇ (condition 2.11)")
+          .doc("sellars_tegart: stress exponent n"),
+      real_key("material.st_Q", 141550.0, law_parameter(&SellarsTegart::activation))
+          .within(0, 1e7)
+          .why(law_parameter_range)
+          .unit("energy/mol")
+          .doc("sellars_tegart: activation energy Q (J/mol)"),
+      real_key("material.st_A", 5.91e9, law_parameter(&SellarsTegart::A))
+          .within(1e-100, 1e100)
+          .why(law_parameter_range)
+          .unit("1/time")
+          .doc("sellars_tegart: A of Z/A"),
+      real_key("material.st_R", 8.314, law_parameter(&SellarsTegart::gas_constant))
+          .within(1e-12, 1e12)
+          .why(law_parameter_range)
+          .unit("energy/(mol·K)")
+          .doc("sellars_tegart: gas constant R (8.314 J/(mol·K))"),
   };
 }
 

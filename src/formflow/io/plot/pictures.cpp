@@ -102,13 +102,16 @@ std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mes
   const std::span<const std::string> names = picture_names();
   FF_ASSERT(names.size() == std::size(drawings), "one name per picture");
   std::vector<Picture> out;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    const DrawPicture picture = drawings[k];
+  // Hot forming adds temperature.png (io/results_writer.cpp lists it for every run).
+  const bool thermal = results.thermal.enabled;
+  for (std::size_t k = 0; k < names.size() + (thermal ? 1 : 0); ++k) {
+    const DrawPicture picture = k < names.size() ? drawings[k] : draw_temperature;
+    const std::string name = k < names.size() ? names[k] : std::string("temperature");
     const DrawFunction function = [&data, picture](Canvas& canvas) {
       picture(canvas, data);
       if (!data.results.converged()) draw_not_converged_mark(canvas, data.results.stop_reason);
     };
-    out.push_back({names[k], render_png(picture_width, picture_height, function),
+    out.push_back({name, render_png(picture_width, picture_height, function),
                    render_svg(picture_width, picture_height, function)});
   }
   return out;

@@ -39,6 +39,8 @@ struct Picture {
 void draw_strain_rate(const Canvas& canvas, const PictureData& data);
 /// Velocity arrows at (subsampled) nodes, coloured by speed, over the mesh.
 void draw_velocity(const Canvas& canvas, const PictureData& data);
+/// Hot forming only (render_pictures adds it when results.thermal.enabled).
+void draw_temperature(const Canvas& canvas, const PictureData& data);
 /// Filled contours of the hydrostatic pressure −σ_H, diverging colours centred on 0.
 void draw_pressure(const Canvas& canvas, const PictureData& data);
 /// A cell-wise pressure (one value per cell, compression positive) with no

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// Hot forming: the staggered loop between the flow and the heat problem (issue 18).
+#pragma once
+
+#include "formflow/app/simulation.hpp"
+#include "formflow/assembly/forming_problem.hpp"
+#include "formflow/assembly/heat_problem.hpp"
+#include "formflow/io/case.hpp"
+#include "formflow/post/results.hpp"
+#include "formflow/solvers/secant_iteration.hpp"
+
+#include <functional>
+
+namespace formflow::app {
+
+/// The plan's nonlinear loop on the problem as it stands (its point temperatures set),
+/// from `start` (null: the loop's own start).
+using FlowSolve = std::function<solvers::SecantOutcome(const VectorX* start)>;
+
+/// The heat sources at the velocity `u`: β σ_p ε̄̇ at the full-rule points and the
+/// friction share of λ_T·u_T at the Γ3 points (the friction power's own integrand).
+template <int dim>
+assembly::HeatSources heat_sources(const assembly::FormingProblem<dim>& problem,
+                                   const physics::Thermal& thermal, const VectorX& u,
+                                   const assembly::FrictionMultipliers<dim>* multipliers);
+
+/// The flow law's temperature at the points: T clamped to [lowest prescribed T,
+/// thermal.max_temperature], the range condition (2.11) was checked on.
+std::vector<Real> law_temperatures(const physics::Thermal& thermal, std::vector<Real> T);
+
+/// Staggered coupling: flow at the billet temperature, then heat ↔ flow until the
+/// temperature (relative to its rise) and the process pressure change by less than
+/// thermal.coupling_tolerance. Each step's closing record goes to `on_iteration`
+/// (IterationRecord::coupling > 0); fills results.thermal and returns the last flow
+/// outcome, whose stop reason is MaxIterations when the coupling did not converge.
+template <int dim>
+solvers::SecantOutcome
+couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
+               const FlowSolve& solve_flow, const IterationCallback& on_iteration,
+               const assembly::FrictionMultipliers<dim>& multipliers, post::Results& results);
+
+} // namespace formflow::app

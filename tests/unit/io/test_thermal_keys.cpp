@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// The [thermal] keys (issue 18): defaults, the TOML boolean switch, units, and the
+// refusals with the key, file and line named.
+#include "formflow/core/error.hpp"
+#include "formflow/io/case.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace formflow::io {
+namespace {
+
+InputError error_in(const std::string& text, const std::string& key, int line) {
+  try {
+    load_case_text(text, "hot.toml", {});
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.key, key) << error.what();
+    EXPECT_EQ(error.line, line) << error.what();
+    EXPECT_EQ(error.file, "hot.toml") << error.what();
+    return error;
+  }
+  ADD_FAILURE() << "no InputError for\n" << text;
+  return InputError("", -1, "", "");
+}
+
+TEST(ThermalKeys, DefaultsAreIsothermalWithTheIssuesShares) {
+  const Case case_ = load_case("", {});
+  EXPECT_FALSE(case_.thermal.enabled);
+  EXPECT_EQ(case_.thermal.taylor_quinney, 0.9);
+  EXPECT_EQ(case_.thermal.friction_share, 0.5);
+  EXPECT_EQ(case_.thermal.heat_transfer, 0.0);
+  EXPECT_EQ(case_.thermal.unit, physics::TemperatureUnit::Celsius);
+}
+
+TEST(ThermalKeys, EnabledTakesATomlBooleanAndTheString) {
+  EXPECT_TRUE(load_case_text("[thermal]\nenabled = true\n", "hot.toml", {}).thermal.enabled);
+  EXPECT_TRUE(load_case_text("", "hot.toml", {{"thermal.enabled", "true"}}).thermal.enabled);
+  EXPECT_TRUE(load_case_text("[thermal]\nenabled = \"true\"\n", "hot.toml", {}).thermal.enabled);
+  error_in("[thermal]\nenabled = 1\n", "thermal.enabled", 2);
+}
+
+TEST(ThermalKeys, TheUnitSetsSellarsTegartsAbsoluteTemperature) {
+  const Case celsius =
+      load_case_text("[material]\nlaw = \"sellars_tegart\"\ntemperature = 500\n", "hot.toml", {});
+  const Case kelvin = load_case_text("[material]\nlaw = \"sellars_tegart\"\ntemperature = 773.15\n"
+                                     "[thermal]\ntemperature_unit = \"kelvin\"\n",
+                                     "hot.toml", {});
+  // Sheppard's AA6063 constants (the defaults): σ_p = 20.5 MPa at 500 °C and 1 s⁻¹.
+  EXPECT_NEAR(celsius.material.yield_stress(1.0), 20.497, 1e-3);
+  EXPECT_NEAR(kelvin.material.yield_stress(1.0), celsius.material.yield_stress(1.0), 1e-9);
+}
+
+TEST(ThermalKeys, MaxTemperatureMustExceedThePrescribedOnes) {
+  const InputError error = error_in("[thermal]\nenabled = true\nbillet_temperature = 450\n"
+                                    "max_temperature = 400\n",
+                                    "thermal.max_temperature", 4);
+  EXPECT_NE(std::string(error.what()).find("450"), std::string::npos) << error.what();
+}
+
+TEST(ThermalKeys, ASharesIsAFraction) {
+  error_in("[thermal]\nfriction_share = 1.5\n", "thermal.friction_share", 2);
+  error_in("[thermal]\ntaylor_quinney = -0.1\n", "thermal.taylor_quinney", 2);
+}
+
+TEST(ThermalKeys, TrescaWithThermalIsRefusedForNow) {
+  error_in("[friction]\nlaw = \"tresca\"\nm = 0.5\n[thermal]\nenabled = true\n", "friction.law", 2);
+}
+
+TEST(ThermalKeys, ConditionTwoElevenIsCheckedOverTheTemperatureRange) {
+  // Hensel–Spittel's rate exponent m3 + m8 T = 0.1 + 0.002 T leaves (0, 1] above 450 °C:
+  // fine at the billet's 400 °C, refused on [400, 500].
+  const std::string law = "[material]\nlaw = \"hensel_spittel\"\nhs_m3 = 0.1\nhs_m8 = 0.002\n"
+                          "temperature = 400\n";
+  EXPECT_NO_THROW(load_case_text(law, "hot.toml", {}));
+  const InputError error =
+      error_in(law + "[thermal]\nenabled = true\nbillet_temperature = 400\ntool_temperature = "
+                     "400\nmax_temperature = 500\n",
+               "thermal.max_temperature", 10);
+  EXPECT_NE(std::string(error.what()).find("2.11"), std::string::npos) << error.what();
+}
+
+} // namespace
+} // namespace formflow::io
