@@ -13,7 +13,7 @@ void draw_temperature(const Canvas& canvas, const PictureData& data) {
              fmt::format("{}; exit mean {:.4g}, max {:.4g}",
                          run_description(data.case_, data.results), thermal.exit_mean,
                          thermal.max_temperature));
-  const FieldLayout layout = field_layout(data.mesh);
+  const FieldLayout layout = field_layout(data);
   const VectorX& T = data.results.fields.temperature;
   if (data.mesh.n_cells() == 0 || T.size() != data.mesh.n_nodes()) {
     draw_no_data(canvas, layout.axes.area(), "no temperature field");
