@@ -90,7 +90,9 @@ int run_case(const Options& options) {
                                 : fmt::format("mesh h = {:.6g}", case_.mesh.size);
     if (case_.mesh.dimension == 3) {
       const mesh::SolidChannel& solid = case_.mesh.solid;
-      if (solid.section == mesh::ChannelSection::Slab)
+      if (case_.manufactured != physics::ManufacturedSolution::None)
+        mesh_text += " (3D unit cube)";
+      else if (solid.section == mesh::ChannelSection::Slab)
         mesh_text += fmt::format(" (3D slab, thickness {:.6g})", solid.thickness);
       else if (solid.section == mesh::ChannelSection::Rectangle)
         mesh_text += fmt::format(" (3D rectangle quarter, half widths {:.6g} → {:.6g})",

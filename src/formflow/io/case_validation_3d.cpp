@@ -72,11 +72,6 @@ std::optional<KeyRefusal> unsupported_in_3d(const Case& case_) {
                       "three-dimensional meshes come from the structured generator only so far "
                       "(Gmsh solids and hexahedral .msh files are not implemented yet)",
                       "use mesh.source = \"structured\" with geometry.dimension = 3"};
-  if (case_.manufactured != physics::ManufacturedSolution::None)
-    return KeyRefusal{{"verification.solution", "geometry.dimension"},
-                      "the manufactured solutions live on the unit square: two-dimensional only "
-                      "so far",
-                      "use geometry.dimension = 2 with verification.solution"};
   return std::nullopt;
 }
 

@@ -79,7 +79,7 @@ std::string valid_size_text(const Case& case_, Real smallest, Real memory_bytes)
 std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real size) {
   Real cells = 0.0;
   if (is_manufactured(case_))
-    cells = 1.0 / (size * size); // the unit square
+    cells = std::pow(1.0 / size, case_.mesh.dimension); // the unit square or cube
   else if (case_.mesh.source == mesh::MeshSource::File)
     return std::nullopt;
   else

@@ -55,32 +55,42 @@ std::array<Tensor2<2>, 2> StreamFunctionField::hessians(const Point<2>& x) const
   return {h0, h1};
 }
 
-Point<2> manufactured_body_force(const FlowLaw& law, const StreamFunctionField& field,
-                                 const Point<2>& x) {
-  const Tensor3 rate = strain_rate<2>(field.gradient(x));
+template <int dim>
+Point<dim> viscous_body_force(const FlowLaw& law, const Tensor2<dim>& gradient,
+                              const std::array<Tensor2<dim>, dim>& hessian) {
+  const Tensor3 rate = strain_rate<dim>(gradient);
   const Tensor3 dev = deviator(rate);
   const Real rate_bar = equivalent_strain_rate(rate);
   FF_ASSERT(rate_bar > 0, "the manufactured field must have a positive equivalent strain rate");
-  const std::array<Tensor2<2>, 2> hessian = field.hessians(x);
 
   // ν = σ_p/ε̄̇ and dν/dε̄̇ = (σ_p′ ε̄̇ − σ_p)/ε̄̇².
   const Real viscosity = law.secant_viscosity(rate_bar);
   const Real viscosity_slope =
       (law.yield_stress_derivative(rate_bar) * rate_bar - law.yield_stress(rate_bar)) /
       (rate_bar * rate_bar);
-  Point<2> force = Point<2>::Zero();
-  for (int k = 0; k < 2; ++k) {
+  Point<dim> force = Point<dim>::Zero();
+  for (int k = 0; k < dim; ++k) {
     // ∂_k ε̇_ij = ½(∂_j∂_k u_i + ∂_i∂_k u_j); ∂_k ε̄̇ = ⅔ ė:∂_k ė / ε̄̇.
     Tensor3 rate_k = Tensor3::Zero();
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2; ++j) rate_k(i, j) = 0.5 * (hessian[i](j, k) + hessian[j](i, k));
+    for (int i = 0; i < dim; ++i)
+      for (int j = 0; j < dim; ++j) rate_k(i, j) = 0.5 * (hessian[i](j, k) + hessian[j](i, k));
     const Real rate_bar_k = 2.0 / 3.0 * dev.cwiseProduct(deviator(rate_k)).sum() / rate_bar;
     // f_i = −∂_k τ_ik, τ = ⅔ ν ε̇.
-    for (int i = 0; i < 2; ++i)
+    for (int i = 0; i < dim; ++i)
       force[i] -=
           2.0 / 3.0 * (viscosity_slope * rate_bar_k * rate(i, k) + viscosity * rate_k(i, k));
   }
   return force;
 }
+
+Point<2> manufactured_body_force(const FlowLaw& law, const StreamFunctionField& field,
+                                 const Point<2>& x) {
+  return viscous_body_force<2>(law, field.gradient(x), field.hessians(x));
+}
+
+template Point<2> viscous_body_force<2>(const FlowLaw&, const Tensor2<2>&,
+                                        const std::array<Tensor2<2>, 2>&);
+template Point<3> viscous_body_force<3>(const FlowLaw&, const Tensor2<3>&,
+                                        const std::array<Tensor2<3>, 3>&);
 
 } // namespace formflow::physics

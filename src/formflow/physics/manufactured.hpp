@@ -49,4 +49,10 @@ private:
 Point<2> manufactured_body_force(const FlowLaw& law, const StreamFunctionField& field,
                                  const Point<2>& x);
 
+/// The same force from a divergence-free field's gradient (∇u)_ij = ∂u_i/∂x_j and
+/// second derivatives hessians[i](j, k) = ∂²u_i/∂x_j∂x_k at one point, in 2D or 3D.
+template <int dim>
+Point<dim> viscous_body_force(const FlowLaw& law, const Tensor2<dim>& gradient,
+                              const std::array<Tensor2<dim>, dim>& hessians);
+
 } // namespace formflow::physics

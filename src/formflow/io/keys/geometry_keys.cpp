@@ -118,10 +118,10 @@ std::vector<CaseKey> geometry_keys() {
       integer_key(
           "geometry.dimension", 2, [](auto& c) -> auto& { return c.mesh.dimension; })
           .within(2, 3)
-          .constraint("3: mesh.source = \"structured\", geometry.symmetry = \"plane\", no "
-                      "verification.solution")
+          .constraint("3: mesh.source = \"structured\", geometry.symmetry = \"plane\"")
           .doc("2: the plane (or axisymmetric) channel in quadrilaterals; 3: the solid channel "
-               "of geometry.section in hexahedra (docs/3d.md)"),
+               "of geometry.section in hexahedra (docs/3d.md), or the unit cube of "
+               "verification.solution"),
       section_key(),
       real_key(
           "geometry.thickness", 1.0, [](auto& c) -> auto& { return c.mesh.solid.thickness; })
