@@ -102,6 +102,13 @@ void bind_values(py::module_& module) {
       .def_readonly("pressure", &solvers::IterationRecord::pressure,
                     "the process pressure of this iterate (ram reaction / height)")
       .def_readonly("seconds", &solvers::IterationRecord::seconds, "wall time of the iteration")
+      .def_readonly("coupling", &solvers::IterationRecord::coupling,
+                    "hot forming: > 0 on the record closing that coupling step (its "
+                    "relative_change is the temperature's); 0 on flow iterations")
+      .def_readonly("force_change", &solvers::IterationRecord::force_change,
+                    "coupling records: |pᵏ − pᵏ⁻¹|/|pᵏ|")
+      .def_readonly("max_temperature", &solvers::IterationRecord::max_temperature,
+                    "coupling records: max T")
       .def("__repr__", [](const solvers::IterationRecord& record) {
         return fmt::format("Iteration({}, relative_change={:.6g}, pressure={:.6g})",
                            record.iteration, record.relative_change, record.pressure);

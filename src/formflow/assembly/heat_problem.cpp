@@ -68,7 +68,8 @@ void HeatProblem<dim>::cell_system(Index cell, const VectorX& u, std::span<const
     const Real jxw = values.JxW(q);
     // (1) Galerkin convection N_a ρc u·∇N_b, (2) diffusion κ ∇N_a·∇N_b, (3) SUPG
     // τ (ρc u·∇N_a)(ρc u·∇N_b − q): the residual's −∇·(κ∇T) is dropped (zero for affine
-    // Q1, an O(τκ h⁰) inconsistency for Q2 that vanishes with τ at small Pe).
+    // Q1; for Q2 an O(h²) inconsistency, τκ → h²/12, that caps its L² rate at 2:
+    // docs/thermal.md).
     const VectorX test = shape + tau * rho_c * streamline;
     matrix.noalias() += (rho_c * jxw) * test * streamline.transpose();
     matrix.noalias() += (kappa * jxw) * grad.transpose() * grad;
