@@ -13,7 +13,7 @@ Usage: python3 bench/exact_friction_grid.py [--binary build-test/formflow]
            [--symmetries plane axisymmetric] [--tolerance 1e-4] [--regularised]
            [--set KEY=VALUE ...]   (extra case keys for every run, e.g. contact.normals='"nodes"')
 Columns besides those: the total power / (u0 H) (equals the reaction in balance) and
-the force imbalance ||R_f||/||f_driven|| of summary.json.
+the residual's power |u_f.R_f|/|u.f|_driven of summary.json (= |reaction - total power|/reaction).
 """
 import argparse
 import json
@@ -49,7 +49,7 @@ def main():
     args = parser.parse_args()
     extra = dict(item.split("=", 1) for item in args.extra)
     print("| ram | h | μ | element | symmetry | iterations (coarse + fine) | stop | reaction |"
-          " total power | regularised reaction | Coulomb residual | force imbalance |"
+          " total power | regularised reaction | Coulomb residual | residual's power |"
           " stick container | stick die | s exact | s regularised |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for symmetry in args.symmetries:
@@ -78,7 +78,7 @@ def main():
                               f'{exact["stop_reason"]} | {exact["pressure"]["ram_reaction"]:.6f} | '
                               f'{exact["pressure"]["total_power"]:.6f} | '
                               f'{regularised_reaction} | {contact.get("friction_residual", 0):.1e} | '
-                              f'{contact.get("force_imbalance", 0):.1e} | '
+                              f'{contact.get("power_residual", 0):.1e} | '
                               f'{contact["container"]["stick_length"]:.3f} | '
                               f'{contact["die"]["stick_length"]:.3f} | {s_exact:.2f} | {s_reg} |',
                               flush=True)

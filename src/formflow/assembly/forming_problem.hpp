@@ -64,10 +64,6 @@ public:
                        LinearSystem* tangent = nullptr, UnsymmetricTangent<dim>* coupling = nullptr,
                        const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
 
-  /// load += ∫_Γ3 traction_k·v dΓ over the Γ3 points k (contact_state order; full dof
-  /// vector): the nodal forces of point tractions (exact friction's stick correction).
-  void add_traction_load(const std::vector<Point<dim>>& traction, VectorX& load) const;
-
   /// y_f += N x_f for the coupling N of assemble_newton (free dof vectors).
   void apply_coupling(const UnsymmetricTangent<dim>& coupling, const VectorX& x_free,
                       VectorX& y_free) const;

@@ -115,30 +115,6 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
   }
 }
 
-template <int dim>
-void FormingProblem<dim>::add_traction_load(const std::vector<Point<dim>>& traction,
-                                            VectorX& load) const {
-  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
-  typename fem::CellValues<dim>::Gradients coordinates, unused;
-  const int n_face_q = facet_rule().size(), n_nodes = mesh_.nodes_per_cell();
-  for (std::size_t position = 0; position < discretisation_->contact_facets().size(); ++position) {
-    const mesh::BoundaryFacet& facet = mesh_.facets[discretisation_->contact_facets()[position]];
-    bool any = false;
-    for (int q = 0; q < n_face_q; ++q) any = any || !traction[position * n_face_q + q].isZero(0.0);
-    if (!any) continue;
-    gather(facet.cell, nullptr, coordinates, unused);
-    reinit_contact(facet_values, coordinates, static_cast<Index>(position));
-    for (int q = 0; q < n_face_q; ++q) {
-      const Point<dim>& t = traction[position * n_face_q + q];
-      if (t.isZero(0.0)) continue;
-      for (int a = 0; a < n_nodes; ++a)
-        for (int i = 0; i < dim; ++i)
-          load[fem::dof_of<dim>(mesh_.cells(a, facet.cell), i)] +=
-              facet_values.shape(q)[a] * facet_values.JxW(q) * t[i];
-    }
-  }
-}
-
 template <int dim> Real FormingProblem<dim>::driven_force(const VectorX& internal_force) const {
   Real force = 0.0;
   for (Index dof : constraints().driven_dofs) force += internal_force[dof];
@@ -159,8 +135,6 @@ template void FormingProblem<2>::apply_coupling(const UnsymmetricTangent<2>&, co
                                                 VectorX&) const;
 template void FormingProblem<3>::apply_coupling(const UnsymmetricTangent<3>&, const VectorX&,
                                                 VectorX&) const;
-template void FormingProblem<2>::add_traction_load(const std::vector<Point<2>>&, VectorX&) const;
-template void FormingProblem<3>::add_traction_load(const std::vector<Point<3>>&, VectorX&) const;
 template Real FormingProblem<2>::driven_force(const VectorX&) const;
 template Real FormingProblem<3>::driven_force(const VectorX&) const;
 

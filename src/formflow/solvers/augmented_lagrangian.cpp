@@ -14,8 +14,8 @@
 // remove the remaining stick-zone slip. τ_f is lagged: it is evaluated at the
 // current iterate in each assembly and at uᵏ in the update.
 #include "formflow/solvers/augmented_lagrangian.hpp"
-#include "formflow/solvers/force_balance.hpp"
 #include "formflow/solvers/friction_residual.hpp"
+#include "formflow/solvers/power_residual.hpp"
 #include "formflow/solvers/stall_watch.hpp"
 
 #include <algorithm>
@@ -94,64 +94,29 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
         // Newton (every iteration): the Coulomb conditions' residual at the problem's
         // scale (solvers/friction_residual.hpp), and a stall watch on it and the
         // velocity change. The secant AL loop keeps its multiplier-change test.
-        // Newton also asks the pair (u, λ) to be in balance on the free rows
-        // (solvers/force_balance.hpp): at stuck points a traction error of O(1) is a
-        // velocity change of 1e-8 only. Not measured after a secant step: not settled.
-        const Real imbalance =
+        // Newton also asks the residual's power to be < δ of the ram's: the reaction
+        // then equals the total power to δ (solvers/power_residual.hpp). At stuck points
+        // an O(1) traction error is a velocity change of 1e-8 only, which the change
+        // test cannot see. Not measured after a secant step: not settled then.
+        const Real unbalanced =
             state.internal_force
-                ? force_imbalance(problem.plan(), problem.forming().constraints().driven_dofs,
-                                  *state.internal_force)
+                ? power_residual(problem.plan(), problem.forming().constraints().driven_dofs,
+                                 *state.velocity, *state.internal_force)
                 : std::numeric_limits<Real>::infinity();
-        if (std::isfinite(imbalance)) outcome.force_imbalance = imbalance;
+        if (std::isfinite(unbalanced)) outcome.power_residual = unbalanced;
         const bool settled = every_iteration
-                                 ? std::max(update.residual, imbalance) < control.tolerance
+                                 ? std::max(update.residual, unbalanced) < control.tolerance
                                  : update.change < control.tolerance;
         if (every_iteration && !(settled && state.converged) &&
-            stall.stalled(std::max({state.relative_change, update.residual, imbalance})))
+            stall.stalled(std::max({state.relative_change, update.residual, unbalanced})))
           return {false, StopReason::Stalled};
         // An unsettled update starts the next inner solve, if an iteration is left for it.
         if (!settled && state.iteration < control.max_iterations) ++inner_solves;
         return {settled, std::nullopt};
       },
       true);
-  // Newton: the stick points of each step meet u_T = 0 exactly (to δ), by corrections of
-  // the step with its own factor; the multipliers there move with them (solvers/
-  // nonlinear_problem.hpp correct_step). The active set is the tangent's, fixed at round 0.
-  std::vector<char> stuck;
-  if (every_iteration)
-    problem.set_step_correction(
-        [&](const VectorX& u, const VectorX& trial, int round, VectorX& free_load) -> bool {
-          const assembly::FormingProblem<dim>& forming = problem.forming();
-          if (round == 0) {
-            const auto at_u = forming.contact_state(u, &outcome.multipliers);
-            stuck.assign(at_u.size(), 0);
-            for (std::size_t k = 0; k < at_u.size(); ++k) stuck[k] = at_u[k].sticking;
-          }
-          const auto at_trial = forming.contact_state(trial);
-          std::vector<Point<dim>>& lambda = outcome.multipliers.traction;
-          if (lambda.empty()) lambda.assign(at_trial.size(), Point<dim>::Zero());
-          std::vector<Point<dim>> change(at_trial.size(), Point<dim>::Zero());
-          Real change_norm = 0.0, norm = 0.0;
-          for (std::size_t k = 0; k < at_trial.size(); ++k) {
-            if (!stuck[k]) continue;
-            change[k] = forming.augmentation() * at_trial[k].tangential_velocity;
-            change_norm += change[k].squaredNorm() * at_trial[k].weight;
-            norm += (lambda[k] + change[k]).squaredNorm() * at_trial[k].weight;
-          }
-          // What is left is below what δ asks of the tractions: the step stands.
-          if (!(change_norm > control.tolerance * control.tolerance * norm)) return false;
-          for (std::size_t k = 0; k < at_trial.size(); ++k) lambda[k] += change[k];
-          VectorX load = VectorX::Zero(problem.plan().n_dofs());
-          forming.add_traction_load(change, load);
-          const assembly::ScatterPlan& plan = problem.plan();
-          free_load.resize(plan.n_free());
-          for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-            if (plan.free_index(dof) >= 0) free_load[plan.free_index(dof)] = -load[dof];
-          return true;
-        });
   outcome.solve = driver(problem);
   // The hook and the frozen multipliers refer to this call's locals.
-  problem.set_step_correction({});
   problem.set_after_iteration({}, false);
   problem.set_friction_multipliers(nullptr);
   outcome.augmentations = every_iteration ? updates : inner_solves;

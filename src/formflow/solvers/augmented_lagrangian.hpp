@@ -45,9 +45,9 @@ template <int dim> struct AugmentedOutcome {
   int augmentations = 0;        ///< outer (multiplier) updates
   Real multiplier_change = 0.0; ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
   Real friction_residual = 0.0; ///< last Coulomb residual (solvers/friction_residual.hpp)
-  /// Newton: last ‖R_f‖/‖f_driven‖ of the pair (u, λ) (solvers/force_balance.hpp); 0
-  /// for the secant loop, which solves each inner system to δ.
-  Real force_imbalance = 0.0;
+  /// Newton: the last measured power of the residual relative to the ram's, |u_f·R_f| /
+  /// |u·f on the driven dofs| (solvers/power_residual.hpp); 0 for the secant loop.
+  Real power_residual = 0.0;
 };
 
 /// What one multiplier update measured.

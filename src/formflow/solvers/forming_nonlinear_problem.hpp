@@ -17,8 +17,6 @@ namespace formflow::solvers {
 template <int dim> class FormingNonlinearProblem final : public NonlinearProblem {
 public:
   using Hook = std::function<AfterIteration(const IterationState&)>;
-  using StepCorrection =
-      std::function<bool(const VectorX& u, const VectorX& trial, int round, VectorX& free_load)>;
 
   explicit FormingNonlinearProblem(const assembly::FormingProblem<dim>& problem)
       : problem_(problem) {}
@@ -33,13 +31,6 @@ public:
   void set_after_iteration(Hook hook, bool changes) {
     hook_ = std::move(hook);
     hook_changes_ = changes;
-  }
-
-  /// Exact friction's stick correction inside each Newton step (correct_step).
-  void set_step_correction(StepCorrection correction) { correction_ = std::move(correction); }
-  bool correct_step(const VectorX& u, const VectorX& trial, int round,
-                    VectorX& free_load) override {
-    return correction_ && correction_(u, trial, round, free_load);
   }
 
   const assembly::ScatterPlan& plan() const override { return problem_.plan(); }
@@ -85,7 +76,6 @@ private:
   assembly::UnsymmetricTangent<dim> coupling_;
   Hook hook_;
   bool hook_changes_ = false;
-  StepCorrection correction_;
 };
 
 } // namespace formflow::solvers

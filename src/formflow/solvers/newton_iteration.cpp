@@ -41,12 +41,6 @@ VectorX free_part(const assembly::ScatterPlan& plan, const VectorX& full) {
 constexpr Real max_forcing = 1e-2, min_forcing = 1e-3;
 constexpr int max_krylov_iterations = 20;
 
-/// Corrections of one Newton step for constraints imposed by a penalty (correct_step):
-/// each contracts the constraint's violation by about the material's stiffness over
-/// the penalty (exact friction: viscous stiffness against r = 100/d_N), so two reach
-/// round-off; the cap bounds a round that does not contract (an inconsistent set).
-constexpr int max_step_corrections = 3;
-
 /// Working state shared by the steps of one solve.
 struct NewtonWork {
   NonlinearProblem& problem;
@@ -110,33 +104,7 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     work.linear.times().count("krylov iterations", krylov.iterations);
     if (!free_step.allFinite()) return std::nullopt;
   }
-  // Constraints the problem imposes by a penalty inside the step (exact friction's stick
-  // points): correct the step with the same factor until it meets them (correct_step).
-  // The residual at u changes with the corrected multipliers: the gradient follows.
-  VectorX gradient_now = gradient;
-  for (int round = 0; round < max_step_corrections; ++round) {
-    VectorX load;
-    if (!work.problem.correct_step(
-            velocity, velocity + plan.expand(free_step, VectorX::Zero(plan.n_dofs())), round, load))
-      break;
-    gradient_now -= load;
-    VectorX correction;
-    if (!work.problem.has_coupling()) {
-      if (work.linear.solve(load, correction)) return std::nullopt;
-    } else {
-      ScopedTimer timer(work.linear.times(), "krylov");
-      const CouplingProduct coupling = [&](const VectorX& x, VectorX& y) {
-        work.problem.apply_coupling(x, y);
-      };
-      const KrylovOutcome krylov =
-          solve_coupled_tangent(work.tangent.matrix, coupling, work.linear.solver(), load,
-                                correction, work.forcing, max_krylov_iterations);
-      work.linear.times().count("krylov iterations", krylov.iterations);
-      if (!correction.allFinite()) return std::nullopt;
-    }
-    free_step += correction;
-  }
-  const Real slope0 = free_step.dot(gradient_now); // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
+  const Real slope0 = free_step.dot(gradient); // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
   if (!(slope0 < 0)) return std::nullopt;
   const VectorX step = plan.expand(free_step, VectorX::Zero(plan.n_dofs()));
 

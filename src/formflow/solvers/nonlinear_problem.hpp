@@ -103,20 +103,6 @@ public:
   /// One Uzawa update from the velocity just solved for; the relative multiplier change.
   virtual Real update_constraint_multipliers(const VectorX& /*velocity*/) { return 0.0; }
 
-  // --- exact constraints inside a Newton step (optional) --------------------------
-  /// Called after Newton's step δ from `u` was solved, with the trial u + δ: where the
-  /// step imposes a constraint by a penalty (exact friction's stick points, λ̂ + r u_T),
-  /// move the frozen multipliers by the penalty's force at the trial (λ̂ += r u_T) and
-  /// return in `free_load` (free dof vector) the change of the residual that makes,
-  /// −ΔR; false when nothing is corrected. The driver solves J δc = free_load with the
-  /// same factor and adds δc: iterated, the step meets the constraint exactly (an
-  /// augmented Lagrangian of the linear step, solvers/augmented_lagrangian.cpp).
-  /// `round` counts the corrections of this step from 0 (round 0 fixes the active set).
-  virtual bool correct_step(const VectorX& /*u*/, const VectorX& /*trial*/, int /*round*/,
-                            VectorX& /*free_load*/) {
-    return false;
-  }
-
   // --- the after-iteration hook ---------------------------------------------------
   /// after_iteration may change the problem (Newton then cannot reuse a tangent
   /// assembled ahead with the old state).

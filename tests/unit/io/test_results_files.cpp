@@ -284,7 +284,7 @@ TEST_F(ResultsFiles, SummaryReportsStickAndSlipPerContactPart) {
   EXPECT_EQ(contact.at("augmented_lagrangian").at("outer_iterations"), 12);
   EXPECT_EQ(contact.at("augmented_lagrangian").at("multiplier_change"), 3e-5);
   EXPECT_EQ(contact.at("friction_residual"), 4e-6);
-  EXPECT_EQ(contact.at("force_imbalance"), 2e-7);
+  EXPECT_EQ(contact.at("power_residual"), 2e-7);
 }
 
 TEST_F(ResultsFiles, SummaryOfAnUnconvergedDrawingRun) {
