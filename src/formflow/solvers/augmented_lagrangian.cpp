@@ -26,7 +26,8 @@ namespace formflow::solvers {
 
 namespace {
 
-/// Iterations without a new minimum of max(velocity change, friction residual) that
+/// Iterations without a new minimum of max(velocity change, friction residual, residual's
+/// power) that
 /// make exact friction's Newton loop a stall. While Newton converges its merit falls in
 /// nearly every iteration; 8 leaves room for a few active-set changes. Not tuned: with
 /// the residual's power in the merit (session 7) 119 of the grid's 120 Q2/Q1 cases at
