@@ -11,6 +11,9 @@ one), the Coulomb residual, the stick lengths and the wall time of each run.
 Usage: python3 bench/exact_friction_grid.py [--binary build-test/formflow]
            [--out /tmp/ff-grid] [--sizes 1 0.5] [--mus 0.1 0.2 0.3] [--elements Q2 Q1]
            [--symmetries plane axisymmetric] [--tolerance 1e-4] [--regularised]
+           [--set KEY=VALUE ...]   (extra case keys for every run, e.g. contact.normals='"nodes"')
+Columns besides those: the total power / (u0 H) (equals the reaction in balance) and
+the residual's power |u_f.R_f|/|u.f|_driven of summary.json (= |reaction - total power|/reaction).
 """
 import argparse
 import json
@@ -41,11 +44,14 @@ def main():
     parser.add_argument("--rams", nargs="+", default=["sliding", "sticking"])
     parser.add_argument("--tolerance", default="1e-4")
     parser.add_argument("--regularised", action="store_true")
+    parser.add_argument("--set", nargs="*", default=[], dest="extra",
+                        help="KEY=VALUE case settings added to every run")
     args = parser.parse_args()
+    extra = dict(item.split("=", 1) for item in args.extra)
     print("| ram | h | μ | element | symmetry | iterations (coarse + fine) | stop | reaction |"
-          " regularised reaction | Coulomb residual | stick container | stick die | s exact |"
-          " s regularised |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          " total power | regularised reaction | Coulomb residual | residual's power |"
+          " stick container | stick die | s exact | s regularised |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for symmetry in args.symmetries:
         for element in args.elements:
             for ram in args.rams:
@@ -56,7 +62,7 @@ def main():
                                     "integration.volumetric": "2" if element == "Q2" else "1",
                                     "geometry.symmetry": f'"{symmetry}"',
                                     "solver.tolerance": args.tolerance,
-                                    "solver.max_iterations": "200"}
+                                    "solver.max_iterations": "200", **extra}
                         name = f"{symmetry}-{element}-{ram}-h{size}-mu{mu}"
                         exact, s_exact = run(args.binary, args.out, name + "-exact",
                                              {**settings, "friction.regularization": '"none"'})
@@ -70,7 +76,9 @@ def main():
                         print(f'| {ram} | {size} | {mu} | {element} | {symmetry} | '
                               f'{coarse} + {exact["iterations"]} = {coarse + exact["iterations"]} | '
                               f'{exact["stop_reason"]} | {exact["pressure"]["ram_reaction"]:.6f} | '
+                              f'{exact["pressure"]["total_power"]:.6f} | '
                               f'{regularised_reaction} | {contact.get("friction_residual", 0):.1e} | '
+                              f'{contact.get("power_residual", 0):.1e} | '
                               f'{contact["container"]["stick_length"]:.3f} | '
                               f'{contact["die"]["stick_length"]:.3f} | {s_exact:.2f} | {s_reg} |',
                               flush=True)

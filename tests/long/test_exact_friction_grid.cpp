@@ -31,7 +31,12 @@ TEST_P(ExactFrictionFullGrid, ConvergesInBoundedIterations) {
   c.symmetry = symmetry;
   // At δ = 1e-4: within 25 iterations, the load against the regularised law. At 1e-8
   // the question is convergence without cycling (measured up to 44 iterations on Q2
-  // plane h = 0.25, μ = 0.5: the multiplier updates make the tail linear there).
+  // plane h = 0.25, μ = 0.5: the multiplier updates make the tail linear there). Every
+  // case also asks reaction = total power (the residual's power in the stop rule).
+  // Known failure (session 7, docs/friction.md "Session 7"): Q2 axisymmetric, sticking
+  // ram, h = 0.25, μ = 0.5 stalls at both δ (the loop does not settle its stuck
+  // tractions; the old rule stopped it with a load 7e-4 off). Q1 rows at δ = 1e-8 and
+  // this test as a whole were not run in session 7.
   const bool paper_tolerance = tolerance > 1e-6;
   check_grid_case(c, tolerance, paper_tolerance, paper_tolerance);
 }

@@ -78,7 +78,7 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
     results.augmentation = {augmented.augmentations, augmented.multiplier_change,
-                            augmented.friction_residual};
+                            augmented.friction_residual, augmented.power_residual};
   };
   switch (plan.loop) {
   case solvers::LoopKind::AugmentedNewton:

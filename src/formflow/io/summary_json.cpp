@@ -81,6 +81,8 @@ json contact_json(const Case& case_, const post::Results& results) {
     // The Coulomb conditions' residual at the last update, at the problem's scale
     // ‖λ_T‖/‖u_T‖ (what the Newton loop's stop rule tests against solver.tolerance).
     out["friction_residual"] = results.augmentation.friction_residual;
+    // Newton: the residual's power relative to the ram's (solvers/power_residual.hpp).
+    out["power_residual"] = results.augmentation.power_residual;
   }
   return out;
 }

@@ -58,6 +58,9 @@ struct Augmentation {
   /// Last residual of the Coulomb conditions, ‖λ − proj(λ + r̄ u_T)‖/‖λ‖ in L²(Γ3) at
   /// the problem's scale r̄ = ‖λ‖/‖u_T‖ (solvers/friction_residual.hpp).
   Real friction_residual = 0.0;
+  /// Newton: last power of the residual relative to the ram's, |u_f·R_f|/|u·f|_driven,
+  /// = |reaction − total power|/reaction (solvers/power_residual.hpp); 0 for secant.
+  Real power_residual = 0.0;
 };
 
 /// Hot forming (thermal.enabled): the temperature and where the heat went, per unit

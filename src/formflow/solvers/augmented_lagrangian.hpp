@@ -35,11 +35,19 @@ using InnerDriver = std::function<SecantOutcome(NonlinearProblem& problem)>;
 template <int dim> struct AugmentedOutcome {
   /// Final velocity, stop reason and the inner iterations of all outer steps, numbered on.
   SecantOutcome solve;
-  /// λ_T at the Γ3 points after the last update (what post-processing evaluates with).
+  /// The frozen λ̂ the last iterate was assembled with: its equilibrium holds with the
+  /// traction proj(λ̂ + r u_T) (= the last update), so post-processing evaluates with
+  /// these. Evaluating with the updated multipliers instead projected once more,
+  /// proj(λᵏ⁺¹ + r u_T), which differs by r u_T at stuck points (r = 1e8: slips of 1e-9
+  /// are tractions of 0.1) and broke reaction = total power where stuck points load the
+  /// ram's prescribed dofs (docs/friction.md "Reaction and total power").
   assembly::FrictionMultipliers<dim> multipliers;
   int augmentations = 0;        ///< outer (multiplier) updates
   Real multiplier_change = 0.0; ///< last ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3)
   Real friction_residual = 0.0; ///< last Coulomb residual (solvers/friction_residual.hpp)
+  /// Newton: the last measured power of the residual relative to the ram's, |u_f·R_f| /
+  /// |u·f on the driven dofs| (solvers/power_residual.hpp); 0 for the secant loop.
+  Real power_residual = 0.0;
 };
 
 /// What one multiplier update measured.

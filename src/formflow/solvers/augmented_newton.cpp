@@ -12,8 +12,11 @@
 //    when an iteration changed u by < δ with λ̂ frozen AND the pair (u, λ̂ updated)
 //    has a Coulomb residual < δ at the problem's scale ‖λ‖/‖u_T‖
 //    (solvers/friction_residual.hpp), not at the algorithm's r = 1e8, which made the
-//    old test, the multiplier change, wait for slips of 1e-12 (issue 16); a loop whose
-//    merit max(change, residual) sets no new minimum for 8 iterations stops Stalled.
+//    old test, the multiplier change, wait for slips of 1e-12 (issue 16), AND the
+//    residual's power is < δ of the ram's (solvers/power_residual.hpp: reaction = total
+//    power to δ; the velocity change cannot see O(1) traction errors at stuck points);
+//    a loop whose merit max(change, residual, residual's power) sets no new minimum for
+//    8 iterations stops Stalled.
 //  * The tangent keeps λ̂ frozen (assembly/newton_system.cpp): the stick penalty r
 //    stays in the SPD tangent and the nonlocal dτ_f in the GMRES coupling. A
 //    semismooth Newton on (u, λ) would turn stick points into the constraint

@@ -235,8 +235,9 @@ SecantOutcome newton_iteration(NonlinearProblem& problem, LinearSolver& solver,
     outcome.history.push_back(record);
     if (on_iteration) on_iteration(record);
     const auto own = stop_after_iteration(change, step_change, record.pressure, control.tolerance);
-    const AfterIteration after = problem.after_iteration(
-        {iteration, &outcome.velocity, own == StopReason::Converged, change});
+    const AfterIteration after =
+        problem.after_iteration({iteration, &outcome.velocity, own == StopReason::Converged, change,
+                                 newton ? &work.force : nullptr});
     if (const auto stop = stop_with_hook(own, after)) {
       outcome.stop_reason = *stop;
       return outcome;

@@ -37,6 +37,9 @@ struct IterationState {
   bool converged = false;
   /// The relative change the driver's own stop rule tested against δ.
   Real relative_change = 0.0;
+  /// The internal force at the new iterate (full dof vector; free rows: the residual
+  /// R(u)) when the driver evaluated it there (Newton steps), else null.
+  const VectorX* internal_force = nullptr;
 };
 
 /// The hook's verdict: whether its state (e.g. multipliers) has settled, or a reason to stop.

@@ -278,12 +278,13 @@ TEST_F(ResultsFiles, SummaryReportsStickAndSlipPerContactPart) {
   EXPECT_FALSE(contact.contains("augmented_lagrangian")); // only for exact friction
 
   case_.friction.regularization = physics::FrictionRegularization::None;
-  results_.augmentation = {12, 3e-5, 4e-6};
+  results_.augmentation = {12, 3e-5, 4e-6, 2e-7};
   contact = nlohmann::json::parse(io::summary_json(case_, results_)).at("contact");
   EXPECT_EQ(contact.at("regularization"), "none");
   EXPECT_EQ(contact.at("augmented_lagrangian").at("outer_iterations"), 12);
   EXPECT_EQ(contact.at("augmented_lagrangian").at("multiplier_change"), 3e-5);
   EXPECT_EQ(contact.at("friction_residual"), 4e-6);
+  EXPECT_EQ(contact.at("power_residual"), 2e-7);
 }
 
 TEST_F(ResultsFiles, SummaryOfAnUnconvergedDrawingRun) {
