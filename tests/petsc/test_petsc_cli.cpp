@@ -22,10 +22,10 @@ constexpr const char* small_case = "--set mesh.size=2.5 --set solver.linear=pets
 TEST(PetscCli, CommandLineOptionsReachTheSolverAndTheMonitorShowsKrylovIterations) {
   testing::ScratchDirectory scratch("formflow-petsc-cli");
   // GMRES preconditioned by the exact MUMPS factorisation: one iteration per solve.
-  const testing::CliResult run = testing::run_cli(
-      "run -o " + quoted((scratch / "results").string()) + " " + small_case +
-          "-ksp_type gmres -ksp_rtol 1e-12",
-      scratch.path());
+  const testing::CliResult run =
+      testing::run_cli("run -o " + quoted((scratch / "results").string()) + " " + small_case +
+                           "-ksp_type gmres -ksp_rtol 1e-12",
+                       scratch.path());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(has_text(run.out, "krylov"));
   const auto summary =
@@ -73,10 +73,10 @@ TEST(PetscCli, AMisspeltCaseOptionNamesTheKeyAndItsLine) {
 /// write the whole case: refused, with one message (rank 0's), not N.
 TEST(PetscCli, SeveralMpiRanksAreRefusedOnce) {
   testing::ScratchDirectory scratch("formflow-petsc-cli");
-  const std::string command =
-      "mpirun -np 2 --oversubscribe --allow-run-as-root " + quoted(FORMFLOW_BINARY) +
-      " run -q -o " + quoted((scratch / "results").string()) + " " + small_case + " 2> " +
-      quoted((scratch / "err.txt").string()) + " > /dev/null";
+  const std::string command = "mpirun -np 2 --oversubscribe --allow-run-as-root " +
+                              quoted(FORMFLOW_BINARY) + " run -q -o " +
+                              quoted((scratch / "results").string()) + " " + small_case + " 2> " +
+                              quoted((scratch / "err.txt").string()) + " > /dev/null";
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);

@@ -82,7 +82,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(std::vector<io::Override>{},                              // the paper's case
                       std::vector<io::Override>{{"friction.mu", "0.1"}},        // friction, Newton
                       std::vector<io::Override>{{"formulation.type", "mixed"}}, // mixed, condensed
-                      std::vector<io::Override>{{"formulation.type", "mixed"}, {"penalty.d", "0"}}));
+                      std::vector<io::Override>{{"formulation.type", "mixed"},
+                                                {"penalty.d", "0"}}));
 
 TEST(PetscSolver, TaylorHoodSaddlePointByMumpsLu) {
   const std::vector<io::Override> taylor_hood = {{"formulation.type", "mixed"},

@@ -54,7 +54,7 @@ using Clock = std::chrono::steady_clock;
 template <int dim>
 solvers::SecantOutcome
 run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingProblem<dim>& problem,
-         solvers::LinearSolver& solver_ref, const IterationCallback& on_iteration,
+         solvers::LinearSolver& solver, const IterationCallback& on_iteration,
          post::Results& results, const VectorX* start_velocity,
          assembly::FrictionMultipliers<dim>& multipliers);
 
@@ -109,16 +109,15 @@ solvers::SecantOutcome run_counted_loop(const SolvePlan& plan, const io::Case& c
 template <int dim>
 solvers::SecantOutcome
 run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingProblem<dim>& problem,
-         solvers::LinearSolver& solver_ref, const IterationCallback& on_iteration,
+         solvers::LinearSolver& solver, const IterationCallback& on_iteration,
          post::Results& results, const VectorX* start_velocity,
          assembly::FrictionMultipliers<dim>& multipliers) {
-  solvers::LinearSolver* const solver = &solver_ref;
   solvers::SecantOutcome outcome;
   // Each loop is a driver (secant or Newton) over the problem's nonlinear
   // interface, its linear step swapped (Uzawa steps, the saddle point) or the
   // whole driver wrapped by exact friction's augmentation.
   solvers::FormingNonlinearProblem<dim> nonlinear(problem);
-  solvers::TimedLinearStep linear(*solver, results.timing);
+  solvers::TimedLinearStep linear(solver, results.timing);
   const auto take_augmented = [&](solvers::AugmentedOutcome<dim>&& augmented) {
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
@@ -129,13 +128,13 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
   case solvers::LoopKind::AugmentedNewton:
     // Exact Coulomb friction by Newton, multipliers updated between its steps
     // (solvers/augmented_newton.hpp).
-    take_augmented(solvers::augmented_newton(nonlinear, *solver, case_.solver, on_iteration,
+    take_augmented(solvers::augmented_newton(nonlinear, solver, case_.solver, on_iteration,
                                              results.timing, start_velocity));
     return outcome;
   case solvers::LoopKind::AugmentedSecant:
     // Exact friction, the paper's method (or a mixed formulation): the
     // augmentation around the secant iteration, an update per converged inner solve.
-    take_augmented(solvers::augmented_lagrangian(nonlinear, *solver, case_.solver, on_iteration,
+    take_augmented(solvers::augmented_lagrangian(nonlinear, solver, case_.solver, on_iteration,
                                                  results.timing));
     return outcome;
   case solvers::LoopKind::SaddlePointSecant: {
@@ -151,11 +150,10 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
   case solvers::LoopKind::Newton:
     // The penalty problem (plane and axisymmetric) and the mixed one with its
     // pressure condensed at d > 0 (the condensation is linear in u).
-    return solvers::newton_iteration(nonlinear, *solver, case_.solver, on_iteration, results.timing,
+    return solvers::newton_iteration(nonlinear, solver, case_.solver, on_iteration, results.timing,
                                      start_velocity);
   case solvers::LoopKind::Secant:
-    return solvers::secant_iteration(nonlinear, *solver, case_.solver, on_iteration,
-                                     results.timing);
+    return solvers::secant_iteration(nonlinear, solver, case_.solver, on_iteration, results.timing);
   }
   FF_ASSERT(false, "every loop kind is handled above");
   return {};

@@ -25,8 +25,7 @@ std::vector<std::string_view> tokens(std::string_view text) {
 
 /// "-name": a dash and a letter (so "-1e-3" and "-" are values, not names).
 bool is_name(std::string_view token) {
-  return token.size() >= 2 && token[0] == '-' &&
-         std::isalpha(static_cast<unsigned char>(token[1]));
+  return token.size() >= 2 && token[0] == '-' && std::isalpha(static_cast<unsigned char>(token[1]));
 }
 
 bool is_name_character(char c) {
@@ -70,8 +69,8 @@ std::optional<std::string> petsc_option_syntax_error(std::string_view text) {
 
 bool is_petsc_option_name(std::string_view name) {
   static constexpr std::array<std::string_view, 12> families = {
-      "-ksp_", "-pc_",  "-mat_",      "-fieldsplit_",   "-mg_",      "-sub_",
-      "-vec_", "-log_", "-info",      "-options_left", "-malloc_", "-snes_"};
+      "-ksp_", "-pc_",  "-mat_", "-fieldsplit_",  "-mg_",     "-sub_",
+      "-vec_", "-log_", "-info", "-options_left", "-malloc_", "-snes_"};
   for (const std::string_view family : families)
     if (name.substr(0, family.size()) == family) return true;
   return false;

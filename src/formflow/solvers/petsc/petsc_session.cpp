@@ -70,7 +70,9 @@ void ensure_initialized() {
   if (!initialised) fallback_session() = std::make_unique<Session>();
 }
 
-const std::vector<PetscOption>& command_line_options() { return stored_command_line(); }
+const std::vector<PetscOption>& command_line_options() {
+  return stored_command_line();
+}
 
 int n_ranks() {
   ensure_initialized();
@@ -108,9 +110,13 @@ OptionsScope::Unused OptionsScope::unused() const {
   return {unused_of(case_options_), unused_of(command_line_options())};
 }
 
-ErrorCapture::ErrorCapture() { PetscPushErrorHandler(&ErrorCapture::handler, this); }
+ErrorCapture::ErrorCapture() {
+  PetscPushErrorHandler(&ErrorCapture::handler, this);
+}
 
-ErrorCapture::~ErrorCapture() { PetscPopErrorHandler(); }
+ErrorCapture::~ErrorCapture() {
+  PetscPopErrorHandler();
+}
 
 PetscErrorCode ErrorCapture::handler(MPI_Comm, int, const char*, const char*, PetscErrorCode code,
                                      PetscErrorType type, const char* message, void* self) {

@@ -251,9 +251,10 @@ private:
 
   [[noreturn]] void refuse(const std::string& message, const std::string& hint) const {
     throw InputError("", 0, options_key,
-                     fmt::format("value \"{}\": {}", options_, message.empty() ? "refused by "
-                                                                                 "PETSc"
-                                                                               : message),
+                     fmt::format("value \"{}\": {}", options_,
+                                 message.empty() ? "refused by "
+                                                   "PETSc"
+                                                 : message),
                      hint);
   }
 
@@ -264,9 +265,9 @@ private:
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
   std::vector<PetscInt> pattern_outer_, pattern_inner_;
-  Index n_first_ = 0;                   ///< velocity dofs of a saddle point (set_fields)
+  Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)
   std::vector<VectorX> near_null_space_; ///< the velocity block's rigid-body modes
-  IS fields_[2] = {nullptr, nullptr};   ///< fieldsplit's "u" and "p"
+  IS fields_[2] = {nullptr, nullptr};    ///< fieldsplit's "u" and "p"
   long iterations_ = 0;
   bool checked_unused_ = false;
 };
