@@ -12,6 +12,7 @@ packages=(
   libcairo2-dev fonts-dejavu-core libgmsh-dev
   libgtest-dev libgmock-dev libbenchmark-dev numdiff python3-vtk9
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-pil
+  petsc-dev libopenmpi-dev
 )
 # The caller's own additions (./test: chromium for the report's browser test), in
 # the same apt-get run.

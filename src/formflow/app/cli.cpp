@@ -82,7 +82,8 @@ int run_case(const Options& options) {
   print_warnings(case_);
   // Before the solve: a -o that cannot take the results costs nothing (exit 2).
   io::check_output_directory(options.output_directory, io::result_file_names());
-  Monitor monitor(stdout, case_.solver.tolerance, case_.solver.max_iterations);
+  Monitor monitor(stdout, case_.solver.tolerance, case_.solver.max_iterations,
+                  case_.solver.linear == solvers::LinearSolverKind::Petsc);
   const bool show = !options.quiet && !options.json;
   if (show) {
     std::string mesh_text = case_.mesh.source == mesh::MeshSource::File

@@ -89,7 +89,8 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
         guess = fem::interpolate_nodal_field(previous_mesh, previous_velocity, dim, mesh);
     }
     auto solver = solvers::make_linear_solver(make_solve_plan(case_).linear,
-                                              solvers::MatrixStorage::SymmetricLower);
+                                              solvers::MatrixStorage::SymmetricLower,
+                                              case_.solver.petsc_options);
     solvers::FormingNonlinearProblem<dim> nonlinear(*problem);
     solvers::SecantOutcome outcome = solvers::newton_iteration(
         nonlinear, *solver, control, {}, times, level < levels ? &guess : nullptr);

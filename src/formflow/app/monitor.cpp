@@ -10,8 +10,8 @@
 namespace formflow::app {
 
 void Monitor::header() const {
-  fmt::print(out_, "{:>5}  {:>12}  {:>12}  {:>9}  {:>9}\n", "iter", "rel.change", "pressure",
-             "time[s]", "left[s]");
+  fmt::print(out_, "{:>5}  {:>12}  {:>12}  {:>9}  {:>9}{}\n", "iter", "rel.change", "pressure",
+             "time[s]", "left[s]", krylov_ ? fmt::format("  {:>7}", "krylov") : "");
   std::fflush(out_);
 }
 
@@ -46,8 +46,14 @@ void Monitor::operator()(const solvers::IterationRecord& record) {
     const Real iterations_left = std::max(0, max_iterations_ - record.iteration);
     left = fmt::format("{:.2f}", std::min(remaining, iterations_left) * record.seconds);
   }
-  fmt::print(out_, "{:>5}  {:>12.4e}  {:>12.6f}  {:>9.3f}  {:>9}\n", record.iteration,
-             record.relative_change, record.pressure, elapsed_, left);
+  // An iterative back-end's Krylov iterations in this step (solver.linear = "petsc").
+  const std::string krylov =
+      krylov_ ? fmt::format("  {:>7}", record.linear_iterations < 0
+                                           ? std::string("-")
+                                           : std::to_string(record.linear_iterations))
+              : std::string();
+  fmt::print(out_, "{:>5}  {:>12.4e}  {:>12.6f}  {:>9.3f}  {:>9}{}\n", record.iteration,
+             record.relative_change, record.pressure, elapsed_, left, krylov);
   std::fflush(out_);
 }
 

@@ -65,15 +65,70 @@ using Clock = std::chrono::steady_clock;
 template <int dim>
 solvers::SecantOutcome
 run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingProblem<dim>& problem,
-         const IterationCallback& on_iteration, post::Results& results,
-         const VectorX* start_velocity, assembly::FrictionMultipliers<dim>& multipliers) {
-  auto solver = solvers::make_linear_solver(plan.linear, solvers::loop_storage(plan.loop));
+         solvers::LinearSolver& solver, const IterationCallback& on_iteration,
+         post::Results& results, const VectorX* start_velocity,
+         assembly::FrictionMultipliers<dim>& multipliers);
+
+/// The Krylov iterations of each recorded iteration, from the solver's running
+/// count: the observer sees them on its record, and the history gets them after
+/// the loop (the drivers record before they call the observer).
+class KrylovCounter {
+public:
+  KrylovCounter(const solvers::LinearSolver& solver, const IterationCallback& on_iteration)
+      : solver_(solver), on_iteration_(on_iteration), seen_(solver.krylov_iterations()) {}
+  IterationCallback observer() {
+    return [this](const solvers::IterationRecord& record) {
+      solvers::IterationRecord counted = record;
+      const long total = solver_.krylov_iterations();
+      counted.linear_iterations = total < 0 ? -1 : total - seen_;
+      seen_ = total;
+      per_iteration_.push_back(counted.linear_iterations);
+      if (on_iteration_) on_iteration_(counted);
+    };
+  }
+  void fill(std::vector<solvers::IterationRecord>& history) const {
+    for (std::size_t i = 0; i < history.size() && i < per_iteration_.size(); ++i)
+      history[i].linear_iterations = per_iteration_[i];
+  }
+
+private:
+  const solvers::LinearSolver& solver_;
+  const IterationCallback& on_iteration_;
+  long seen_;
+  std::vector<long> per_iteration_;
+};
+
+/// The loop of the plan with the solver it names; the linear algebra's record in
+/// `results`.
+template <int dim>
+solvers::SecantOutcome run_counted_loop(const SolvePlan& plan, const io::Case& case_,
+                                        const assembly::FormingProblem<dim>& problem,
+                                        const IterationCallback& on_iteration,
+                                        post::Results& results, const VectorX* start_velocity,
+                                        assembly::FrictionMultipliers<dim>& multipliers) {
+  auto solver = solvers::make_linear_solver(plan.linear, solvers::loop_storage(plan.loop),
+                                            case_.solver.petsc_options);
+  KrylovCounter counter(*solver, on_iteration);
+  solvers::SecantOutcome outcome = run_loop(plan, case_, problem, *solver, counter.observer(),
+                                            results, start_velocity, multipliers);
+  counter.fill(outcome.history);
+  results.linear_algebra.solver = solver->name(); // e.g. "petsc-gmres-cholesky"
+  results.linear_algebra.iterations = solver->krylov_iterations();
+  return outcome;
+}
+
+template <int dim>
+solvers::SecantOutcome
+run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingProblem<dim>& problem,
+         solvers::LinearSolver& solver, const IterationCallback& on_iteration,
+         post::Results& results, const VectorX* start_velocity,
+         assembly::FrictionMultipliers<dim>& multipliers) {
   solvers::SecantOutcome outcome;
   // Each loop is a driver (secant or Newton) over the problem's nonlinear
   // interface, its linear step swapped (Uzawa steps, the saddle point) or the
   // whole driver wrapped by exact friction's augmentation.
   solvers::FormingNonlinearProblem<dim> nonlinear(problem);
-  solvers::TimedLinearStep linear(*solver, results.timing);
+  solvers::TimedLinearStep linear(solver, results.timing);
   const auto take_augmented = [&](solvers::AugmentedOutcome<dim>&& augmented) {
     outcome = std::move(augmented.solve);
     multipliers = std::move(augmented.multipliers);
@@ -84,13 +139,13 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
   case solvers::LoopKind::AugmentedNewton:
     // Exact Coulomb friction by Newton, multipliers updated between its steps
     // (solvers/augmented_newton.hpp).
-    take_augmented(solvers::augmented_newton(nonlinear, *solver, case_.solver, on_iteration,
+    take_augmented(solvers::augmented_newton(nonlinear, solver, case_.solver, on_iteration,
                                              results.timing, start_velocity));
     return outcome;
   case solvers::LoopKind::AugmentedSecant:
     // Exact friction, the paper's method (or a mixed formulation): the
     // augmentation around the secant iteration, an update per converged inner solve.
-    take_augmented(solvers::augmented_lagrangian(nonlinear, *solver, case_.solver, on_iteration,
+    take_augmented(solvers::augmented_lagrangian(nonlinear, solver, case_.solver, on_iteration,
                                                  results.timing));
     return outcome;
   case solvers::LoopKind::SaddlePointSecant: {
@@ -106,11 +161,10 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
   case solvers::LoopKind::Newton:
     // The penalty problem (plane and axisymmetric) and the mixed one with its
     // pressure condensed at d > 0 (the condensation is linear in u).
-    return solvers::newton_iteration(nonlinear, *solver, case_.solver, on_iteration, results.timing,
+    return solvers::newton_iteration(nonlinear, solver, case_.solver, on_iteration, results.timing,
                                      start_velocity);
   case solvers::LoopKind::Secant:
-    return solvers::secant_iteration(nonlinear, *solver, case_.solver, on_iteration,
-                                     results.timing);
+    return solvers::secant_iteration(nonlinear, solver, case_.solver, on_iteration, results.timing);
   }
   FF_ASSERT(false, "every loop kind is handled above");
   return {};
@@ -119,6 +173,29 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
 /// Everything after the mesh: problem, multipliers, coarse start (when the
 /// mesh came from case_.mesh, so coarser levels of it can be made), the loop,
 /// post-processing. Fills `simulation` except its mesh, which `mesh` lives in.
+template <int dim>
+void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from_case,
+              Simulation& simulation, const IterationCallback& on_iteration,
+              bool estimate_condition);
+
+/// solve_on, with an input error found by a back-end during the solve (a PETSc
+/// option that nothing read: the solver knows the key, not the file) located where
+/// the case set that key.
+template <int dim>
+void solve_located(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from_case,
+                   Simulation& simulation, const IterationCallback& on_iteration,
+                   bool estimate_condition) {
+  try {
+    solve_on(case_, mesh, mesh_from_case, simulation, on_iteration, estimate_condition);
+  } catch (const InputError& error) {
+    const auto where = case_.key_locations.find(error.key);
+    if (!error.file.empty()) throw;
+    if (where == case_.key_locations.end())
+      throw InputError(case_.source, 0, error.key, error.message, error.hint);
+    throw InputError(where->second.file, where->second.line, error.key, error.message, error.hint);
+  }
+}
+
 template <int dim>
 void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from_case,
               Simulation& simulation, const IterationCallback& on_iteration,
@@ -156,12 +233,12 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
   if (case_.thermal.enabled) {
     // Hot forming (app/thermal_coupling.hpp): the loop below, again at each coupling step.
     const FlowSolve solve_flow = [&](const VectorX* start) {
-      return run_loop(plan, case_, *problem, on_iteration, results,
+      return run_counted_loop(plan, case_, *problem, on_iteration, results,
                       start ? start : (coarse ? &coarse->velocity : nullptr), multipliers);
     };
     outcome = couple_thermal(case_, *problem, solve_flow, on_iteration, multipliers, results);
   } else {
-    outcome = run_loop(plan, case_, *problem, on_iteration, results,
+    outcome = run_counted_loop(plan, case_, *problem, on_iteration, results,
                        coarse ? &coarse->velocity : nullptr, multipliers);
   }
   results.method = plan.name(coarse.has_value());
@@ -197,7 +274,7 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
   // The one dispatch on the dimension: the mesh source decided it.
   std::visit(
       [&](const auto& mesh) {
-        solve_on(case_, mesh, true, simulation, on_iteration, estimate_condition);
+        solve_located(case_, mesh, true, simulation, on_iteration, estimate_condition);
       },
       simulation.mesh);
   add_total(simulation.results, start);
@@ -212,8 +289,8 @@ Simulation simulate_on(const io::Case& case_, mesh::Mesh<dim> mesh,
   simulation.mesh = std::move(mesh);
   // No mesh sequencing: its coarse levels would be re-made from case_.mesh,
   // which is not where this mesh came from.
-  solve_on(case_, std::get<mesh::Mesh<dim>>(simulation.mesh), false, simulation, on_iteration,
-           estimate_condition);
+  solve_located(case_, std::get<mesh::Mesh<dim>>(simulation.mesh), false, simulation, on_iteration,
+                estimate_condition);
   add_total(simulation.results, start);
   return simulation;
 }

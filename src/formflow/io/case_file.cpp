@@ -11,6 +11,8 @@
 #include "formflow/io/toml_lines.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
 #include "formflow/physics/friction.hpp"
+#include "formflow/solvers/linear_solver.hpp"
+#include "formflow/solvers/petsc_option_text.hpp"
 
 #include <fmt/format.h>
 #include <toml.hpp>
@@ -146,6 +148,7 @@ public:
     check_mesh_source();
     check_flow_law();
     check_formulation();
+    check_linear_solver();
     check_verification();
     check_thermal();
     check_mesh_memory();
@@ -273,6 +276,25 @@ private:
             "Q1–P0 is not inf-sup stable (Remark 4.3: checkerboard pressure, β_h → 0), so the "
             "exact constraint d = 0 is refused",
             "use penalty.d > 0 with Q1–P0, or mesh.element = \"Q2\" with \"P1disc\"");
+  }
+
+  /// solver.linear = "petsc" needs a PETSc build; solver.petsc_options needs petsc and
+  /// PETSc's option syntax (the names themselves are checked at the first
+  /// factorisation, where PETSc has read them).
+  void check_linear_solver() const {
+    if (!solvers::is_built(case_.solver.linear))
+      blame({"solver.linear"}, "this formflow was built without PETSc (FORMFLOW_WITH_PETSC=OFF)",
+            "rebuild with -DFORMFLOW_WITH_PETSC=ON (./run and ./test do), or use \"cholmod\" or "
+            "\"umfpack\"");
+    const std::string& options = case_.solver.petsc_options;
+    if (options.empty()) return;
+    if (case_.solver.linear != solvers::LinearSolverKind::Petsc)
+      blame({"solver.petsc_options", "solver.linear"},
+            "PETSc options are read only by solver.linear = \"petsc\"",
+            "set solver.linear = \"petsc\", or remove solver.petsc_options");
+    if (const auto problem = solvers::petsc_option_syntax_error(options))
+      blame({"solver.petsc_options"}, *problem,
+            "e.g. \"-ksp_type cg -pc_type gamg -ksp_rtol 1e-10\"");
   }
 
   /// Throws for the key (of `names`) that was set last: it is the one to change.

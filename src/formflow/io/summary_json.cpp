@@ -168,8 +168,18 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["mesh"] = mesh_json(case_, results);
   out["timing_s"] = timing_json(results.timing);
   // What the time bought: every factorisation (coarse levels and secant steps
-  // included) and the GMRES iterations of Newton's unsymmetric steps.
-  out["linear_algebra"] = {{"factorizations", results.timing.counted("factorization")},
+  // included) and the GMRES iterations of Newton's unsymmetric steps; the back-end,
+  // its own Krylov iterations on the fine mesh (per iteration of the loop, null for
+  // CHOLMOD and UMFPACK, which have none) and the MPI ranks.
+  const auto count_or_null = [](long count) { return count < 0 ? json(nullptr) : json(count); };
+  json per_step = json::array();
+  for (const auto& record : results.history)
+    per_step.push_back(count_or_null(record.linear_iterations));
+  out["linear_algebra"] = {{"solver", results.linear_algebra.solver},
+                           {"iterations", count_or_null(results.linear_algebra.iterations)},
+                           {"iterations_per_step", std::move(per_step)},
+                           {"ranks", results.linear_algebra.ranks},
+                           {"factorizations", results.timing.counted("factorization")},
                            {"krylov_iterations", results.timing.counted("krylov iterations")}};
   // How often each timed phase ran (timing_s / timing_calls = cost per call).
   json calls = json::object();

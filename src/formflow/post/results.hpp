@@ -97,6 +97,15 @@ struct Fields {
   VectorX temperature;                 ///< n_nodes (hot forming); empty: isothermal
 };
 
+/// Which linear back-end ran and what it did (summary.json linear_algebra).
+struct LinearAlgebra {
+  std::string solver = "cholmod"; ///< solver.linear's spelling
+  /// Krylov iterations of the fine-mesh loop's solves (per step in history's
+  /// linear_iterations); −1 for a direct back-end that has no such count.
+  long iterations = -1;
+  int ranks = 1; ///< MPI ranks of the run
+};
+
 struct Results {
   solvers::StopReason stop_reason = solvers::StopReason::MaxIterations;
   bool converged() const { return stop_reason == solvers::StopReason::Converged; }
@@ -124,6 +133,7 @@ struct Results {
   Augmentation augmentation;
   ThermalResults thermal;
   PhaseTimes timing; ///< seconds per phase: total, mesh, assembly, factorization, solve, post
+  LinearAlgebra linear_algebra;
 };
 
 } // namespace formflow::post

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace formflow::solvers {
 
@@ -23,6 +24,18 @@ public:
   /// Solves with the last factorisation. False on failure.
   virtual bool solve(const VectorX& rhs, VectorX& solution) = 0;
   virtual std::string name() const = 0;
+  /// Krylov iterations of all solves so far (iterative back-ends), or −1 when the
+  /// back-end is a direct factorisation with no such count.
+  virtual long krylov_iterations() const { return -1; }
+  /// The two fields of the matrices to come (a saddle point): rows and columns
+  /// [0, n_first) are the velocity, the rest the pressure; `near_null_space` holds
+  /// vectors of length n_first that the velocity block nearly annihilates (its
+  /// rigid-body modes). Call before analyze. A direct back-end has no use for it;
+  /// PETSc's fieldsplit preconditioner takes its splits and AMG its modes from it.
+  virtual void set_fields(Index n_first, std::vector<VectorX> near_null_space) {
+    static_cast<void>(n_first);
+    static_cast<void>(near_null_space);
+  }
 };
 
 /// The key's spelling of `kind` ("cholmod", "umfpack").
@@ -32,7 +45,12 @@ std::string_view linear_solver_name(LinearSolverKind kind);
 bool can_serve(LinearSolverKind kind, MatrixStorage storage);
 
 /// The solver `kind` for matrices stored as `storage`; can_serve(kind, storage) holds.
-std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind, MatrixStorage storage);
+/// `petsc_options` (solver.petsc_options) configures the PETSc back-end only.
+std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind, MatrixStorage storage,
+                                                 const std::string& petsc_options = {});
+
+/// Whether this build has the back-end `kind` (PETSc only with FORMFLOW_WITH_PETSC).
+bool is_built(LinearSolverKind kind);
 
 /// CHOLMOD supernodal LLᵀ through Eigen's CholmodSupport (BLAS-3 on supernodes).
 std::unique_ptr<LinearSolver> make_cholmod_solver();

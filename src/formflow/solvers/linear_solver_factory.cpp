@@ -3,6 +3,9 @@
 // stored as their lower triangle.
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/linear_solver.hpp"
+#if FORMFLOW_WITH_PETSC
+#include "formflow/solvers/petsc/petsc_solver.hpp"
+#endif
 
 namespace formflow::solvers {
 
@@ -40,22 +43,42 @@ std::string_view linear_solver_name(LinearSolverKind kind) {
   switch (kind) {
   case LinearSolverKind::Cholmod: return "cholmod";
   case LinearSolverKind::Umfpack: return "umfpack";
+  case LinearSolverKind::Petsc: return "petsc";
   }
   return "unknown";
 }
 
 bool can_serve(LinearSolverKind kind, MatrixStorage storage) {
-  // CHOLMOD's LLᵀ needs a positive definite matrix; UMFPACK's LU takes any.
-  return kind == LinearSolverKind::Umfpack || storage == MatrixStorage::SymmetricLower;
+  // CHOLMOD's LLᵀ needs a positive definite matrix; UMFPACK's LU takes any, and so
+  // does PETSc (MUMPS LU by default for the full saddle point).
+  return kind != LinearSolverKind::Cholmod || storage == MatrixStorage::SymmetricLower;
 }
 
-std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind, MatrixStorage storage) {
+bool is_built(LinearSolverKind kind) {
+#if FORMFLOW_WITH_PETSC
+  static_cast<void>(kind);
+  return true;
+#else
+  return kind != LinearSolverKind::Petsc;
+#endif
+}
+
+std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind, MatrixStorage storage,
+                                                 const std::string& petsc_options) {
   FF_ASSERT(can_serve(kind, storage), "the case validation refuses a solver that cannot serve");
+  FF_ASSERT(is_built(kind), "the case validation refuses a back-end this build lacks");
   switch (kind) {
   case LinearSolverKind::Cholmod: return make_cholmod_solver();
   case LinearSolverKind::Umfpack:
     if (storage == MatrixStorage::Full) return make_umfpack_solver();
     return std::make_unique<FullFromLower>(make_umfpack_solver());
+  case LinearSolverKind::Petsc:
+#if FORMFLOW_WITH_PETSC
+    return make_petsc_solver(storage, petsc_options);
+#else
+    static_cast<void>(petsc_options);
+    break;
+#endif
   }
   return make_cholmod_solver();
 }

@@ -2,6 +2,7 @@
 // Secant steps around a global saddle-point solve (continuous pressure).
 #include "formflow/solvers/saddle_point_iteration.hpp"
 
+#include "formflow/assembly/rigid_body_modes.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/uzawa_update.hpp"
 
@@ -16,6 +17,11 @@ SaddlePointSolve<dim>::SaddlePointSolve(FormingNonlinearProblem<dim>& problem,
             "a saddle-point solve needs a global pressure");
   ScopedTimer timer(linear.times(), "setup");
   saddle_.emplace(forming, *forming.multipliers(), system_);
+  // For an iterative back-end (PETSc fieldsplit): the velocity/pressure split and
+  // the velocity block's rigid-body modes, for its algebraic multigrid.
+  linear.solver().set_fields(
+      saddle_->n_velocity(),
+      assembly::rigid_body_modes(forming.discretisation().mesh(), forming.plan()));
 }
 
 /// One secant step at the lagged velocity `w` (null: constant viscosity):

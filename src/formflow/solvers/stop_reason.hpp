@@ -5,6 +5,7 @@
 #include "formflow/core/types.hpp"
 #include "formflow/solvers/linear_solver_kind.hpp"
 
+#include <string>
 #include <string_view>
 
 namespace formflow::solvers {
@@ -44,6 +45,8 @@ struct IterationControl {
   /// solver.linear: the direct solver of the velocity systems (Taylor–Hood's saddle
   /// point always takes an LU, UMFPACK).
   LinearSolverKind linear = LinearSolverKind::Cholmod;
+  /// solver.petsc_options: PETSc options database text for solver.linear = "petsc".
+  std::string petsc_options;
 };
 
 /// One line of the iteration history.
@@ -58,6 +61,10 @@ struct IterationRecord {
   int coupling = 0;
   Real force_change = 0.0;    ///< coupling records: |pᵏ − pᵏ⁻¹|/|pᵏ|
   Real max_temperature = 0.0; ///< coupling records: max T
+  /// Krylov iterations of the linear solves of this iteration (an iterative back-end,
+  /// solver.linear = "petsc"; a direct KSP "preonly" counts 1 per solve); −1 where the
+  /// back-end has none (CHOLMOD, UMFPACK).
+  long linear_iterations = -1;
 };
 
 } // namespace formflow::solvers

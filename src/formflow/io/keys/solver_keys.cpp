@@ -5,6 +5,19 @@
 
 namespace formflow::io::keys {
 
+namespace {
+
+KeySpec petsc_options_key() {
+  KeySpec spec("solver.petsc_options", KeyType::Text, std::string());
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.solver.petsc_options = std::get<std::string>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.solver.petsc_options; };
+  return spec;
+}
+
+} // namespace
+
 std::vector<CaseKey> solver_keys() {
   return {
       real_key(
@@ -28,13 +41,24 @@ std::vector<CaseKey> solver_keys() {
       enum_key(
           "solver.linear", "cholmod",
           {{"cholmod", solvers::LinearSolverKind::Cholmod},
-           {"umfpack", solvers::LinearSolverKind::Umfpack}},
+           {"umfpack", solvers::LinearSolverKind::Umfpack},
+           {"petsc", solvers::LinearSolverKind::Petsc}},
           [](auto& c) -> auto& { return c.solver.linear; })
           .constraint("cholmod cannot serve the Taylor–Hood saddle point (formulation.pressure = "
-                      "\"Q1\"), which takes umfpack unless cholmod is asked for")
-          .doc("direct solver of the linear systems: cholmod (supernodal Cholesky LLᵀ of the "
-               "symmetric positive definite velocity systems) or umfpack (LU; also the "
-               "indefinite Taylor–Hood saddle point)"),
+                      "\"Q1\"), which takes umfpack unless cholmod is asked for; petsc only in a "
+                      "build with FORMFLOW_WITH_PETSC")
+          .doc("solver of the linear systems: cholmod (supernodal Cholesky LLᵀ of the "
+               "symmetric positive definite velocity systems), umfpack (LU; also the "
+               "indefinite Taylor–Hood saddle point) or petsc (PETSc KSP/PC configured by "
+               "solver.petsc_options; by default a direct MUMPS Cholesky, or LU for the "
+               "saddle point; docs/petsc.md)"),
+      petsc_options_key()
+          .constraint("only with solver.linear = \"petsc\"; names start with '-', values follow "
+                      "their name; an option no PETSc object reads is refused before the first "
+                      "solve")
+          .doc("PETSc options database text for solver.linear = \"petsc\", e.g. \"-ksp_type cg "
+               "-pc_type gamg\"; PETSc options on the command line (-ksp_*, -pc_*, -mat_*, ...) "
+               "override it; empty: direct MUMPS"),
       enum_key(
           "solver.method", "newton",
           {{"newton", solvers::NonlinearMethod::Newton},

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+// PETSc initialisation, the command line's options and the per-case options scope.
+#include "formflow/solvers/petsc/petsc_session.hpp"
+
+#include "formflow/core/error.hpp"
+
+#include <memory>
+
+namespace formflow::solvers::petsc {
+
+namespace {
+
+std::vector<PetscOption>& stored_command_line() {
+  static std::vector<PetscOption> options;
+  return options;
+}
+
+std::string joined(const std::vector<PetscOption>& options) {
+  std::string text;
+  for (const PetscOption& option : options) text += option.name + " " + option.value + " ";
+  return text;
+}
+
+/// The program's Session: PETSc stays initialised until exit, when this finalises it.
+std::unique_ptr<Session>& fallback_session() {
+  static std::unique_ptr<Session> session;
+  return session;
+}
+
+/// An option a KSP, PC or Mat reads while a solver is set up (the rest, such as
+/// -log_view, PETSc reads at initialisation or finalisation).
+bool is_solve_option(const std::string& name) {
+  for (const char* family : {"-ksp_", "-pc_", "-mat_", "-fieldsplit_", "-mg_", "-sub_"})
+    if (name.rfind(family, 0) == 0) return true;
+  return false;
+}
+
+} // namespace
+
+void set_command_line(const std::vector<std::string>& command_line) {
+  std::string text;
+  for (const std::string& argument : command_line) text += argument + " ";
+  stored_command_line() = parse_petsc_options(text);
+}
+
+Session::Session() {
+  PetscBool initialised = PETSC_FALSE;
+  PetscInitialized(&initialised);
+  if (initialised) return;
+  // No argc/argv: PETSc would read every argument (the case path, --set ...) as an
+  // option. The command line's options are inserted per solver (OptionsScope), after
+  // the case's, so they win. PETSC_OPTIONS in the environment still applies.
+  // PETSc prints nothing itself: its errors come back as return codes (ErrorCapture).
+  // Its signal handlers stay out: SIGINT/SIGTERM are formflow's (app/stop_signals.hpp).
+  PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr);
+  // Before initialisation, so that -log_view, -info and -malloc_* take effect.
+  PetscOptionsInsertString(nullptr, joined(command_line_options()).c_str());
+  if (PetscInitializeNoArguments() != 0)
+    throw InternalError("PetscInitialize failed (is MPI usable here?)");
+  initialised_here_ = true;
+}
+
+Session::~Session() {
+  if (initialised_here_) PetscFinalize();
+}
+
+void ensure_initialized() {
+  PetscBool initialised = PETSC_FALSE;
+  PetscInitialized(&initialised);
+  if (!initialised) fallback_session() = std::make_unique<Session>();
+}
+
+const std::vector<PetscOption>& command_line_options() {
+  return stored_command_line();
+}
+
+int n_ranks() {
+  ensure_initialized();
+  PetscMPIInt size = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  return size;
+}
+
+OptionsScope::OptionsScope(const std::string& case_options)
+    : case_options_(parse_petsc_options(case_options)) {
+  ensure_initialized();
+  PetscOptionsInsertString(nullptr, joined(case_options_).c_str());
+  PetscOptionsInsertString(nullptr, joined(command_line_options()).c_str());
+}
+
+OptionsScope::~OptionsScope() {
+  for (const PetscOption& option : case_options_)
+    PetscOptionsClearValue(nullptr, option.name.c_str());
+  // A command-line option of the same name was cleared with the case's: put it back.
+  PetscOptionsInsertString(nullptr, joined(command_line_options()).c_str());
+}
+
+OptionsScope::Unused OptionsScope::unused() const {
+  const auto unused_of = [](const std::vector<PetscOption>& options) {
+    std::vector<std::string> names;
+    for (const PetscOption& option : options) {
+      PetscBool used = PETSC_FALSE;
+      // The database keeps names without their '-'.
+      PetscOptionsUsed(nullptr, option.name.c_str() + 1, &used);
+      // -log_view and the like are read at PetscFinalize, not by a solve.
+      if (!used && is_solve_option(option.name)) names.push_back(option.name);
+    }
+    return names;
+  };
+  return {unused_of(case_options_), unused_of(command_line_options())};
+}
+
+ErrorCapture::ErrorCapture() {
+  PetscPushErrorHandler(&ErrorCapture::handler, this);
+}
+
+ErrorCapture::~ErrorCapture() {
+  PetscPopErrorHandler();
+}
+
+PetscErrorCode ErrorCapture::handler(MPI_Comm, int, const char*, const char*, PetscErrorCode code,
+                                     PetscErrorType type, const char* message, void* self) {
+  auto& capture = *static_cast<ErrorCapture*>(self);
+  if (type == PETSC_ERROR_INITIAL && capture.message_.empty() && message)
+    capture.message_ = message;
+  return code;
+}
+
+} // namespace formflow::solvers::petsc

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// PETSc's lifetime (initialise once, finalise once) and the options each solve
+// reads: solver.petsc_options, then the command line's PETSc options over them.
+#pragma once
+
+#include "formflow/solvers/petsc_option_text.hpp"
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace formflow::solvers::petsc {
+
+/// Keeps `command_line` (PETSc's own arguments, split off the program's by
+/// split_petsc_arguments in app/main.cpp) as the options that override every case's
+/// solver.petsc_options. Call before the first solve.
+void set_command_line(const std::vector<std::string>& command_line);
+
+/// Initialises PETSc (and MPI, when nobody has) for the lifetime of the object. Made
+/// on first use by ensure_initialized(), so a run with another back-end never starts
+/// MPI, and kept until the program exits.
+class Session {
+public:
+  Session();
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+private:
+  bool initialised_here_ = false;
+};
+
+/// PETSc is initialised: by the app's Session, or else by one made now and kept until
+/// the program exits.
+void ensure_initialized();
+
+/// The PETSc options given on the command line ("" if none).
+const std::vector<PetscOption>& command_line_options();
+
+/// The MPI ranks of PETSC_COMM_WORLD.
+int n_ranks();
+
+/// solver.petsc_options in the options database while a solver lives: inserted,
+/// then the command line's options inserted again over them (the command line wins);
+/// removed again when the scope ends, so the next case starts clean.
+class OptionsScope {
+public:
+  explicit OptionsScope(const std::string& case_options);
+  ~OptionsScope();
+  OptionsScope(const OptionsScope&) = delete;
+  OptionsScope& operator=(const OptionsScope&) = delete;
+
+  /// The options that no PETSc object has read (misspelt, or for a solver not in
+  /// use, e.g. "-ksp_tyep"): the case's, and the command line's.
+  struct Unused {
+    std::vector<std::string> from_case, from_command_line;
+  };
+  Unused unused() const;
+
+private:
+  std::vector<PetscOption> case_options_;
+};
+
+/// Runs PETSc calls with their error messages captured instead of printed: the
+/// first message of a failed call is kept (PETSc's own words, e.g. "Unknown type.
+/// Check for miss-spelling ...: foo") for the caller to report.
+class ErrorCapture {
+public:
+  ErrorCapture();
+  ~ErrorCapture();
+  ErrorCapture(const ErrorCapture&) = delete;
+  ErrorCapture& operator=(const ErrorCapture&) = delete;
+  /// The first error message since construction, or "".
+  const std::string& message() const { return message_; }
+
+private:
+  static PetscErrorCode handler(MPI_Comm, int, const char*, const char*, PetscErrorCode,
+                                PetscErrorType, const char* message, void* self);
+  std::string message_;
+};
+
+} // namespace formflow::solvers::petsc

@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: MIT
+// PETSc KSP/PC behind the LinearSolver interface: direct MUMPS by default, any
+// Krylov method and preconditioner through the options database.
+#include "formflow/solvers/petsc/petsc_solver.hpp"
+
+#include "formflow/core/error.hpp"
+#include "formflow/solvers/petsc/petsc_session.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <petscksp.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace formflow::solvers {
+
+namespace {
+
+using RowMatrix = Eigen::SparseMatrix<Real, Eigen::RowMajor, PetscInt>;
+
+constexpr const char* options_key = "solver.petsc_options";
+
+class PetscSolver final : public LinearSolver {
+public:
+  PetscSolver(MatrixStorage storage, const std::string& options)
+      : storage_(storage), options_(options) {}
+  ~PetscSolver() override {
+    if (ksp_) KSPDestroy(&ksp_);
+    for (IS& field : fields_)
+      if (field) ISDestroy(&field);
+    if (matrix_) MatDestroy(&matrix_);
+    if (rhs_) VecDestroy(&rhs_);
+    if (solution_) VecDestroy(&solution_);
+  }
+  PetscSolver(const PetscSolver&) = delete;
+  PetscSolver& operator=(const PetscSolver&) = delete;
+
+  bool analyze(const assembly::SparseMatrix& matrix) override {
+    copy(matrix);
+    return matrix_ != nullptr;
+  }
+
+  bool factorize(const assembly::SparseMatrix& matrix) override {
+    copy(matrix);
+    if (!matrix_) return false;
+    petsc::ErrorCapture capture;
+    if (!ksp_ && !make_ksp(capture)) return false;
+    // The KSP sees new values on the same pattern: the factorisation (or the AMG
+    // hierarchy) is recomputed at KSPSetUp.
+    if (KSPSetOperators(ksp_, matrix_, matrix_) != 0) return false;
+    const PetscErrorCode setup = KSPSetUp(ksp_);
+    if (setup != 0) {
+      // A type that does not exist is the user's; anything else is numerical
+      // (a zero pivot, a failed factorisation): a stop reason, not an error.
+      if (setup == PETSC_ERR_ARG_UNKNOWN_TYPE || setup == PETSC_ERR_ARG_WRONG)
+        refuse(capture.message(), "give a type PETSc 3.18 has (see -help output of the "
+                                  "option's family) or leave the key unset for direct MUMPS");
+      return false;
+    }
+    if (!checked_unused_) {
+      checked_unused_ = true;
+      refuse_unused(options_scope_.unused());
+    }
+    PCFailedReason failed = PC_NOERROR;
+    PC preconditioner = nullptr;
+    KSPGetPC(ksp_, &preconditioner);
+    PCGetFailedReason(preconditioner, &failed);
+    return failed == PC_NOERROR;
+  }
+
+  bool solve(const VectorX& rhs, VectorX& solution) override {
+    if (!ksp_) return false;
+    petsc::ErrorCapture capture;
+    const auto n = static_cast<PetscInt>(rhs.size());
+    PetscScalar* values = nullptr;
+    VecGetArray(rhs_, &values);
+    std::copy(rhs.data(), rhs.data() + n, values);
+    VecRestoreArray(rhs_, &values);
+    if (KSPSolve(ksp_, rhs_, solution_) != 0) return false;
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    KSPGetConvergedReason(ksp_, &reason);
+    PetscInt iterations = 0;
+    KSPGetIterationNumber(ksp_, &iterations);
+    iterations_ += iterations;
+    if (reason < 0) return false;
+    const PetscScalar* result = nullptr;
+    solution.resize(n);
+    VecGetArrayRead(solution_, &result);
+    std::copy(result, result + n, solution.data());
+    VecRestoreArrayRead(solution_, &result);
+    return true;
+  }
+
+  std::string name() const override {
+    if (!ksp_) return "petsc";
+    KSPType ksp_type = nullptr;
+    PCType pc_type = nullptr;
+    PC preconditioner = nullptr;
+    KSPGetType(ksp_, &ksp_type);
+    KSPGetPC(ksp_, &preconditioner);
+    PCGetType(preconditioner, &pc_type);
+    return fmt::format("petsc-{}-{}", ksp_type ? ksp_type : "?", pc_type ? pc_type : "?");
+  }
+
+  long krylov_iterations() const override { return iterations_; }
+
+  void set_fields(Index n_first, std::vector<VectorX> near_null_space) override {
+    n_first_ = n_first;
+    near_null_space_ = std::move(near_null_space);
+  }
+
+private:
+  /// The KSP with formflow's defaults, then the options database over them.
+  bool make_ksp(petsc::ErrorCapture& capture) {
+    if (KSPCreate(PETSC_COMM_SELF, &ksp_) != 0) return false;
+    PC preconditioner = nullptr;
+    KSPGetPC(ksp_, &preconditioner);
+    KSPSetType(ksp_, KSPPREONLY);
+    PCSetType(preconditioner, storage_ == MatrixStorage::SymmetricLower ? PCCHOLESKY : PCLU);
+    PCFactorSetMatSolverType(preconditioner, MATSOLVERMUMPS);
+    // The nonlinear loops stop at δ ≥ 1e-15 relative change; an iterative solve
+    // asked for by the options gets a relative residual well below the smallest
+    // δ that makes sense for a run (1e-10), unless -ksp_rtol says otherwise.
+    KSPSetTolerances(ksp_, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, 10000);
+    const PetscErrorCode configured = KSPSetFromOptions(ksp_);
+    if (configured != 0)
+      refuse(capture.message(), "give a value PETSc 3.18 accepts for that option, or "
+                                "leave the key unset for direct MUMPS");
+    PetscBool fieldsplit = PETSC_FALSE;
+    PetscObjectTypeCompare(reinterpret_cast<PetscObject>(preconditioner), PCFIELDSPLIT,
+                           &fieldsplit);
+    if (fieldsplit) return split_fields(preconditioner);
+    return true;
+  }
+
+  /// PCFIELDSPLIT's two splits, "u" (velocity) and "p" (pressure), from set_fields;
+  /// the rigid-body modes go with "u" as its near-null space (fieldsplit hands a
+  /// "nearnullspace" composed on a split's IS to that split's matrix, which GAMG reads).
+  bool split_fields(PC preconditioner) {
+    const auto n = static_cast<PetscInt>(pattern_outer_.size()) - 1;
+    if (n_first_ <= 0 || n_first_ >= n)
+      refuse("-pc_type fieldsplit needs a saddle point (velocity and pressure fields), and "
+             "this loop's systems have the velocity only",
+             "use fieldsplit with formulation.type = \"mixed\" and formulation.pressure = "
+             "\"Q1\"; for the velocity systems try -pc_type gamg or the default");
+    const auto n_first = static_cast<PetscInt>(n_first_);
+    ISCreateStride(PETSC_COMM_SELF, n_first, 0, 1, &fields_[0]);
+    ISCreateStride(PETSC_COMM_SELF, n - n_first, n_first, 1, &fields_[1]);
+    if (!near_null_space_.empty()) {
+      std::vector<Vec> modes(near_null_space_.size());
+      for (std::size_t k = 0; k < modes.size(); ++k) {
+        FF_ASSERT(near_null_space_[k].size() == n_first_, "one mode entry per velocity dof");
+        VecCreateSeq(PETSC_COMM_SELF, n_first, &modes[k]);
+        PetscScalar* values = nullptr;
+        VecGetArray(modes[k], &values);
+        std::copy(near_null_space_[k].data(), near_null_space_[k].data() + n_first, values);
+        VecRestoreArray(modes[k], &values);
+      }
+      // MatNullSpaceCreate wants an orthonormal basis.
+      orthonormalize(modes);
+      MatNullSpace space = nullptr;
+      MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(modes.size()),
+                         modes.data(), &space);
+      PetscObjectCompose(reinterpret_cast<PetscObject>(fields_[0]), "nearnullspace",
+                         reinterpret_cast<PetscObject>(space));
+      MatNullSpaceDestroy(&space);
+      for (Vec& mode : modes) VecDestroy(&mode);
+    }
+    PCFieldSplitSetIS(preconditioner, "u", fields_[0]);
+    PCFieldSplitSetIS(preconditioner, "p", fields_[1]);
+    return true;
+  }
+
+  /// Modified Gram–Schmidt, in place.
+  static void orthonormalize(std::vector<Vec>& vectors) {
+    for (std::size_t k = 0; k < vectors.size(); ++k) {
+      for (std::size_t j = 0; j < k; ++j) {
+        PetscScalar projection = 0;
+        VecDot(vectors[k], vectors[j], &projection);
+        VecAXPY(vectors[k], -projection, vectors[j]);
+      }
+      PetscReal norm = 0;
+      VecNormalize(vectors[k], &norm);
+    }
+  }
+
+  /// Copies `matrix` (its lower triangle for SymmetricLower) into the AIJ matrix,
+  /// made on the first call and rebuilt only if the pattern changes.
+  void copy(const assembly::SparseMatrix& matrix) {
+    RowMatrix rows;
+    if (storage_ == MatrixStorage::SymmetricLower) {
+      const assembly::SparseMatrix strict = matrix.triangularView<Eigen::StrictlyLower>();
+      assembly::SparseMatrix full = matrix;
+      full += assembly::SparseMatrix(strict.transpose());
+      rows = full;
+    } else {
+      rows = matrix;
+    }
+    rows.makeCompressed();
+    const auto n = static_cast<PetscInt>(rows.rows());
+    const bool same_pattern =
+        matrix_ && pattern_outer_.size() == static_cast<std::size_t>(n + 1) &&
+        std::equal(pattern_outer_.begin(), pattern_outer_.end(), rows.outerIndexPtr()) &&
+        pattern_inner_.size() == static_cast<std::size_t>(rows.nonZeros()) &&
+        std::equal(pattern_inner_.begin(), pattern_inner_.end(), rows.innerIndexPtr());
+    if (same_pattern) {
+      PetscScalar* values = nullptr;
+      MatSeqAIJGetArray(matrix_, &values);
+      std::copy(rows.valuePtr(), rows.valuePtr() + rows.nonZeros(), values);
+      MatSeqAIJRestoreArray(matrix_, &values);
+      return;
+    }
+    if (matrix_) MatDestroy(&matrix_);
+    if (rhs_) VecDestroy(&rhs_);
+    if (solution_) VecDestroy(&solution_);
+    pattern_outer_.assign(rows.outerIndexPtr(), rows.outerIndexPtr() + n + 1);
+    pattern_inner_.assign(rows.innerIndexPtr(), rows.innerIndexPtr() + rows.nonZeros());
+    // The CSR arrays are copied into the matrix (MatCreateSeqAIJWithArrays would
+    // keep pointers into `rows`).
+    if (MatCreate(PETSC_COMM_SELF, &matrix_) != 0 || MatSetSizes(matrix_, n, n, n, n) != 0 ||
+        MatSetType(matrix_, MATSEQAIJ) != 0 ||
+        MatSeqAIJSetPreallocationCSR(matrix_, pattern_outer_.data(), pattern_inner_.data(),
+                                     rows.valuePtr()) != 0) {
+      if (matrix_) MatDestroy(&matrix_);
+      return;
+    }
+    if (storage_ == MatrixStorage::SymmetricLower) {
+      MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE);
+      MatSetOption(matrix_, MAT_SPD, PETSC_TRUE);
+    }
+    MatCreateVecs(matrix_, &solution_, &rhs_);
+  }
+
+  /// Options that nothing read by the first factorisation: the case's blamed on
+  /// solver.petsc_options, the command line's on themselves.
+  static void refuse_unused(const petsc::OptionsScope::Unused& unused) {
+    constexpr const char* hint =
+        "check the spelling (-ksp_type, -pc_type, -pc_factor_mat_solver_type, ...) and that the "
+        "option belongs to the solver and preconditioner in use";
+    const auto text = [](const std::vector<std::string>& names) {
+      return fmt::format("{} {} read by no PETSc object of this solve", fmt::join(names, " "),
+                         names.size() == 1 ? "was" : "were");
+    };
+    if (!unused.from_command_line.empty())
+      throw InputError("command line", 0, unused.from_command_line.front(),
+                       text(unused.from_command_line), hint);
+    if (!unused.from_case.empty())
+      throw InputError("", 0, options_key, text(unused.from_case), hint);
+  }
+
+  [[noreturn]] void refuse(const std::string& message, const std::string& hint) const {
+    throw InputError("", 0, options_key,
+                     fmt::format("value \"{}\": {}", options_,
+                                 message.empty() ? "refused by "
+                                                   "PETSc"
+                                                 : message),
+                     hint);
+  }
+
+  MatrixStorage storage_;
+  std::string options_;
+  petsc::OptionsScope options_scope_{options_};
+  Mat matrix_ = nullptr;
+  Vec rhs_ = nullptr, solution_ = nullptr;
+  KSP ksp_ = nullptr;
+  std::vector<PetscInt> pattern_outer_, pattern_inner_;
+  Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)
+  std::vector<VectorX> near_null_space_; ///< the velocity block's rigid-body modes
+  IS fields_[2] = {nullptr, nullptr};    ///< fieldsplit's "u" and "p"
+  long iterations_ = 0;
+  bool checked_unused_ = false;
+};
+
+} // namespace
+
+std::unique_ptr<LinearSolver> make_petsc_solver(MatrixStorage storage, const std::string& options) {
+  return std::make_unique<PetscSolver>(storage, options);
+}
+
+} // namespace formflow::solvers
