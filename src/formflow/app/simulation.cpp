@@ -234,12 +234,12 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
     // Hot forming (app/thermal_coupling.hpp): the loop below, again at each coupling step.
     const FlowSolve solve_flow = [&](const VectorX* start) {
       return run_counted_loop(plan, case_, *problem, on_iteration, results,
-                      start ? start : (coarse ? &coarse->velocity : nullptr), multipliers);
+                              start ? start : (coarse ? &coarse->velocity : nullptr), multipliers);
     };
     outcome = couple_thermal(case_, *problem, solve_flow, on_iteration, multipliers, results);
   } else {
     outcome = run_counted_loop(plan, case_, *problem, on_iteration, results,
-                       coarse ? &coarse->velocity : nullptr, multipliers);
+                               coarse ? &coarse->velocity : nullptr, multipliers);
   }
   results.method = plan.name(coarse.has_value());
   results.stop_reason = outcome.stop_reason;
