@@ -7,6 +7,7 @@
 #include "formflow/core/types.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,25 @@ struct Fields {
   VectorX friction_stress;             ///< n_nodes, 0 away from Γ3
   VectorX cell_equivalent_strain_rate; ///< n_cells, cell mean
   VectorX cell_hydrostatic_stress;     ///< n_cells, cell mean
+  /// n_cells, each cell's share of the load's error estimate (LoadErrorEstimate::
+  /// cell_indicators, pressure units, signed); empty when it was not computed.
+  VectorX cell_load_error;
+};
+
+/// The goal-oriented estimate of the load's discretisation error
+/// (post/load_error_estimate.hpp; pressure units: force / driven height).
+struct LoadErrorEstimate {
+  /// Estimate of |p_h − p| for p the load of the continuous penalised problem;
+  /// std::nullopt when it was not computed (`unavailable` says why).
+  std::optional<Real> error;
+  std::string unavailable;
+  /// p_{h/2} − p_h linearised at the prolonged solution (signed): the DWR sum.
+  Real enriched_change = 0.0;
+  Index enriched_dofs = 0;
+  int settle_iterations = 0; ///< Newton iterations on the refined mesh before the adjoint
+  /// Per cell of the mesh that ran, its share of `enriched_change` (signed; the
+  /// entries sum to it): the local error indicator. Empty when not computed.
+  VectorX cell_indicators;
 };
 
 struct Results {
@@ -97,6 +117,7 @@ struct Results {
   std::vector<ContactSample> contact;
   ContactZones container_zones, die_zones;
   Augmentation augmentation;
+  LoadErrorEstimate load_error;
   PhaseTimes timing; ///< seconds per phase: total, mesh, assembly, factorization, solve, post
 };
 
