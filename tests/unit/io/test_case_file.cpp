@@ -375,6 +375,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"solver.method", "\"secant\""},
       {"solver.newton_start", "0.2"},
       {"solver.coarse_levels", "2"},
+      {"solver.load_error", "\"linearized\""},
       {"verification.solution", "\"smooth\""},
       {"verification.distortion", "\"random\""},
       {"verification.amplitude", "0.2"},
