@@ -135,6 +135,17 @@ int run_case(const Options& options) {
                results.pressure.ram_reaction, results.pressure.power_balance,
                results.pressure.total_power, results.pressure.mean_hydrostatic_near_ram,
                options.output_directory);
+  if (show) {
+    const char* load =
+        case_.process.type == physics::ProcessType::Drawing ? "drawing stress" : "ram pressure";
+    if (results.load_error.error)
+      fmt::print("load: {} p = {:.4f} ± {:.4f} (estimated discretisation error, "
+                 "docs/error-estimation.md)\n",
+                 load, results.pressure.ram_reaction, *results.load_error.error);
+    else
+      fmt::print("load: {} p = {:.4f} (no error estimate: {})\n", load,
+                 results.pressure.ram_reaction, results.load_error.unavailable);
+  }
   if (show && !results.coarse_iterations.empty())
     fmt::print("coarse start (solver.coarse_levels): mesh.size {} took {} Newton iterations "
                "(not counted above; their time is in the solver phases)\n",

@@ -2,6 +2,7 @@
 // One case from parameters to results, in the dimension of its mesh.
 #include "formflow/app/simulation.hpp"
 #include "formflow/app/coarse_start.hpp"
+#include "formflow/app/load_error.hpp"
 #include "formflow/app/solve_plan.hpp"
 #include "formflow/app/thermal_coupling.hpp"
 
@@ -251,6 +252,10 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
                                : 0.0;
   post::evaluate_results(*problem, outcome.velocity, results, &multipliers, stick_speed);
   if (results.thermal.enabled) results.fields.temperature = results.thermal.temperature;
+  // The load's error bar (docs/error-estimation.md): one adjoint solve on the mesh refined once.
+  results.load_error = load_error_of(case_, *problem, outcome.velocity, mesh_from_case,
+                                     results.converged(), results.timing);
+  results.fields.cell_load_error = results.load_error.cell_indicators;
   if (estimate_condition)
     simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
 }

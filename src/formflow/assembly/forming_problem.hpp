@@ -68,6 +68,19 @@ public:
   void apply_coupling(const UnsymmetricTangent<dim>& coupling, const VectorX& x_free,
                       VectorX& y_free) const;
 
+  /// y += Nᵀ x for the cell part of the coupling N of assemble_newton (full dof
+  /// vectors, prescribed entries included: the adjoint of a reaction needs the
+  /// driven rows). The friction part (dτ_f through the mollified σ̄_N) has no
+  /// transpose here: callers check `coupling.has_friction` first.
+  void apply_coupling_transpose(const UnsymmetricTangent<dim>& coupling, const VectorX& x,
+                                VectorX& y) const;
+
+  /// Per cell, w_K · f_K(u): the internal force of assemble_newton (τ_f frozen at
+  /// `thresholds`, the exact residual for thresholds = τ_f(u)) cell by cell, with its
+  /// Γ3 faces, dotted with the full dof vector `weight`. The entries sum to w · f(u).
+  VectorX weighted_cell_forces(const VectorX& u, std::span<const Real> thresholds,
+                               const VectorX& weight) const;
+
   /// Γ3 quadrature-point state for the velocity `u` (full dof vector); with exact
   /// friction the traction is proj(λ_T + r u_T) for the given (or zero) multipliers.
   std::vector<ContactPoint<dim>>

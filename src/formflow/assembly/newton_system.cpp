@@ -115,6 +115,76 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
   }
 }
 
+template <int dim>
+void FormingProblem<dim>::apply_coupling_transpose(const UnsymmetricTangent<dim>& coupling,
+                                                   const VectorX& x, VectorX& y) const {
+  FF_ASSERT(!coupling.has_friction, "the friction coupling has no transpose here");
+  // N = Σ_points c (divergence row)ᵀ (deviator row), so Nᵀ x = Σ c (deviator)ᵀ (divergence · x).
+  const int n_local = coupling.n_local, n_nodes = mesh_.nodes_per_cell();
+  std::vector<Index> dofs(n_local);
+  Index last_cell = -1;
+  for (std::size_t k = 0; k < coupling.cells.size(); ++k) {
+    const Index cell = coupling.cells[k];
+    if (cell != last_cell) {
+      for (int a = 0; a < n_nodes; ++a)
+        for (int i = 0; i < dim; ++i) dofs[a * dim + i] = fem::dof_of<dim>(mesh_.cells(a, cell), i);
+      last_cell = cell;
+    }
+    const Real* divergence = coupling.rows.data() + 2 * k * n_local;
+    const Real* deviator = divergence + n_local;
+    Real g = 0.0;
+    for (int l = 0; l < n_local; ++l) g += divergence[l] * x[dofs[l]];
+    g *= coupling.coefficients[k];
+    for (int l = 0; l < n_local; ++l) y[dofs[l]] += g * deviator[l];
+  }
+}
+
+namespace {
+
+/// Receives the per-cell internal forces and keeps w_K · f_K for each cell.
+template <int dim> class WeightedForceSink final : public AssemblySink {
+public:
+  WeightedForceSink(const mesh::Mesh<dim>& mesh, const VectorX& weight, VectorX& per_cell)
+      : mesh_(mesh), weight_(weight), per_cell_(per_cell) {}
+  void add_matrix(Index, const MatrixX&) override {}
+  void add_load(Index, const VectorX&) override {}
+  void add_force(Index cell, const CellVector& local) override {
+    Real sum = 0.0;
+    for (int a = 0; a < mesh_.nodes_per_cell(); ++a)
+      sum += weight_.template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, cell), 0))
+                 .dot(local.template segment<dim>(a * dim));
+    per_cell_[cell] += sum;
+  }
+
+private:
+  const mesh::Mesh<dim>& mesh_;
+  const VectorX& weight_;
+  VectorX& per_cell_;
+};
+
+} // namespace
+
+template <int dim>
+VectorX FormingProblem<dim>::weighted_cell_forces(const VectorX& u,
+                                                  std::span<const Real> thresholds,
+                                                  const VectorX& weight) const {
+  FF_ASSERT(terms_.newton_ready() && !body_force_,
+            "the internal force of Newton's penalty problem (or the condensed mixed one)");
+  std::vector<ContactPoint<dim>> state = contact_state(u);
+  const NewtonDuals<dim> primal;
+  NewtonPass<dim> pass{state, thresholds, std::span<const Point<dim>>(), nullptr};
+  for (const auto& term : terms_.face) term->begin_newton(pass);
+  AssemblyRequest<dim> request;
+  request.pass = AssemblyPass::Force;
+  request.velocity = &u;
+  if (!physics::friction_vanishes(settings_.friction)) request.contact = state;
+  request.duals = &primal;
+  VectorX per_cell = VectorX::Zero(mesh_.n_cells());
+  WeightedForceSink<dim> sink(mesh_, weight, per_cell);
+  assembler_->run(request, &sink);
+  return per_cell;
+}
+
 template <int dim> Real FormingProblem<dim>::driven_force(const VectorX& internal_force) const {
   Real force = 0.0;
   for (Index dof : constraints().driven_dofs) force += internal_force[dof];
@@ -135,6 +205,14 @@ template void FormingProblem<2>::apply_coupling(const UnsymmetricTangent<2>&, co
                                                 VectorX&) const;
 template void FormingProblem<3>::apply_coupling(const UnsymmetricTangent<3>&, const VectorX&,
                                                 VectorX&) const;
+template void FormingProblem<2>::apply_coupling_transpose(const UnsymmetricTangent<2>&,
+                                                          const VectorX&, VectorX&) const;
+template void FormingProblem<3>::apply_coupling_transpose(const UnsymmetricTangent<3>&,
+                                                          const VectorX&, VectorX&) const;
+template VectorX FormingProblem<2>::weighted_cell_forces(const VectorX&, std::span<const Real>,
+                                                         const VectorX&) const;
+template VectorX FormingProblem<3>::weighted_cell_forces(const VectorX&, std::span<const Real>,
+                                                         const VectorX&) const;
 template Real FormingProblem<2>::driven_force(const VectorX&) const;
 template Real FormingProblem<3>::driven_force(const VectorX&) const;
 

@@ -68,6 +68,14 @@ void loads_section(Out out, const Case& case_, const post::Results& results) {
   row("mean −σ_H near the ram", "over the column of cells touching the ram",
       pressure.mean_hydrostatic_near_ram);
   out = fmt::format_to(out, "</table>\n");
+  // The load's error bar (docs/error-estimation.md), or why there is none.
+  const post::LoadErrorEstimate& estimate = results.load_error;
+  out = estimate.error ? fmt::format_to(out,
+                                        "<p>Estimated discretisation error of the load: ± {} "
+                                        "(adjoint on the mesh refined once).</p>\n",
+                                        number(*estimate.error))
+                       : fmt::format_to(out, "<p>No estimate of the load's error: {}.</p>\n",
+                                        html_escaped(estimate.unavailable));
   const post::PowerTerms& power = results.power;
   fmt::format_to(out,
                  "<table>\n<tr><th>power term</th><th>value</th></tr>\n"

@@ -4,6 +4,7 @@
 #include "formflow/io/case_json.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/results_writer.hpp"
+#include "formflow/post/load_error_estimate.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -43,8 +44,22 @@ json pressure_json(const Case& case_, const post::Results& results) {
               {"total_power", pressure.total_power},
               {"mean_hydrostatic_near_ram", pressure.mean_hydrostatic_near_ram}};
   // In drawing the reaction on the pulled front end is the drawing stress.
-  if (case_.process.type == physics::ProcessType::Drawing)
+  // The load's error bar (post/load_error_estimate.hpp); null when not computed.
+  const post::LoadErrorEstimate& estimate = results.load_error;
+  const json error = estimate.error ? json(*estimate.error) : json(nullptr);
+  out["ram_reaction_error"] = error;
+  if (case_.process.type == physics::ProcessType::Drawing) {
     out["drawing_stress"] = pressure.ram_reaction;
+    out["drawing_stress_error"] = error;
+  }
+  out["error_estimate"] = {
+      {"method", "adjoint of the reaction on the mesh refined once (dual-weighted residual)"},
+      {"computed", estimate.error.has_value()},
+      {"unavailable", estimate.error ? json(nullptr) : json(estimate.unavailable)},
+      {"refined_dofs", estimate.enriched_dofs},
+      {"refined_newton_iterations", estimate.settle_iterations},
+      {"refined_change", estimate.error ? json(estimate.enriched_change) : json(nullptr)},
+      {"assumed_order", post::assumed_load_error_order}};
   return out;
 }
 

@@ -146,6 +146,9 @@ void cell_data_section(Out out, const mesh::Mesh<dim>& mesh, const post::Fields&
   scalar_array(out, "equivalent_strain_rate", fields.cell_equivalent_strain_rate);
   scalar_array(out, "hydrostatic_stress", fields.cell_hydrostatic_stress);
   scalar_array(out, "hydrostatic_pressure", fields.cell_hydrostatic_stress, -1.0);
+  // The load's error indicator (signed share of p_{h/2} − p_h), when it was estimated.
+  if (fields.cell_load_error.size() == mesh.n_cells())
+    scalar_array(out, "load_error_indicator", fields.cell_load_error);
   fmt::format_to(out, "        <DataArray type=\"Int64\" Name=\"cell_id\" format=\"ascii\">\n");
   for (Index c = 0; c < mesh.n_cells(); ++c) fmt::format_to(out, "{}{}", separator(c, 10), c);
   fmt::format_to(out, "\n        </DataArray>\n      </CellData>\n");
@@ -173,6 +176,7 @@ template <int dim> void check_fields(const mesh::Mesh<dim>& mesh, const post::Fi
     check_size("temperature", static_cast<Index>(fields.temperature.size()), n_nodes);
     check_finite("temperature", fields.temperature);
   }
+  check_finite("cell load_error_indicator", fields.cell_load_error);
   for (Index n = 0; n < mesh.n_nodes(); ++n)
     if (!mesh.nodes.col(n).allFinite())
       throw InternalError(fmt::format("fields.vtu: node {} has a non-finite coordinate", n));

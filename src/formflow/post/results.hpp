@@ -7,6 +7,7 @@
 #include "formflow/core/types.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,9 @@ struct Fields {
   VectorX cell_equivalent_strain_rate; ///< n_cells, cell mean
   VectorX cell_hydrostatic_stress;     ///< n_cells, cell mean
   VectorX temperature;                 ///< n_nodes (hot forming); empty: isothermal
+  /// n_cells, each cell's share of the load's error estimate (LoadErrorEstimate::
+  /// cell_indicators, pressure units, signed); empty when it was not computed.
+  VectorX cell_load_error;
 };
 
 /// Which linear back-end ran and what it did (summary.json linear_algebra).
@@ -104,6 +108,22 @@ struct LinearAlgebra {
   /// linear_iterations); −1 for a direct back-end that has no such count.
   long iterations = -1;
   int ranks = 1; ///< MPI ranks of the run
+};
+
+/// The goal-oriented estimate of the load's discretisation error
+/// (post/load_error_estimate.hpp; pressure units: force / driven height).
+struct LoadErrorEstimate {
+  /// Estimate of |p_h − p| for p the load of the continuous penalised problem;
+  /// std::nullopt when it was not computed (`unavailable` says why).
+  std::optional<Real> error;
+  std::string unavailable;
+  /// p_{h/2} − p_h linearised at the prolonged solution (signed): the DWR sum.
+  Real enriched_change = 0.0;
+  Index enriched_dofs = 0;
+  int settle_iterations = 0; ///< Newton iterations on the refined mesh before the adjoint
+  /// Per cell of the mesh that ran, its share of `enriched_change` (signed; the
+  /// entries sum to it): the local error indicator. Empty when not computed.
+  VectorX cell_indicators;
 };
 
 struct Results {
@@ -132,6 +152,7 @@ struct Results {
   ContactZones container_zones, die_zones;
   Augmentation augmentation;
   ThermalResults thermal;
+  LoadErrorEstimate load_error;
   PhaseTimes timing; ///< seconds per phase: total, mesh, assembly, factorization, solve, post
   LinearAlgebra linear_algebra;
 };

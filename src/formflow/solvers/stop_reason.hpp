@@ -32,6 +32,11 @@ enum class NonlinearMethod { Secant, Newton };
 
 /// Stopping rule of the secant iteration (SPEC §3): ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < tolerance.
 /// Newton uses the same rule on its (damped) steps, so counts are comparable.
+/// The load's error estimate: none; the adjoint at the solution prolonged to the
+/// mesh refined once (one factorisation, linearised); or the same after a loose
+/// Newton solve on the refined mesh (the nonlinearity settled first).
+enum class LoadErrorMethod { None, Linearized, Refined };
+
 struct IterationControl {
   Real tolerance = 1e-4;    ///< δ
   int max_iterations = 500; ///< iteration limit; reaching it is a stop reason, not an error
@@ -47,6 +52,9 @@ struct IterationControl {
   LinearSolverKind linear = LinearSolverKind::Cholmod;
   /// solver.petsc_options: PETSc options database text for solver.linear = "petsc".
   std::string petsc_options;
+  /// solver.load_error: how the load's discretisation error is estimated after the
+  /// solve (post/load_error_estimate.hpp, docs/error-estimation.md).
+  LoadErrorMethod load_error = LoadErrorMethod::None;
 };
 
 /// One line of the iteration history.

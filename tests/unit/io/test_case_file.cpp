@@ -400,6 +400,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       // Empty: options are refused unless solver.linear = "petsc", which a build
       // without PETSc refuses in turn.
       {"solver.petsc_options", "\"\""},
+      {"solver.load_error", "\"linearized\""},
       {"verification.solution", "\"smooth\""},
       {"verification.distortion", "\"random\""},
       {"verification.amplitude", "0.2"},

@@ -81,6 +81,19 @@ std::vector<CaseKey> solver_keys() {
               "each started from the previous one, and start from the last; 0: from the "
               "constant-viscosity solution; levels the geometry does not admit (or a mesh from a "
               "file) are skipped, and summary.json coarse_mesh_sizes lists those used"),
+      enum_key(
+          "solver.load_error", "none",
+          {{"refined", solvers::LoadErrorMethod::Refined},
+           {"linearized", solvers::LoadErrorMethod::Linearized},
+           {"none", solvers::LoadErrorMethod::None}},
+          [](auto& c) -> auto& { return c.solver.load_error; })
+          .doc("estimate of |p_h − p| for the load (summary.json pressure.ram_reaction_error, "
+               "drawing_stress_error; docs/error-estimation.md): refined = Newton on the mesh "
+               "refined once from the solution, to relative change 1e-3, then the reaction's "
+               "adjoint there (effectivity 0.9–1.0; costs 4–8 times the run); linearized = the "
+               "adjoint at the prolonged solution only (one factorisation; underestimates "
+               "nearly rate-insensitive loads by ≈ 2.6×); none = no estimate (the default while "
+               "the estimate costs more than the run)"),
   };
 }
 

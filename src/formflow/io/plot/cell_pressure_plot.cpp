@@ -3,7 +3,10 @@
 #include "formflow/io/plot/mesh_drawing.hpp"
 #include "formflow/io/plot/pictures.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <string_view>
 
 namespace formflow::io::plot {
 
@@ -26,14 +29,14 @@ mesh::Mesh<2> broken_mesh(const mesh::Mesh<2>& mesh) {
   return broken;
 }
 
-} // namespace
-
-void draw_cell_pressure(const Canvas& canvas, const PictureData& data, const VectorX& cell_pressure,
-                        const std::string& title) {
+/// One value per cell, banded without smoothing, clipped at 0.5 % at each end.
+void draw_cell_values(const Canvas& canvas, const PictureData& data, const VectorX& cell_pressure,
+                      const std::string& title, std::string_view missing,
+                      std::string_view bar_label) {
   draw_title(canvas, title, run_description(data.case_, data.results));
   const FieldLayout layout = field_layout(data);
   if (data.mesh.n_cells() == 0 || cell_pressure.size() != data.mesh.n_cells()) {
-    draw_no_data(canvas, layout.axes.area(), "no cell pressure");
+    draw_no_data(canvas, layout.axes.area(), missing);
     return;
   }
   const mesh::Mesh<2> broken = broken_mesh(data.mesh);
@@ -55,7 +58,27 @@ void draw_cell_pressure(const Canvas& canvas, const PictureData& data, const Vec
   draw_boundary(canvas, layout.axes, data.mesh);
   layout.axes.draw_spines(canvas, 8.0);
   label_contact_parts(canvas, layout.axes, data.mesh);
-  draw_colour_bar(canvas, layout.colour_bar, scale, "cell pressure p = −σ_{H} [units of σ_{p}]");
+  draw_colour_bar(canvas, layout.colour_bar, scale, std::string(bar_label));
+}
+
+} // namespace
+
+void draw_cell_pressure(const Canvas& canvas, const PictureData& data, const VectorX& cell_pressure,
+                        const std::string& title) {
+  draw_cell_values(canvas, data, cell_pressure, title, "no cell pressure",
+                   "cell pressure p = −σ_{H} [units of σ_{p}]");
+}
+
+void draw_load_error(const Canvas& canvas, const PictureData& data) {
+  const post::LoadErrorEstimate& estimate = data.results.load_error;
+  const std::string title =
+      estimate.error ? fmt::format("Load error indicators: Σ η_K = {:.4g}, p = {:.4f} ± {:.4f}",
+                                   estimate.enriched_change, data.results.pressure.ram_reaction,
+                                   *estimate.error)
+                     : std::string("Load error indicators");
+  draw_cell_values(canvas, data, data.results.fields.cell_load_error, title,
+                   estimate.error ? "no indicators" : "no error estimate (solver.load_error)",
+                   "η_{K}: the cell's share of p_{h/2} − p_{h}");
 }
 
 } // namespace formflow::io::plot

@@ -78,8 +78,8 @@ Rect graph_area() {
 }
 
 std::span<const std::string> picture_names() {
-  static const std::vector<std::string> names = {"strain_rate", "velocity", "pressure", "contact",
-                                                 "convergence"};
+  static const std::vector<std::string> names = {"strain_rate", "velocity",    "pressure",
+                                                 "contact",     "convergence", "load_error"};
   return names;
 }
 
@@ -97,8 +97,8 @@ std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mes
                                      const post::Results& results) {
   const PictureData data{case_, mesh, results};
   using DrawPicture = void (*)(const Canvas&, const PictureData&);
-  const DrawPicture drawings[] = {draw_strain_rate, draw_velocity, draw_pressure, draw_contact,
-                                  draw_convergence};
+  const DrawPicture drawings[] = {draw_strain_rate, draw_velocity,    draw_pressure,
+                                  draw_contact,     draw_convergence, draw_load_error};
   const std::span<const std::string> names = picture_names();
   FF_ASSERT(names.size() == std::size(drawings), "one name per picture");
   std::vector<Picture> out;

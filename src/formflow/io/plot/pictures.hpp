@@ -47,13 +47,16 @@ void draw_pressure(const Canvas& canvas, const PictureData& data);
 /// smoothing between cells, so that checkerboard modes stay visible (docs/mixed.md).
 void draw_cell_pressure(const Canvas& canvas, const PictureData& data, const VectorX& cell_pressure,
                         const std::string& title);
+/// Each cell's share η_K of the load's error estimate (post/load_error_estimate.hpp),
+/// signed, without smoothing; "no error estimate" when it was not computed.
+void draw_load_error(const Canvas& canvas, const PictureData& data);
 /// Contact pressure and friction stress against arc length along Γ3.
 void draw_contact(const Canvas& canvas, const PictureData& data);
 /// Relative change per iteration (log) with the tolerance, and the pressure history.
 void draw_convergence(const Canvas& canvas, const PictureData& data);
 
 /// The stems of the pictures render_pictures draws, in its order:
-/// strain_rate, velocity, pressure, contact, convergence.
+/// strain_rate, velocity, pressure, contact, convergence, load_error.
 std::span<const std::string> picture_names();
 
 /// The mark of a run that did not converge, drawn over a finished picture: a

@@ -1,0 +1,96 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Reliability of the load's error estimate (docs/error-estimation.md).
+
+For the sticking-ram benchmark (exact (1 + pi/2) k = 2.5708) and Hill's
+frictionless wedge-die drawing (exact 2k(1 + alpha) r at Hill's reduction), on
+uniform meshes: the load p_h, the estimate of |p_h - p|, the true error, the
+effectivity index (estimate / true error) and whether p_h +- estimate holds p.
+
+    python3 bench/error_estimation.py --binary build/formflow [--sizes 1,0.5,0.25]
+        [--only ram|wedge15|wedge30] [--method refined|linearized]
+
+Prints a Markdown table. Timings are in the table only as the run's own
+summary.json numbers; take them on a quiet machine.
+"""
+import argparse
+import json
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import forming_references as ref  # noqa: E402
+
+
+def wedge_settings(degrees):
+    alpha = math.radians(degrees)
+    r = ref.hill_special_reduction(alpha)
+    return ({"process.type": '"drawing"', "geometry.die": '"wedge"',
+             "geometry.die_angle": degrees, "geometry.entry_half_height": 1,
+             "geometry.container_length": 2, "geometry.exit_length": 2,
+             "geometry.exit_half_height": repr(1 - r)},
+            ref.hill_wedge_stress(alpha))
+
+
+CASES = {
+    # The benchmark, rate-insensitive (docs/validation.md), sticking ram, d = 1e-4.
+    "ram": ({"process.ram": '"sticking"', "penalty.d": 1e-4}, 1 + math.pi / 2,
+            [1, 0.5, 0.25]),
+    "wedge15": (*wedge_settings(15), [0.25, 0.125, 0.0625]),
+    "wedge30": (*wedge_settings(30), [0.25, 0.125, 0.0625]),
+}
+
+
+def run(binary, directory, settings):
+    command = [binary, "run", "-q", "-o", str(directory)]
+    for key, value in settings.items():
+        command += ["--set", f"{key}={value}"]
+    result = subprocess.run(command)
+    if result.returncode not in (0, 3):
+        raise SystemExit(f"formflow exited {result.returncode}: {' '.join(command)}")
+    return json.loads((directory / "summary.json").read_text())
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--binary", default="build/formflow")
+    parser.add_argument("--only", choices=sorted(CASES))
+    parser.add_argument("--sizes", help="comma-separated mesh sizes (default: per case)")
+    parser.add_argument("--method", default="refined", choices=["refined", "linearized"])
+    args = parser.parse_args()
+    print("| case | h | dofs | p_h | estimate | p_h − p | effectivity | p in p_h ± est |"
+          " refined change | refined Newton its | run s | estimate s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    with tempfile.TemporaryDirectory() as scratch:
+        for name, (settings, exact, sizes) in CASES.items():
+            if args.only and name != args.only:
+                continue
+            if args.sizes:
+                sizes = [float(s) for s in args.sizes.split(",")]
+            for size in sizes:
+                case = {"material.alpha": 1e-4, "mesh.element": '"Q2"', "mesh.size": size,
+                        "solver.load_error": f'"{args.method}"', **settings}
+                summary = run(args.binary, Path(scratch) / f"{name}-{size}", case)
+                pressure = summary["pressure"]
+                load = pressure.get("drawing_stress", pressure["ram_reaction"])
+                estimate = pressure["ram_reaction_error"]
+                info = pressure["error_estimate"]
+                error = load - exact
+                timing = summary["timing_s"]
+                if estimate is None:
+                    print(f"| {name} | {size:g} | {summary['mesh']['dofs']} | {load:.4f} | "
+                          f"none ({info['unavailable']}) | {error:+.4f} | | | | | | |")
+                    continue
+                contained = "yes" if abs(error) <= estimate else "no"
+                print(f"| {name} | {size:g} | {summary['mesh']['dofs']} | {load:.4f} | "
+                      f"{estimate:.4f} | {error:+.4f} | {estimate / abs(error):.2f} | "
+                      f"{contained} | {info['refined_change']:+.4f} | "
+                      f"{info['refined_newton_iterations']} | {timing['total']:.2f} | "
+                      f"{timing.get('error estimate', 0):.2f} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()

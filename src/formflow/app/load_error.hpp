@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// The load's error estimate of a run: the refined mesh and problem it needs.
+#pragma once
+
+#include "formflow/assembly/forming_problem.hpp"
+#include "formflow/core/timer.hpp"
+#include "formflow/io/case.hpp"
+#include "formflow/post/results.hpp"
+
+namespace formflow::app {
+
+/// post::estimate_load_error for `case_` solved on `problem` with velocity `u`:
+/// makes the mesh refined once (case_.mesh with half the size; the structured
+/// channel and its refinement by 2 nest), the same discrete problem on it (the
+/// mixed formulation's condensed pressure included), and the parent of each
+/// fine cell. Says why not (LoadErrorEstimate::unavailable) when solver.load_error
+/// = "none", the mesh came from a file or not from the case, the run did not
+/// converge, or the problem has no Newton tangent (exact friction, d = 0 or
+/// d_N = 0, Taylor–Hood).
+template <int dim>
+post::LoadErrorEstimate
+load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,
+              bool mesh_from_case, bool converged, PhaseTimes& times);
+
+} // namespace formflow::app

@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: MIT
+// The reaction's adjoint on the mesh refined once and its cell-wise weighted residuals.
+#include "formflow/post/load_error_estimate.hpp"
+
+#include "formflow/core/error.hpp"
+#include "formflow/fem/nodal_interpolation.hpp"
+#include "formflow/solvers/coupled_tangent_solve.hpp"
+#include "formflow/solvers/forming_nonlinear_problem.hpp"
+#include "formflow/solvers/linear_solver.hpp"
+#include "formflow/solvers/newton_iteration.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace formflow::post {
+
+namespace {
+
+/// GMRES tolerance for (T + Nᵀ) z = g: the adjoint's relative error enters the
+/// estimate linearly, so 1e-6 is far below the two digits an error bar needs.
+constexpr Real adjoint_tolerance = 1e-6;
+constexpr int max_adjoint_krylov_iterations = 40;
+
+/// ∂Q/∂u on the free dofs: the driven rows of the full Jacobian summed, Jᵀ_{D,f} 1.
+/// T is symmetric and its prescribed rows are `reaction_rows`; Nᵀ 1_D adds the
+/// unsymmetric rest.
+template <int dim>
+VectorX reaction_gradient(const assembly::FormingProblem<dim>& problem,
+                          const assembly::LinearSystem& tangent,
+                          const assembly::UnsymmetricTangent<dim>& coupling) {
+  const assembly::ScatterPlan& plan = problem.plan();
+  VectorX driven = VectorX::Zero(problem.n_dofs());
+  for (Index dof : problem.constraints().driven_dofs) driven[dof] = 1.0;
+  // Σ over the driven rows of T's constrained rows (n_constrained × n_dofs).
+  VectorX row_weights = VectorX::Zero(plan.n_prescribed());
+  for (Index dof : problem.constraints().driven_dofs) row_weights[plan.prescribed_index(dof)] = 1.0;
+  const VectorX full_gradient_t = tangent.reaction_rows.transpose() * row_weights;
+  VectorX full_gradient = full_gradient_t;
+  if (!coupling.empty()) problem.apply_coupling_transpose(coupling, driven, full_gradient);
+  VectorX gradient(plan.n_free());
+  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+    if (const Index free = plan.free_index(dof); free >= 0) gradient[free] = full_gradient[dof];
+  return gradient;
+}
+
+LoadErrorEstimate unavailable(std::string why) {
+  LoadErrorEstimate estimate;
+  estimate.unavailable = std::move(why);
+  return estimate;
+}
+
+} // namespace
+
+template <int dim>
+LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
+                                      const assembly::FormingProblem<dim>& fine,
+                                      const std::vector<Index>& parent,
+                                      solvers::LinearSolverKind kind,
+                                      const solvers::IterationControl* settle, PhaseTimes& times) {
+  ScopedTimer timer(times, "error estimate");
+  const assembly::ScatterPlan& plan = fine.plan();
+  // 1. The coarse solution on the fine mesh, its prescribed values the fine ones.
+  VectorX prolonged = fem::interpolate_nodal_field(coarse.mesh(), u, dim, fine.mesh());
+  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+    if (plan.free_index(dof) < 0) prolonged[dof] = fine.constraints().values[dof];
+  // 1b. Settle the nonlinearity on the fine mesh (a loose Newton solve from ũ): the
+  // near rate-insensitive law makes the one-step linearisation miss most of the change.
+  Index settle_iterations = 0;
+  if (settle) {
+    PhaseTimes inner;
+    auto settle_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
+    solvers::FormingNonlinearProblem<dim> nonlinear(fine);
+    const solvers::SecantOutcome outcome =
+        solvers::newton_iteration(nonlinear, *settle_solver, *settle, {}, inner, &prolonged);
+    settle_iterations = static_cast<Index>(outcome.history.size());
+    if (outcome.velocity.allFinite()) prolonged = outcome.velocity;
+  }
+  const std::vector<Real> thresholds = fine.friction_thresholds(prolonged);
+
+  // 2. The exact Jacobian at ũ (primal: no duals) and the adjoint.
+  assembly::LinearSystem tangent = plan.make_system();
+  assembly::UnsymmetricTangent<dim> coupling;
+  VectorX force;
+  fine.assemble_newton(prolonged, thresholds, assembly::NewtonDuals<dim>{}, force, &tangent,
+                       &coupling);
+  if (coupling.has_friction)
+    return unavailable("a pressure-dependent friction threshold couples the tangent through the "
+                       "mollified contact pressure, whose transpose is not implemented");
+  const VectorX gradient = reaction_gradient(fine, tangent, coupling);
+  auto solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
+  if (!solver->analyze(tangent.matrix) || !solver->factorize(tangent.matrix))
+    return unavailable("the tangent on the refined mesh is not positive definite");
+  VectorX adjoint;
+  if (coupling.empty()) {
+    if (!solver->solve(gradient, adjoint))
+      return unavailable("the adjoint solve on the refined mesh failed");
+  } else {
+    // (T + Nᵀ) z = g: T symmetric, so only N is transposed.
+    const solvers::CouplingProduct transposed = [&](const VectorX& x, VectorX& y) {
+      const VectorX full_x = plan.expand(x, VectorX::Zero(plan.n_dofs()));
+      VectorX full_y = VectorX::Zero(plan.n_dofs());
+      fine.apply_coupling_transpose(coupling, full_x, full_y);
+      for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+        if (const Index free = plan.free_index(dof); free >= 0) y[free] += full_y[dof];
+    };
+    const solvers::KrylovOutcome krylov =
+        solvers::solve_coupled_tangent(tangent.matrix, transposed, *solver, gradient, adjoint,
+                                       adjoint_tolerance, max_adjoint_krylov_iterations);
+    if (!krylov.converged || !adjoint.allFinite())
+      return unavailable("GMRES on the transposed tangent did not converge");
+  }
+  if (!adjoint.allFinite()) return unavailable("the adjoint is not finite");
+
+  // 3. The weights W (fine) and W_h (its values at the coarse nodes) and the cells' shares.
+  VectorX weight = plan.expand(-adjoint, VectorX::Zero(plan.n_dofs()));
+  for (Index dof : fine.constraints().driven_dofs) weight[dof] = 1.0;
+  const VectorX coarse_weight =
+      fem::interpolate_nodal_field(fine.mesh(), weight, dim, coarse.mesh());
+  const VectorX fine_shares = fine.weighted_cell_forces(prolonged, thresholds, weight);
+  LoadErrorEstimate estimate;
+  estimate.cell_indicators =
+      -coarse.weighted_cell_forces(u, coarse.friction_thresholds(u), coarse_weight);
+  FF_ASSERT(static_cast<Index>(parent.size()) == fine.mesh().n_cells(), "one parent per fine cell");
+  for (Index cell = 0; cell < fine.mesh().n_cells(); ++cell)
+    estimate.cell_indicators[parent[cell]] += fine_shares[cell];
+  const Real height = coarse.driven_height();
+  estimate.cell_indicators /= height;
+  estimate.enriched_change = estimate.cell_indicators.sum();
+  estimate.enriched_dofs = fine.n_dofs();
+  estimate.settle_iterations = static_cast<int>(settle_iterations);
+  if (!std::isfinite(estimate.enriched_change) || !estimate.cell_indicators.allFinite())
+    return unavailable("the weighted residual is not finite");
+  // 4. From the two-level change to the error of p_h (assumed_load_error_order).
+  estimate.error =
+      std::abs(estimate.enriched_change) / (1.0 - std::pow(2.0, -assumed_load_error_order));
+  return estimate;
+}
+
+template <int dim>
+std::vector<Index> parent_cells(const mesh::Mesh<dim>& coarse, const mesh::Mesh<dim>& fine) {
+  using Box = Eigen::AlignedBox<Real, dim>;
+  const auto centroid = [](const mesh::Mesh<dim>& mesh, Index cell) {
+    Point<dim> sum = Point<dim>::Zero();
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a) sum += mesh.nodes.col(mesh.cells(a, cell));
+    return Point<dim>(sum / mesh.nodes_per_cell());
+  };
+  // Buckets of a uniform grid over the coarse mesh, about one coarse cell per bucket.
+  Box all;
+  std::vector<Box> boxes(coarse.n_cells());
+  std::vector<Point<dim>> centres(coarse.n_cells());
+  for (Index cell = 0; cell < coarse.n_cells(); ++cell) {
+    for (int a = 0; a < coarse.nodes_per_cell(); ++a)
+      boxes[cell].extend(Point<dim>(coarse.nodes.col(coarse.cells(a, cell))));
+    all.extend(boxes[cell]);
+    centres[cell] = centroid(coarse, cell);
+  }
+  const int per_axis = std::max(
+      1, static_cast<int>(std::ceil(std::pow(static_cast<Real>(coarse.n_cells()), 1.0 / dim))));
+  const Point<dim> extent = all.sizes().cwiseMax(std::numeric_limits<Real>::min());
+  const auto bucket_of = [&](const Point<dim>& x, int axis) {
+    const int k = static_cast<int>((x[axis] - all.min()[axis]) / extent[axis] * per_axis);
+    return std::clamp(k, 0, per_axis - 1);
+  };
+  std::map<std::array<int, dim>, std::vector<Index>> buckets;
+  for (Index cell = 0; cell < coarse.n_cells(); ++cell) {
+    std::array<int, dim> low, high;
+    for (int axis = 0; axis < dim; ++axis) {
+      low[axis] = bucket_of(boxes[cell].min(), axis);
+      high[axis] = bucket_of(boxes[cell].max(), axis);
+    }
+    std::array<int, dim> key = low;
+    while (true) { // every bucket in [low, high]
+      buckets[key].push_back(cell);
+      int axis = 0;
+      while (axis < dim && ++key[axis] > high[axis]) key[axis] = low[axis], ++axis;
+      if (axis == dim) break;
+    }
+  }
+  std::vector<Index> parent(fine.n_cells(), 0);
+  for (Index cell = 0; cell < fine.n_cells(); ++cell) {
+    const Point<dim> x = centroid(fine, cell);
+    std::array<int, dim> key;
+    for (int axis = 0; axis < dim; ++axis) key[axis] = bucket_of(x, axis);
+    const auto found = buckets.find(key);
+    if (found == buckets.end()) continue; // outside every box: not for nested meshes
+    // The nearest centroid among the boxes that hold x (among all, if none does).
+    const Real slack = 1e-12 * extent.maxCoeff();
+    std::pair<bool, Real> best{false, std::numeric_limits<Real>::infinity()};
+    for (Index candidate : found->second) {
+      const std::pair<bool, Real> rank{boxes[candidate].exteriorDistance(x) <= slack,
+                                       -(centres[candidate] - x).squaredNorm()};
+      if (rank.first > best.first || (rank.first == best.first && -rank.second < best.second)) {
+        best = {rank.first, -rank.second};
+        parent[cell] = candidate;
+      }
+    }
+  }
+  return parent;
+}
+
+template LoadErrorEstimate
+estimate_load_error<2>(const assembly::FormingProblem<2>&, const VectorX&,
+                       const assembly::FormingProblem<2>&, const std::vector<Index>&,
+                       solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&);
+template LoadErrorEstimate
+estimate_load_error<3>(const assembly::FormingProblem<3>&, const VectorX&,
+                       const assembly::FormingProblem<3>&, const std::vector<Index>&,
+                       solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&);
+template std::vector<Index> parent_cells<2>(const mesh::Mesh<2>&, const mesh::Mesh<2>&);
+template std::vector<Index> parent_cells<3>(const mesh::Mesh<3>&, const mesh::Mesh<3>&);
+
+} // namespace formflow::post

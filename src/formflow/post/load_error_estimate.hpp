@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// A goal-oriented (dual-weighted residual) estimate of the load's discretisation
+// error: the adjoint of the reaction functional on the mesh refined once.
+#pragma once
+
+#include "formflow/assembly/forming_problem.hpp"
+#include "formflow/core/timer.hpp"
+#include "formflow/post/results.hpp"
+#include "formflow/solvers/linear_solver_kind.hpp"
+#include "formflow/solvers/stop_reason.hpp"
+
+#include <optional>
+#include <string>
+
+namespace formflow::post {
+
+/// The asymptotic order r of the load error |p_h − p| ≈ C h^r assumed to turn the
+/// two-level change p_{h/2} − p_h into an estimate of p_h − p: under
+/// |p − p_{h/2}| = 2^{-r} |p − p_h|, |p − p_h| = |p_{h/2} − p_h| / (1 − 2^{-r}).
+/// r = 1 is the order the die corner's velocity discontinuity (the slip-line
+/// fields' centred fans) allows, observed for the square and the wedge dies
+/// (docs/validation.md, docs/error-estimation.md); a faster-converging load makes
+/// the estimate pessimistic by at most 2 (1 − 2^{-r}) < 2, a slower one optimistic.
+inline constexpr Real assumed_load_error_order = 1.0;
+
+/// The DWR estimate for the driven-end reaction Q(u) = Σ_driven f_i(u) (the ram
+/// reaction, the drawing force). `fine` is the same discrete problem on the mesh
+/// refined once (nested in `coarse`'s); `u` the solution on `coarse`.
+///  1. ũ = u prolonged to the fine mesh (exact: the spaces nest).
+///  2. The adjoint z on the fine mesh: Jᵀ z = ∂Q/∂u_free with J the Newton tangent
+///     at ũ (primal, the exact Jacobian; τ_f frozen), i.e. (T + Nᵀ) z = g; T is
+///     factorised once, Nᵀ (the full-ε̇ form's unsymmetric rest) goes into GMRES
+///     preconditioned by T. A pressure-dependent friction threshold's coupling has
+///     no transpose here: unavailable.
+///  3. W = (1 on the driven dofs, −z on the free ones): Q(ũ) − z·R(ũ) = W·f(ũ) is
+///     Q on the fine mesh after one linearised step, W_h = W at the coarse nodes is
+///     a lifting for the coarse reaction, and per coarse cell K
+///     η_K = Σ_{children k} W_k·f_k(ũ) − W_h,K·f_K(u) (Galerkin orthogonality on
+///     the coarse space is what the subtraction removes).
+///  4. error = |Σ η_K| / (1 − 2^{-r}) / height, r = assumed_load_error_order.
+/// `parent` maps each fine cell to its coarse cell. Timed as "error estimate".
+template <int dim>
+LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
+                                      const assembly::FormingProblem<dim>& fine,
+                                      const std::vector<Index>& parent,
+                                      solvers::LinearSolverKind kind,
+                                      const solvers::IterationControl* settle, PhaseTimes& times);
+
+/// For each cell of `fine`, the cell of `coarse` that contains its centroid (the
+/// mean of its nodes): bounding-box buckets, then the nearest centroid among the
+/// cells whose box holds it. Exact for a mesh and its refinement by 2 with
+/// cells that are not too skewed (a child's centroid lies at the parent's
+/// reference point (±½, ±½)).
+template <int dim>
+std::vector<Index> parent_cells(const mesh::Mesh<dim>& coarse, const mesh::Mesh<dim>& fine);
+
+} // namespace formflow::post
