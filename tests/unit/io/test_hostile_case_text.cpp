@@ -9,9 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 
@@ -110,13 +107,11 @@ TEST_F(HostileCase, OversizedFileAndLongLinesAreRefused) {
   // size limit, and 5 000 points on one line are refused at once.
   std::string profile = "[geometry]\ndie = \"polyline\"\ndie_profile = [[0, 10]";
   for (int k = 1; k < 5000; ++k) profile += ", [" + std::to_string(k) + ", 5]";
-  const std::string path = write(profile + "]\n");
-  const std::clock_t start = std::clock(); // CPU time: a loaded machine does not count
-  const InputError line = error_of(path);
-  const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+  // Refused by the line-length check, before toml11 sees the line (how fast:
+  // bench/bench_case_file.cpp, long_die_profile_line).
+  const InputError line = error_of(write(profile + "]\n"));
   EXPECT_EQ(line.line, 3);
   EXPECT_TRUE(has_text(line.message, "line longer than 1024 bytes"));
-  EXPECT_LT(seconds, 1.0);
 }
 
 TEST_F(HostileCase, DieProfileEntriesAreBounded) {
@@ -132,30 +127,17 @@ TEST_F(HostileCase, DieProfileEntriesAreBounded) {
   EXPECT_TRUE(has_text(error.message, "1001 entries, more than the limit of 1000"));
 }
 
-TEST_F(HostileCase, ManySectionsAreOrderedInLinearithmicTime) {
-  // Sorting 20 000 sections recounted the lines from the top per comparison
-  // (37 s); the size limit admits about 8 000, which took 4.4 s, 17 times as
-  // long as 2 000 (n² log n). Now the time grows like the file (~4 times),
-  // whatever the machine's speed. Process CPU time, best of three: wall time on a
-  // loaded machine (other jobs building) once made the small case look 15 times
-  // faster than it is.
-  auto seconds_for = [this](int n_sections) {
-    std::string text = "[process]\nspeed = 1\n";
-    for (int k = 0; k < n_sections; ++k) text += "[s" + std::to_string(k) + "]\n";
-    const std::string path = write(text);
-    double best = INFINITY;
-    for (int repeat = 0; repeat < 3; ++repeat) {
-      const std::clock_t start = std::clock();
-      const InputError error = error_of(path);
-      best = std::min(best, static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
-      EXPECT_EQ(error.key, "s0"); // the first unknown section in file order
-      EXPECT_EQ(error.line, 3);
-    }
-    return best;
-  };
-  const double small = seconds_for(2000), large = seconds_for(8000);
-  EXPECT_LT(large, 10.0 * small) << small << " s for 2 000 sections, " << large << " for 8 000";
-  EXPECT_LT(large, 2.0);
+TEST_F(HostileCase, ManySectionsAreReportedInFileOrder) {
+  // Sorting 20 000 sections once recounted the lines from the top per comparison
+  // (37 s). The size limit admits about 8 000; the first unknown one in file order
+  // is named. How the time grows with the count (linearithmic, not n² log n) is
+  // measured in bench/bench_case_file.cpp (many_unknown_sections), not here: a
+  // timed test fails on a loaded or slow machine, not on a regression.
+  std::string text = "[process]\nspeed = 1\n";
+  for (int k = 0; k < 8000; ++k) text += "[s" + std::to_string(k) + "]\n";
+  const InputError error = error_of(write(text));
+  EXPECT_EQ(error.key, "s0");
+  EXPECT_EQ(error.line, 3);
 }
 
 TEST_F(HostileCase, ClampedNumbersAreRefused) {
