@@ -10,7 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 namespace formflow::io::plot {
 
@@ -32,6 +35,73 @@ Pixel unrolled(const Case& case_, const post::ContactSample& sample) {
   return {sample.x + (wall - distance), theta * 180 / std::numbers::pi};
 }
 
+/// The nearest of a set of screen points, each with its own reach: the distance to
+/// its eighth-nearest neighbour, which on a grid of spacings a, b is the diagonal
+/// √(a² + b²) (the four neighbours along the axes, then the four diagonal ones), so
+/// a point's Voronoi cell is covered where the rule is uneven (a rectangle's corner
+/// seen as an angle is), while the plane a diagonal beyond the outermost points stays
+/// empty, whatever the axes' scales (a length and an angle).
+class NearestPoints {
+public:
+  explicit NearestPoints(const std::vector<Pixel>& points) : points_(points) {
+    if (points_.empty()) return;
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (const Pixel& p : points_) {
+      x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
+      y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+    }
+    const double area = std::max(1.0, (x1 - x0 + 1.0) * (y1 - y0 + 1.0));
+    bucket_ = std::max(2.0, 2.0 * std::sqrt(area / static_cast<double>(points_.size())));
+    for (std::size_t k = 0; k < points_.size(); ++k) buckets_[bucket_of(points_[k])].push_back(k);
+    reach_.assign(points_.size(), 4.0); // a lone point: a few pixels around it
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      std::vector<double> distances;
+      visit(points_[k], 3, [&](std::size_t j) {
+        if (j != k) distances.push_back(distance(points_[j], points_[k]));
+      });
+      if (distances.size() >= 8) {
+        std::nth_element(distances.begin(), distances.begin() + 7, distances.end());
+        reach_[k] = std::max(2.0, distances[7]);
+      }
+      largest_reach_ = std::max(largest_reach_, reach_[k]);
+    }
+  }
+
+  /// The index of the point nearest to `p` if `p` is within that point's reach, else −1.
+  long within(const Pixel& p) const {
+    long best = -1;
+    double best_distance = INFINITY;
+    visit(p, 1 + static_cast<int>(largest_reach_ / bucket_), [&](std::size_t j) {
+      if (const double d = distance(points_[j], p); d < best_distance) {
+        best_distance = d;
+        best = static_cast<long>(j);
+      }
+    });
+    return best >= 0 && best_distance <= reach_[static_cast<std::size_t>(best)] ? best : -1;
+  }
+
+private:
+  static double distance(const Pixel& a, const Pixel& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1]);
+  }
+  std::pair<long, long> bucket_of(const Pixel& p) const {
+    return {static_cast<long>(std::floor(p[0] / bucket_)),
+            static_cast<long>(std::floor(p[1] / bucket_))};
+  }
+  template <class Visit> void visit(const Pixel& p, int radius, Visit&& on_point) const {
+    const auto [bx, by] = bucket_of(p);
+    for (long i = bx - radius; i <= bx + radius; ++i)
+      for (long j = by - radius; j <= by + radius; ++j)
+        if (const auto found = buckets_.find({i, j}); found != buckets_.end())
+          for (const std::size_t k : found->second) on_point(k);
+  }
+
+  const std::vector<Pixel>& points_;
+  double bucket_ = 2.0, largest_reach_ = 0.0;
+  std::vector<double> reach_;
+  std::map<std::pair<long, long>, std::vector<std::size_t>> buckets_;
+};
+
 /// One panel: the points coloured by `value` on a linear scale from 0, its colour bar.
 void contact_panel(const Canvas& canvas, const Rect& area, const PictureData& data,
                    const std::vector<Pixel>& where, Real (*value)(const post::ContactSample&),
@@ -46,18 +116,49 @@ void contact_panel(const Canvas& canvas, const Rect& area, const PictureData& da
     high = std::max(high, value(contact[k]));
   }
   const bool slab = data.case_.mesh.solid.section == mesh::ChannelSection::Slab;
-  const Axes axes(area, Axis{x0, x1, false, {}, "x + (wall distance − distance): unrolled"},
+  const Axes axes(area,
+                  Axis{x0,
+                       x1,
+                       false,
+                       {},
+                       slab ? "unrolled: x along the container, then x + (H − y) over the die"
+                            : "unrolled: x along the container, then x + (wall − distance from the "
+                              "axis) over the die"},
                   Axis{y0, y1, false, {}, slab ? "z" : "angle about the axis [°]"});
   ColourScale scale = ColourScale::linear(0.0, high > 0 ? high : 1.0, 8, Palette::Sequential);
-  // A mark about the spacing of the points on screen (they come from a surface rule).
-  const double spacing = std::sqrt(area.width * area.height /
-                                   std::max<double>(1.0, static_cast<double>(contact.size())));
-  const double side = std::clamp(0.9 * spacing, 2.0, 10.0);
+  // The points come from a surface quadrature rule: uneven (Gauss points cluster
+  // towards face edges) and, on a square die's face, not on a grid of the unrolled
+  // coordinates. Each 2-pixel block takes the colour of its nearest point when one is
+  // within its reach, a Voronoi map: the surface is tiled without gaps and its outline
+  // (where no points are) stays white.
+  std::vector<Pixel> at(contact.size());
+  for (std::size_t k = 0; k < contact.size(); ++k) at[k] = axes.at(where[k][0], where[k][1]);
+  const NearestPoints nearest(at);
+  const std::vector<int> band = [&] {
+    std::vector<int> bands(contact.size());
+    for (std::size_t k = 0; k < contact.size(); ++k) bands[k] = scale.band_of(value(contact[k]));
+    return bands;
+  }();
+  constexpr double block = 2.0;
   canvas.clip(area);
-  for (std::size_t k = 0; k < contact.size(); ++k) {
-    const Pixel at = axes.at(where[k][0], where[k][1]);
-    canvas.fill_rect({at[0] - side / 2, at[1] - side / 2, side, side},
-                     scale.band_colour(scale.band_of(value(contact[k]))));
+  for (double y = area.y; y < area.bottom(); y += block) {
+    // Runs of one colour along the row are one rectangle (a small SVG).
+    int run_band = -1;
+    double run_start = area.x;
+    auto close_run = [&](double end) {
+      if (run_band >= 0)
+        canvas.fill_rect({run_start, y, end - run_start, block}, scale.band_colour(run_band));
+    };
+    for (double x = area.x; x < area.right(); x += block) {
+      const long k = nearest.within({x + block / 2, y + block / 2});
+      const int this_band = k < 0 ? -1 : band[static_cast<std::size_t>(k)];
+      if (this_band != run_band) {
+        close_run(x);
+        run_band = this_band;
+        run_start = x;
+      }
+    }
+    close_run(area.right());
   }
   canvas.unclip();
   axes.draw(canvas, false);
