@@ -12,6 +12,7 @@ namespace formflow::mesh {
 /// Our lexicographic local node (fem/lagrange.hpp) of node `gmsh_node` of a
 /// Gmsh hexa-8 (`order` 1) or hexa-27 (`order` 2), from Gmsh's own reference
 /// coordinates of the element (corners, then edge, face and centre nodes).
+/// Asks Gmsh: call it while a GmshSession is open.
 int lexicographic_of_gmsh_hex_node(int order, int gmsh_node);
 
 /// Converts the current model of `session` as mesh_from_gmsh_model does in the

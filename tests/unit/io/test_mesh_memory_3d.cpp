@@ -68,10 +68,10 @@ TEST(MeshMemory3D, TheHintFitsTheRectanglesHalfWidths) {
   suggested.mesh.size = size;
   EXPECT_FALSE(mesh_memory_problem(suggested, memory)) << problem->hint;
   // ... and is the finest that does: the next finer fitting size does not fit.
-  const auto finer = mesh::nearest_fitting_sizes(
-                         mesh::solid_lengths_to_fit(case_.mesh.geometry, case_.mesh.solid),
-                         0.999 * size)
-                         .smaller;
+  const auto finer =
+      mesh::nearest_fitting_sizes(mesh::solid_lengths_to_fit(case_.mesh.geometry, case_.mesh.solid),
+                                  0.999 * size)
+          .smaller;
   ASSERT_TRUE(finer);
   suggested.mesh.size = finer->size();
   EXPECT_TRUE(mesh_memory_problem(suggested, memory)) << finer->size();
