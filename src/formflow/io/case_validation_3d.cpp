@@ -61,7 +61,8 @@ std::optional<KeyRefusal> unsupported_in_3d(const Case& case_) {
       case_.mesh.geometry.die == mesh::DieShape::Square)
     return KeyRefusal{{"geometry.die", "geometry.section"},
                       "a round billet through a square die (an annular die face) is not "
-                      "implemented yet: the round section runs with the revolved dies",
+                      "implemented yet: the round section runs with the revolved dies (why: "
+                      "docs/3d.md)",
                       "use geometry.die = \"wedge\" (a conical die), \"arc\" or \"polyline\""};
   if (case_.symmetry == physics::Symmetry::Axisymmetric)
     return KeyRefusal{{"geometry.symmetry", "geometry.dimension"},
