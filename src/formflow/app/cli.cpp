@@ -93,6 +93,8 @@ int run_case(const Options& options) {
       const mesh::SolidChannel& solid = case_.mesh.solid;
       if (case_.manufactured != physics::ManufacturedSolution::None)
         mesh_text += " (3D unit cube)";
+      else if (case_.mesh.source == mesh::MeshSource::File)
+        mesh_text += " (3D hexahedra)";
       else if (solid.section == mesh::ChannelSection::Slab)
         mesh_text += fmt::format(" (3D slab, thickness {:.6g})", solid.thickness);
       else if (solid.section == mesh::ChannelSection::Rectangle)

@@ -115,6 +115,10 @@ solvers::SecantOutcome run_counted_loop(const SolvePlan& plan, const io::Case& c
   counter.fill(outcome.history);
   results.linear_algebra.solver = solver->name(); // e.g. "petsc-gmres-cholesky"
   results.linear_algebra.iterations = solver->krylov_iterations();
+  const solvers::FactorSize factor = solver->factor_size(); // the fine mesh's pattern
+  results.linear_algebra.matrix_nonzeros = factor.matrix_nonzeros;
+  results.linear_algebra.factor_nonzeros = factor.factor_nonzeros;
+  results.linear_algebra.factor_flops = factor.factor_flops;
   return outcome;
 }
 

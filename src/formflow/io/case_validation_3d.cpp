@@ -4,6 +4,7 @@
 
 #include "formflow/io/case_keys.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/gmsh_solid_channel.hpp"
 
 #include <array>
 #include <string_view>
@@ -60,18 +61,20 @@ std::optional<KeyRefusal> unsupported_in_3d(const Case& case_) {
       case_.mesh.geometry.die == mesh::DieShape::Square)
     return KeyRefusal{{"geometry.die", "geometry.section"},
                       "a round billet through a square die (an annular die face) is not "
-                      "implemented yet: the round section runs with the revolved dies",
+                      "implemented yet: the round section runs with the revolved dies (why: "
+                      "docs/3d.md)",
                       "use geometry.die = \"wedge\" (a conical die), \"arc\" or \"polyline\""};
   if (case_.symmetry == physics::Symmetry::Axisymmetric)
     return KeyRefusal{{"geometry.symmetry", "geometry.dimension"},
                       "the axisymmetric model is two-dimensional (y = r in the meridian plane)",
                       "use geometry.dimension = 2 with geometry.symmetry = \"axisymmetric\", or "
                       "geometry.symmetry = \"plane\" in 3D"};
-  if (case_.mesh.source != mesh::MeshSource::Structured)
-    return KeyRefusal{{"mesh.source", "geometry.dimension"},
-                      "three-dimensional meshes come from the structured generator only so far "
-                      "(Gmsh solids and hexahedral .msh files are not implemented yet)",
-                      "use mesh.source = \"structured\" with geometry.dimension = 3"};
+  if (case_.mesh.source == mesh::MeshSource::Gmsh &&
+      !mesh::gmsh_builds_solid_channel(case_.mesh.solid, case_.mesh.geometry.die))
+    return KeyRefusal{{"mesh.source", "geometry.section"},
+                      "Gmsh builds the solid slab (every die) and the rectangle with the square "
+                      "die only; this section and die come from the structured generator",
+                      "use mesh.source = \"structured\", or \"file\" with a .msh of hexahedra"};
   return std::nullopt;
 }
 
@@ -87,6 +90,8 @@ std::optional<KeyRefusal> rectangle_problem(const Case& case_) {
                       fmt::format("the product ({} wide) is wider than the billet ({})",
                                   2 * solid.exit_half_width, 2 * solid.entry_half_width),
                       "make geometry.exit_half_width ≤ geometry.entry_half_width"};
+  // Gmsh chooses its own cross-section cells; a file's mesh has no mesh.size.
+  if (case_.mesh.source != mesh::MeshSource::Structured) return std::nullopt;
   const Real size = case_.mesh.size;
   const bool square = case_.mesh.geometry.die == mesh::DieShape::Square;
   for (const char* name : {"geometry.entry_half_width", "geometry.exit_half_width"}) {

@@ -11,11 +11,14 @@
 #include "formflow/mesh/facet_axis.hpp"
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_mesh.hpp"
+#include "formflow/mesh/gmsh_solid_channel.hpp"
+#include "formflow/mesh/gmsh_solid_mesh.hpp"
 #endif
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <string_view>
 
 namespace formflow::io {
 
@@ -39,29 +42,41 @@ std::string resolved_mesh_path(const Case& case_, const mesh::MeshSpec& spec) {
   return (std::filesystem::path(set_in).parent_path() / path).string();
 }
 
+/// "(x, y)" or "(x, y, z)", 6 significant digits.
+template <int dim> std::string point_text(const Point<dim>& p) {
+  if constexpr (dim == 2)
+    return fmt::format("({:.6g}, {:.6g})", p.x(), p.y());
+  else
+    return fmt::format("({:.6g}, {:.6g}, {:.6g})", p.x(), p.y(), p.z());
+}
+
 /// Checks the Jacobian at the Gauss points of the full rule, where the solver
 /// evaluates it, and at the cell's nodes: a collapsed edge (two corners in one
 /// place) or a corner angle of 180° or more has det J ≤ 0 at a corner only,
 /// while every Gauss point can still be positive.
-void check_jacobians(const Case& case_, const mesh::MeshSpec& spec, const mesh::Mesh<2>& mesh) {
-  fem::CellValues<2> at_gauss(mesh.order, fem::gauss_rule<2>(mesh.order + 1));
-  fem::CellValues<2> at_nodes(mesh.order, fem::nodal_rule<2>(mesh.order + 1));
-  fem::CellValues<2>::Gradients coordinates(2, mesh.nodes_per_cell());
+template <int dim>
+void check_jacobians(const Case& case_, const mesh::MeshSpec& spec, const mesh::Mesh<dim>& mesh) {
+  fem::CellValues<dim> at_gauss(mesh.order, fem::gauss_rule<dim>(mesh.order + 1));
+  fem::CellValues<dim> at_nodes(mesh.order, fem::nodal_rule<dim>(mesh.order + 1));
+  typename fem::CellValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
     const bool gauss_valid = at_gauss.reinit(coordinates);
     if (gauss_valid && at_nodes.reinit(coordinates)) continue;
-    const Point<2> centre = coordinates.rowwise().mean();
+    const Point<dim> centre = coordinates.rowwise().mean();
     const Case::KeyLocation where = location_of(case_, "mesh.file");
     throw InputError(where.file, where.line, "mesh.file",
-                     fmt::format("{}: cell {} (centre ({:.6g}, {:.6g})) is inverted, tangled or "
+                     fmt::format("{}: cell {} (centre {}) is inverted, tangled or "
                                  "degenerate: its Jacobian is not positive at a {}",
-                                 spec.file, cell, centre.x(), centre.y(),
+                                 spec.file, cell, point_text<dim>(centre),
                                  gauss_valid ? "node (a collapsed edge or a corner angle ≥ 180°)"
                                              : "Gauss point"),
-                     "fix the mesh: every quadrilateral must be convex enough that its "
-                     "isoparametric map is one-to-one");
+                     dim == 2 ? "fix the mesh: every quadrilateral must be convex enough that its "
+                                "isoparametric map is one-to-one"
+                              : "fix the mesh: every hexahedron must be convex enough that its "
+                                "isoparametric map is one-to-one (no face folded, no corner "
+                                "pulled through the opposite face)");
   }
 }
 
@@ -72,11 +87,16 @@ std::vector<mesh::PhysicalBoundary> boundary_map(const mesh::MeshSpec& spec) {
   return map;
 }
 
-mesh::Mesh<2> read_mesh_file(const Case& case_, const mesh::MeshSpec& spec) {
+/// The file's cells: quadrilaterals for geometry.dimension = 2, hexahedra for 3.
+template <int dim> mesh::Mesh<dim> read_mesh_file(const Case& case_, const mesh::MeshSpec& spec) {
   using Subject = mesh::MeshFileError::Subject;
   try {
-    return mesh::read_gmsh_mesh(resolved_mesh_path(case_, spec), boundary_map(spec),
-                                fem::element_order(case_.element));
+    if constexpr (dim == 2)
+      return mesh::read_gmsh_mesh(resolved_mesh_path(case_, spec), boundary_map(spec),
+                                  fem::element_order(case_.element));
+    else
+      return mesh::read_gmsh_solid_mesh(resolved_mesh_path(case_, spec), boundary_map(spec),
+                                        fem::element_order(case_.element));
   } catch (const mesh::MeshFileError& error) {
     std::string key = "mesh.file";
     if (error.subject == Subject::Element) key = "mesh.element";
@@ -94,40 +114,46 @@ mesh::Mesh<2> read_mesh_file(const Case& case_, const mesh::MeshSpec& spec) {
 
 /// u_N = 0 on a symmetry facet is imposed on the component along its normal axis
 /// (assembly/constraints.hpp): a tilted or curved symmetry line cannot be.
+template <int dim>
 void check_symmetry_planes(const Case& case_, const mesh::MeshSpec& spec,
-                           const mesh::Mesh<2>& mesh) {
+                           const mesh::Mesh<dim>& mesh) {
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
     if (facet.label != mesh::BoundaryLabel::Symmetry || mesh::facet_normal_axis(mesh, facet))
       continue;
-    Point<2> centre = Point<2>::Zero();
+    Point<dim> centre = Point<dim>::Zero();
     const std::vector<int> nodes =
-        mesh::face_local_nodes<2>(mesh.nodes_per_side(), facet.local_face);
+        mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
     for (int local : nodes)
       centre += mesh.nodes.col(mesh.cells(local, facet.cell)) / static_cast<Real>(nodes.size());
     const Case::KeyLocation where = location_of(case_, "mesh.boundaries");
+    const std::string_view what = dim == 2 ? "line" : "plane";
     throw InputError(where.file, where.line, "mesh.boundaries",
-                     fmt::format("{}: a \"symmetry\" facet of cell {} (centre ({:.6g}, {:.6g})) is "
-                                 "not on a line x = const or y = const",
-                                 spec.file, facet.cell, centre.x(), centre.y()),
-                     "a symmetry line must be straight and parallel to an axis (the symmetry "
-                     "condition fixes the velocity component along its normal)");
+                     fmt::format("{}: a \"symmetry\" facet of cell {} (centre {}) is "
+                                 "not on a {}",
+                                 spec.file, facet.cell, point_text<dim>(centre),
+                                 dim == 2 ? "line x = const or y = const"
+                                          : "plane x = const, y = const or z = const"),
+                     fmt::format("a symmetry {} must be flat and normal to an axis (the symmetry "
+                                 "condition fixes the velocity component along its normal)",
+                                 what));
   }
 }
 
 /// The part that carries the process speed must exist, or nothing drives the flow.
-void check_driven_part(const Case& case_, const mesh::MeshSpec& spec, const mesh::Mesh<2>& mesh) {
+template <int dim>
+void check_driven_part(const Case& case_, const mesh::MeshSpec& spec, const mesh::Mesh<dim>& mesh) {
   const bool extrusion = case_.process.type == physics::ProcessType::Extrusion;
   const mesh::BoundaryLabel driven =
       extrusion ? mesh::BoundaryLabel::Rear : mesh::BoundaryLabel::Front;
   for (const mesh::BoundaryFacet& facet : mesh.facets)
     if (facet.label == driven) return;
   const Case::KeyLocation where = location_of(case_, "mesh.boundaries");
-  throw InputError(
-      where.file, where.line, "mesh.boundaries",
-      fmt::format("{}: no boundary facet is \"{}\", where {} drives the flow", spec.file,
-                  mesh::label_name(driven),
-                  extrusion ? "the ram of the extrusion" : "the pull of the drawing"),
-      fmt::format("map the physical curve of that end to \"{}\"", mesh::label_name(driven)));
+  throw InputError(where.file, where.line, "mesh.boundaries",
+                   fmt::format("{}: no boundary facet is \"{}\", where {} drives the flow",
+                               spec.file, mesh::label_name(driven),
+                               extrusion ? "the ram of the extrusion" : "the pull of the drawing"),
+                   fmt::format("map the physical {} of that end to \"{}\"",
+                               dim == 2 ? "curve" : "surface", mesh::label_name(driven)));
 }
 #endif
 
@@ -145,16 +171,22 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
   }
 #if FORMFLOW_WITH_GMSH
   if (spec.source == mesh::MeshSource::Gmsh) {
+    if (spec.dimension == 3) // slab or square-die rectangle: io/case_validation_3d.cpp
+      return mesh::make_gmsh_solid_channel_mesh(spec.geometry, spec.solid, spec.size, order,
+                                                drawing);
     mesh::Mesh<2> mesh = mesh::make_gmsh_channel_mesh(spec.geometry, spec.size, order);
     if (drawing) mesh::free_container_wall(mesh);
     return mesh;
   }
   // A file's parts are the user's map: drawing maps the wall before the die to free_entry.
-  mesh::Mesh<2> mesh = read_mesh_file(case_, spec);
-  check_jacobians(case_, spec, mesh);
-  check_symmetry_planes(case_, spec, mesh);
-  check_driven_part(case_, spec, mesh);
-  return mesh;
+  const auto checked = [&](auto mesh) -> mesh::AnyMesh {
+    check_jacobians(case_, spec, mesh);
+    check_symmetry_planes(case_, spec, mesh);
+    check_driven_part(case_, spec, mesh);
+    return mesh;
+  };
+  if (spec.dimension == 3) return checked(read_mesh_file<3>(case_, spec));
+  return checked(read_mesh_file<2>(case_, spec));
 #else
   const auto found = case_.key_locations.find("mesh.source");
   const Case::KeyLocation where =

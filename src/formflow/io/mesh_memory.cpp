@@ -61,7 +61,10 @@ std::string valid_size_text(const Case& case_, Real smallest, Real memory_bytes)
       if (fits(case_, size, memory_bytes)) return format_key_value(size);
     return "";
   }
-  const std::vector<Real> lengths = mesh::lengths_to_fit(case_.mesh.geometry);
+  // A solid rectangle's half widths are cut into cells of mesh.size too.
+  const std::vector<Real> lengths =
+      case_.mesh.dimension == 3 ? mesh::solid_lengths_to_fit(case_.mesh.geometry, case_.mesh.solid)
+                                : mesh::lengths_to_fit(case_.mesh.geometry);
   Real size = smallest;
   for (int attempt = 0; attempt < 100; ++attempt) {
     const auto larger = mesh::nearest_fitting_sizes(lengths, size).larger;
@@ -88,8 +91,10 @@ std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real s
                 : mesh::die_channel_cell_count(case_.mesh.geometry, size);
   const int order = fem::element_order(case_.element);
   if (case_.mesh.dimension == 3) {
-    return MeshMemoryEstimate{cells, 3.0 * order * order * order * cells,
-                              run_bytes_per_dof * 3.0 * order * order * order * cells};
+    const Real dofs = 3.0 * order * order * order * cells;
+    const Real factor_entries = solid_factor_coefficient * std::pow(dofs, 4.0 / 3.0);
+    return MeshMemoryEstimate{cells, dofs, run_bytes_per_dof * dofs + 8.0 * factor_entries,
+                              factor_entries};
   }
   const Real dofs = 2.0 * order * order * cells;
   return MeshMemoryEstimate{cells, dofs, run_bytes_per_dof * dofs};
@@ -123,22 +128,37 @@ Real machine_memory_bytes() {
 std::optional<KeyProblem> mesh_memory_problem(const Case& case_, Real memory_bytes) {
   const auto estimate = estimate_mesh_memory(case_, case_.mesh.size);
   if (!estimate || estimate->bytes <= memory_bytes) return std::nullopt;
-  // Cells grow as 1/size^dim (the slab's layers too): the smallest size whose estimate
-  // fits, then a valid one above it.
-  const Real smallest =
-      case_.mesh.size * std::pow(estimate->bytes / memory_bytes, 1.0 / case_.mesh.dimension);
+  // The smallest size whose estimate fits, then a valid one above it. Cells grow as
+  // 1/size^dim (the slab's layers too), so in 2D that size is a root; in 3D the
+  // factor grows faster (bytes ~ size^−4), and the size is bisected between the one
+  // asked and size · ratio^(1/3), which fits (each term falls at least by the ratio).
+  const Real ratio = estimate->bytes / memory_bytes;
+  Real smallest = case_.mesh.size * std::pow(ratio, 1.0 / case_.mesh.dimension);
+  if (case_.mesh.dimension == 3) {
+    Real lower = case_.mesh.size;
+    while (!fits(case_, smallest, memory_bytes)) smallest *= 1.01; // cell counts round
+    for (int step = 0; step < 60; ++step) {
+      const Real middle = 0.5 * (lower + smallest);
+      (fits(case_, middle, memory_bytes) ? smallest : lower) = middle;
+    }
+  }
   const std::string size = valid_size_text(case_, smallest, memory_bytes);
   return KeyProblem{
       fmt::format("value {} makes about {:.3g} cells ({:.3g} velocity dofs), which need at least "
                   "{} of memory; this machine has {}",
                   format_key_value(case_.mesh.size), estimate->cells, estimate->dofs,
                   bytes_text(estimate->bytes), bytes_text(memory_bytes)),
-      fmt::format("{}; the estimate is {:.0f} bytes per dof, a lower bound from the runs in "
+      fmt::format("{}; the estimate is {:.0f} bytes per dof{}, a lower bound from the runs in "
                   "docs/benchmarks.md",
                   size.empty() ? std::string("use a coarser mesh.size")
                                : "use mesh.size ≥ " + format_key_value(round_up(smallest, 3)) +
                                      ", e.g. " + size,
-                  run_bytes_per_dof)};
+                  run_bytes_per_dof,
+                  estimate->factor_entries > 0
+                      ? fmt::format(" and 8 per entry of the Cholesky factor (about {:.3g} "
+                                    "entries, growing as dofs^(4/3) in 3D)",
+                                    estimate->factor_entries)
+                      : std::string())};
 }
 
 } // namespace formflow::io

@@ -196,6 +196,16 @@ json summary_document(const Case& case_, const post::Results& results) {
                            {"ranks", results.linear_algebra.ranks},
                            {"factorizations", results.timing.counted("factorization")},
                            {"krylov_iterations", results.timing.counted("krylov iterations")}};
+  // The fill (counts from the back-end's analysis; null when it does not report them).
+  // CHOLMOD counts in doubles; they are whole numbers, written as such.
+  const auto count_or_null_real = [](double count) {
+    return count < 0 ? json(nullptr) : json(static_cast<long long>(std::llround(count)));
+  };
+  out["linear_algebra"]["matrix_nonzeros"] =
+      count_or_null_real(results.linear_algebra.matrix_nonzeros);
+  out["linear_algebra"]["factor_nonzeros"] =
+      count_or_null_real(results.linear_algebra.factor_nonzeros);
+  out["linear_algebra"]["factor_flops"] = count_or_null_real(results.linear_algebra.factor_flops);
   // How often each timed phase ran (timing_s / timing_calls = cost per call).
   json calls = json::object();
   for (const auto& [phase, seconds] : results.timing.all())

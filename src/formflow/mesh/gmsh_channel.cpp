@@ -63,49 +63,55 @@ std::vector<Point<2>> die_face_polyline(const ChannelGeometry& geometry, Real si
   return face;
 }
 
+ChannelModel add_channel_geometry(const ChannelGeometry& geometry,
+                                  const std::vector<Point<2>>& die_face, Real size) {
+  FF_ASSERT(die_face.size() >= 2, "the die face needs two points");
+  const Real front = die_face.back().x() + geometry.exit_length;
+  auto point = [size](Real x, Real y) { return geo::addPoint(x, y, 0.0, size); };
+  // The boundary counter-clockwise: symmetry, front, free exit, die face
+  // (from the exit up), container wall, rear.
+  const int origin = point(0.0, 0.0);
+  const int front_bottom = point(front, 0.0);
+  const int front_top = point(front, geometry.exit_half_height);
+  std::vector<int> die;
+  for (auto p = die_face.rbegin(); p != die_face.rend(); ++p) die.push_back(point(p->x(), p->y()));
+  const int rear_top = point(0.0, geometry.entry_half_height);
+
+  ChannelModel model;
+  model.parts = {{BoundaryLabel::Symmetry, add_polyline({origin, front_bottom})},
+                 {BoundaryLabel::Front, add_polyline({front_bottom, front_top})},
+                 {BoundaryLabel::FreeExit, add_polyline({front_top, die.front()})},
+                 {BoundaryLabel::Die, add_polyline(die)},
+                 {BoundaryLabel::Container, add_polyline({die.back(), rear_top})},
+                 {BoundaryLabel::Rear, add_polyline({rear_top, origin})}};
+  std::vector<int> loop;
+  for (const auto& [label, curves] : model.parts)
+    loop.insert(loop.end(), curves.begin(), curves.end());
+  model.surface = geo::addPlaneSurface({geo::addCurveLoop(loop)});
+  return model;
+}
+
+void set_recombined_quadrilateral_options(Real size) {
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  // Frontal-Delaunay triangles recombined by the blossom algorithm into an
+  // all-quadrilateral mesh. (The quad-oriented algorithm 8 crashes in Gmsh 4.8.4.)
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 3);
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0); // quad-9/hexa-27, not serendipity
+}
+
 void build_channel_model(const GmshSession& session, const ChannelGeometry& geometry,
                          const std::vector<Point<2>>& die_face, Real size, int order) {
-  FF_ASSERT(die_face.size() >= 2, "the die face needs two points");
   FF_ASSERT(order == 1 || order == 2, "order must be 1 or 2");
   session.call([&] {
     gmsh::model::add("channel");
-    const Real front = die_face.back().x() + geometry.exit_length;
-    auto point = [size](Real x, Real y) { return geo::addPoint(x, y, 0.0, size); };
-    // The boundary counter-clockwise: symmetry, front, free exit, die face
-    // (from the exit up), container wall, rear.
-    const int origin = point(0.0, 0.0);
-    const int front_bottom = point(front, 0.0);
-    const int front_top = point(front, geometry.exit_half_height);
-    std::vector<int> die;
-    for (auto p = die_face.rbegin(); p != die_face.rend(); ++p)
-      die.push_back(point(p->x(), p->y()));
-    const int rear_top = point(0.0, geometry.entry_half_height);
-
-    const std::map<BoundaryLabel, std::vector<int>> parts = {
-        {BoundaryLabel::Symmetry, add_polyline({origin, front_bottom})},
-        {BoundaryLabel::Front, add_polyline({front_bottom, front_top})},
-        {BoundaryLabel::FreeExit, add_polyline({front_top, die.front()})},
-        {BoundaryLabel::Die, add_polyline(die)},
-        {BoundaryLabel::Container, add_polyline({die.back(), rear_top})},
-        {BoundaryLabel::Rear, add_polyline({rear_top, origin})}};
-    std::vector<int> loop;
-    for (const BoundaryLabel label :
-         {BoundaryLabel::Symmetry, BoundaryLabel::Front, BoundaryLabel::FreeExit,
-          BoundaryLabel::Die, BoundaryLabel::Container, BoundaryLabel::Rear})
-      loop.insert(loop.end(), parts.at(label).begin(), parts.at(label).end());
-    const int surface = geo::addPlaneSurface({geo::addCurveLoop(loop)});
+    const ChannelModel model = add_channel_geometry(geometry, die_face, size);
     geo::synchronize();
-    for (const auto& [label, curves] : parts) add_part(label, curves);
+    for (const auto& [label, curves] : model.parts) add_part(label, curves);
     // Only elements in a physical group are written to a .msh: the surface too.
-    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}), "domain");
-
-    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
-    // Frontal-Delaunay triangles recombined by the blossom algorithm into an
-    // all-quadrilateral mesh. (The quad-oriented algorithm 8 crashes in Gmsh 4.8.4.)
-    gmsh::option::setNumber("Mesh.Algorithm", 6);
-    gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 3);
-    gmsh::option::setNumber("Mesh.RecombineAll", 1);
-    gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0); // quad-9, not quad-8
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {model.surface}), "domain");
+    set_recombined_quadrilateral_options(size);
     gmsh::model::mesh::generate(2);
     if (order == 2) gmsh::model::mesh::setOrder(2);
   });

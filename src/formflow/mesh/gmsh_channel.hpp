@@ -5,6 +5,7 @@
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/gmsh_session.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace formflow::mesh {
@@ -12,6 +13,23 @@ namespace formflow::mesh {
 /// The die face of the square die: from the top of the die (L_c, H_in) straight
 /// down to the start of the exit (L_c, H_out).
 std::vector<Point<2>> square_die_face(const ChannelGeometry& geometry);
+
+/// The half channel's geometry in Gmsh's built-in kernel (not yet synchronised):
+/// its plane surface and, in the order of the surface's curve loop (symmetry,
+/// front, free exit, die, container, rear), each part's curves.
+struct ChannelModel {
+  int surface = 0;
+  std::vector<std::pair<BoundaryLabel, std::vector<int>>> parts;
+};
+
+/// Adds the geometry of build_channel_model to the current model, for it and for
+/// the solid channels that extrude it (mesh/gmsh_solid_channel.hpp).
+ChannelModel add_channel_geometry(const ChannelGeometry& geometry,
+                                  const std::vector<Point<2>>& die_face, Real size);
+
+/// Gmsh's options for recombined quadrilaterals of target size `size` (and, with
+/// setOrder(2), complete quad-9/hexa-27 elements).
+void set_recombined_quadrilateral_options(Real size);
 
 /// Adds the half channel to the current model of `session` and meshes it with
 /// recombined quadrilaterals (Gmsh's Frontal-Delaunay, then blossom full-quad

@@ -56,6 +56,14 @@ std::string parts_list() {
 std::vector<std::size_t> read_cells(int order) {
   std::vector<int> types;
   std::vector<std::vector<std::size_t>> element_tags, node_tags;
+  // A solid mesh's boundary quadrilaterals are not a plane mesh: say what the file is.
+  gmsh::model::mesh::getElements(types, element_tags, node_tags, 3, -1);
+  if (!types.empty())
+    throw MeshFileError(Subject::File, "",
+                        fmt::format("the mesh has 3D elements (\"{}\"), and geometry.dimension = 2 "
+                                    "needs a plane mesh of quadrilaterals",
+                                    element_type_name(types.front())),
+                        "set geometry.dimension = 3 for a mesh of hexahedra, or give a plane mesh");
   gmsh::model::mesh::getElements(types, element_tags, node_tags, 2, -1);
   if (types.empty())
     throw MeshFileError(Subject::File, "", "the mesh has no 2D elements",

@@ -75,7 +75,7 @@ Real solid_channel_cell_count(const ChannelGeometry& geometry, const SolidChanne
   return plane;
 }
 
-bool solid_lengths_fit(const ChannelGeometry& geometry, const SolidChannel& solid, Real size) {
+std::vector<Real> solid_lengths_to_fit(const ChannelGeometry& geometry, const SolidChannel& solid) {
   std::vector<Real> lengths = {geometry.container_length, geometry.entry_half_height,
                                geometry.exit_length};
   const bool square = geometry.die == DieShape::Square;
@@ -85,7 +85,12 @@ bool solid_lengths_fit(const ChannelGeometry& geometry, const SolidChannel& soli
     lengths.push_back(solid.entry_half_width);
     if (square) lengths.push_back(solid.exit_half_width);
   }
-  for (Real length : lengths)
+  return lengths;
+}
+
+bool solid_lengths_fit(const ChannelGeometry& geometry, const SolidChannel& solid, Real size) {
+  const bool square = geometry.die == DieShape::Square;
+  for (Real length : solid_lengths_to_fit(geometry, solid))
     if (cells_along(length, size) <= 0) return false;
   if (cells_along(geometry.exit_half_height, size) >= cells_along(geometry.entry_half_height, size))
     return false;

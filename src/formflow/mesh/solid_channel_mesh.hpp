@@ -6,6 +6,8 @@
 #include "formflow/mesh/mesh.hpp"
 #include "formflow/mesh/solid_channel.hpp"
 
+#include <vector>
+
 namespace formflow::mesh {
 
 /// The quarter (slab: the extruded half) model of `solid`'s section through the
@@ -28,6 +30,11 @@ Mesh<3> make_solid_channel_mesh(const ChannelGeometry& geometry, const SolidChan
 /// it (as a Real: it may exceed every index type), for the memory check.
 Real solid_channel_cell_count(const ChannelGeometry& geometry, const SolidChannel& solid,
                               Real size);
+
+/// The lengths a structured solid mesh divides into cells of mesh.size: the plane
+/// channel's (mesh::lengths_to_fit) and, for the rectangle, the container's half
+/// width and, with the square die, the exit's.
+std::vector<Real> solid_lengths_to_fit(const ChannelGeometry& geometry, const SolidChannel& solid);
 
 /// Whether a structured solid mesh of `size` can be made: the plane channel's
 /// lengths and, for the rectangle, its half widths (both with the square die)

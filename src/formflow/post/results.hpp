@@ -108,6 +108,11 @@ struct LinearAlgebra {
   /// linear_iterations); −1 for a direct back-end that has no such count.
   long iterations = -1;
   int ranks = 1; ///< MPI ranks of the run
+  /// Matrix and factor nonzeros (and flops) of the fine mesh's last analysis
+  /// (solvers::FactorSize: −1 when the back-end does not report them).
+  double matrix_nonzeros = -1;
+  double factor_nonzeros = -1;
+  double factor_flops = -1;
 };
 
 /// The goal-oriented estimate of the load's discretisation error

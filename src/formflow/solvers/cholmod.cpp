@@ -28,6 +28,17 @@ public:
     return factorization_.info() == Eigen::Success;
   }
   std::string name() const override { return "cholmod-supernodal"; }
+  FactorSize factor_size() const override {
+    // Set by cholmod_analyze (inside analyzePattern): nnz(tril(A)), nnz(L), and
+    // the flop count of one numeric factorisation. The const_cast is Eigen's: its
+    // cholmod() accessor is non-const, and reading the statistics changes nothing.
+    const cholmod_common& common =
+        const_cast<Eigen::CholmodSupernodalLLT<assembly::SparseMatrix, Eigen::Lower>&>(
+            factorization_)
+            .cholmod();
+    if (common.lnz <= 0) return {};
+    return FactorSize{common.anz, common.lnz, common.fl};
+  }
 
 private:
   Eigen::CholmodSupernodalLLT<assembly::SparseMatrix, Eigen::Lower> factorization_;

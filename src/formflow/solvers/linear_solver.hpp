@@ -12,6 +12,18 @@
 
 namespace formflow::solvers {
 
+/// The size of the last analysed factorisation, as the back-end counts it
+/// (summary.json linear_algebra; the fill of docs/benchmarks.md's 3D table). A
+/// count the back-end does not report is −1.
+struct FactorSize {
+  /// Nonzeros of the matrix as the back-end takes it (CHOLMOD: the lower triangle).
+  double matrix_nonzeros = -1;
+  /// Nonzeros of the factor (CHOLMOD: nnz(L) of its analysis, without the zeros
+  /// that supernodal amalgamation stores).
+  double factor_nonzeros = -1;
+  double factor_flops = -1; ///< floating-point operations of one numeric factorisation
+};
+
 /// Direct solver of K x = b for a symmetric positive definite K given by its
 /// lower triangle. Failures are reported by return value, never by exception.
 class LinearSolver {
@@ -27,6 +39,9 @@ public:
   /// Krylov iterations of all solves so far (iterative back-ends), or −1 when the
   /// back-end is a direct factorisation with no such count.
   virtual long krylov_iterations() const { return -1; }
+  /// The matrix and factor sizes of the last analyze (counts, not timings: they do
+  /// not depend on the machine's load). Default: not reported.
+  virtual FactorSize factor_size() const { return {}; }
   /// The two fields of the matrices to come (a saddle point): rows and columns
   /// [0, n_first) are the velocity, the rest the pressure; `near_null_space` holds
   /// vectors of length n_first that the velocity block nearly annihilates (its

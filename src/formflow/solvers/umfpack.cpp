@@ -25,6 +25,7 @@ public:
     factorization_.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
   }
   bool analyze(const assembly::SparseMatrix& full) override {
+    matrix_nonzeros_ = static_cast<double>(full.nonZeros());
     factorization_.analyzePattern(full);
     return factorization_.info() == Eigen::Success;
   }
@@ -37,9 +38,18 @@ public:
     return factorization_.info() == Eigen::Success;
   }
   std::string name() const override { return "umfpack-lu"; }
+  /// The matrix only: Eigen keeps UMFPACK's Info array (nnz(L), nnz(U)) and its
+  /// Numeric object private, and extracting L and U to count them would copy the
+  /// whole factor.
+  FactorSize factor_size() const override {
+    FactorSize size;
+    size.matrix_nonzeros = matrix_nonzeros_;
+    return size;
+  }
 
 private:
   Eigen::UmfPackLU<assembly::SparseMatrix> factorization_;
+  double matrix_nonzeros_ = -1;
 };
 
 } // namespace

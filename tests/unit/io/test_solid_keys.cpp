@@ -102,9 +102,21 @@ TEST(SolidKeys, WhatThreeDimensionsCannotRunYetIsRefusedNamingTheKeySetLast) {
   // Two keys make the combination: the one set last is blamed.
   error_in("[geometry]\nsymmetry = \"axisymmetric\"\ndimension = 3\n", "geometry.dimension", 3);
   error_in("[geometry]\ndimension = 3\nsymmetry = \"axisymmetric\"\n", "geometry.symmetry", 3);
-  const InputError gmsh =
-      error_in("[geometry]\ndimension = 3\n[mesh]\nsource = \"gmsh\"\n", "mesh.source", 4);
+  // Gmsh builds the slab and the square-die rectangle only (mesh/gmsh_solid_channel.hpp).
+  const InputError gmsh = error_in("[geometry]\ndimension = 3\nsection = \"round\"\ndie = "
+                                   "\"wedge\"\n[mesh]\nsource = \"gmsh\"\n",
+                                   "mesh.source", 6);
   EXPECT_TRUE(has_text(gmsh.hint, "mesh.source = \"structured\"")) << gmsh.hint;
+  error_in("[geometry]\ndimension = 3\nsection = \"rectangle\"\ndie = \"wedge\"\n"
+           "entry_half_width = 5\nexit_half_width = 2\n[mesh]\nsource = \"gmsh\"\n",
+           "mesh.source", 8);
+  EXPECT_NO_THROW(
+      load_case_text("[geometry]\ndimension = 3\n[mesh]\nsource = \"gmsh\"\n", "slab.toml", {}));
+  // Gmsh needs no half width that mesh.size divides.
+  EXPECT_NO_THROW(load_case_text("[geometry]\ndimension = 3\nsection = \"rectangle\"\n"
+                                 "entry_half_width = 9.5\nexit_half_width = 4.5\n[mesh]\n"
+                                 "source = \"gmsh\"\n",
+                                 "bar.toml", {}));
   // A manufactured solution in 3D is the unit cube (physics/manufactured_3d.hpp): it loads.
   EXPECT_NO_THROW(load_case_text(
       "[geometry]\ndimension = 3\n[verification]\nsolution = \"smooth\"\n[mesh]\nsize = 0.25\n",

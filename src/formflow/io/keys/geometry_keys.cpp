@@ -118,7 +118,9 @@ std::vector<CaseKey> geometry_keys() {
       integer_key(
           "geometry.dimension", 2, [](auto& c) -> auto& { return c.mesh.dimension; })
           .within(2, 3)
-          .constraint("3: mesh.source = \"structured\", geometry.symmetry = \"plane\"")
+          .constraint(
+              "3: geometry.symmetry = \"plane\"; mesh.source = \"gmsh\" only for the slab and "
+              "the square-die rectangle")
           .doc("2: the plane (or axisymmetric) channel in quadrilaterals; 3: the solid channel "
                "of geometry.section in hexahedra (docs/3d.md), or the unit cube of "
                "verification.solution"),

@@ -15,7 +15,8 @@ KeySpec mesh_file_key() {
   spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh.file; };
   return spec.constraint("required when mesh.source = \"file\"; only then")
       .doc("the Gmsh mesh (.msh 4.1 or 2.2, ASCII or binary) of quad-4 (Q1) or quad-9 (Q2) "
-           "cells; a relative path is taken from the case file's directory");
+           "cells, or with geometry.dimension = 3 of hexa-8 (Q1) or hexa-27 (Q2) cells; a "
+           "relative path is taken from the case file's directory");
 }
 
 KeySpec mesh_boundaries_key() {
@@ -27,7 +28,8 @@ KeySpec mesh_boundaries_key() {
   };
   spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh.boundaries; };
   return spec.constraint("only with mesh.source = \"file\"")
-      .doc("physical curve name in mesh.file → boundary part, as a table `[mesh.boundaries]` "
+      .doc("physical curve (3D: surface) name in mesh.file → boundary part, as a table "
+           "`[mesh.boundaries]` "
            "with lines `ram = \"rear\"`; several names may share a part; every boundary "
            "facet needs one; {} = the physical names are the part names");
 }
@@ -56,7 +58,8 @@ std::vector<CaseKey> mesh_keys() {
            {"file", mesh::MeshSource::File}},
           [](auto& c) -> auto& { return c.mesh.source; })
           .doc("structured: uniform square cells; gmsh: the same geometry meshed by Gmsh with "
-               "recombined quadrilaterals of size mesh.size; file: the mesh in mesh.file"),
+               "recombined quadrilaterals of size mesh.size (in 3D: extruded into hexahedra); "
+               "file: the mesh in mesh.file (quadrilaterals, or hexahedra in 3D)"),
       mesh_file_key(),
       mesh_boundaries_key(),
   };
