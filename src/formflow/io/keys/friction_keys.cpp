@@ -101,7 +101,8 @@ std::vector<CaseKey> friction_keys() {
           .doc("exact friction solved by Newton: augmented = stuck points held by the stick "
                "penalty r and a multiplier update per iteration; exact = a semismooth Newton "
                "with u_T = 0 imposed in every step at the stuck Γ3 nodes (needs "
-               "contact.normals = \"nodes\"; docs/friction.md)"),
+               "contact.normals = \"nodes\"; r then only predicts the active set and is "
+               "1/d_N unless friction.newton_augmentation is given; docs/friction.md)"),
   };
 }
 
