@@ -8,6 +8,8 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -164,6 +166,25 @@ void FormingNonlinearProblem<dim>::constrained_step_taken(const std::vector<Real
     const Point<dim> change = (-t * reactions[k] / node.weight) * constrained_[k].second;
     for (std::size_t p : node.points) friction_->traction[p] += change;
   }
+}
+
+template <int dim>
+Real FormingNonlinearProblem<dim>::slip_reversal(const VectorX& u, const VectorX& step) const {
+  Real first = std::numeric_limits<Real>::infinity();
+  if (stick_nodes_.empty() || !friction_) return first;
+  const auto state = problem_.contact_state(u, friction_);
+  // u_T is linear in u: the step's own tangential velocity is its change.
+  const auto change = problem_.contact_state(step);
+  for (const StickNode& node : stick_nodes_) {
+    const std::size_t k = node.points.front();
+    const Real traction = state[k].friction_traction.norm();
+    if (state[k].sticking || state[k].friction_threshold <= 0 || !(traction > 0)) continue;
+    const Point<dim> direction = state[k].friction_traction / traction;
+    const Real along = state[k].tangential_velocity.dot(direction);
+    const Real rate = change[k].tangential_velocity.dot(direction);
+    if (along > 0 && rate < 0 && -along / rate <= 1.0) first = std::min(first, -along / rate);
+  }
+  return first;
 }
 
 template class FormingNonlinearProblem<2>;

@@ -78,6 +78,9 @@ public:
   std::vector<StepConstraint> step_constraints(const VectorX& u) const override;
   /// λ̂ at the constrained nodes += t × (−reaction / the node's weight) along the tangent.
   void constrained_step_taken(const std::vector<Real>& reactions, Real t) override;
+  /// Over the eligible nodes that slip for the current λ̂: where u_T·t̂ (t̂ the
+  /// traction's direction) reaches 0 along the step.
+  Real slip_reversal(const VectorX& u, const VectorX& step) const override;
 
   bool changes_after_iteration() const override { return hook_ && hook_changes_; }
   AfterIteration after_iteration(const IterationState& state) override {

@@ -14,6 +14,7 @@
 #include "formflow/core/types.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -122,6 +123,11 @@ public:
   /// the k-th constraint had to supply for the full step (its multiplier's change, up to
   /// the constraint's weight), so the problem can take t of it.
   virtual void constrained_step_taken(const std::vector<Real>& /*reactions*/, Real /*t*/) {}
+  /// The smallest t in (0, 1] at which a slipping point's slip would reverse along
+  /// u + t·step (exact stick: a kink of the residual along the step); +∞ if none.
+  virtual Real slip_reversal(const VectorX& /*u*/, const VectorX& /*step*/) const {
+    return std::numeric_limits<Real>::infinity();
+  }
 
   // --- the after-iteration hook ---------------------------------------------------
   /// after_iteration may change the problem (Newton then cannot reuse a tangent
