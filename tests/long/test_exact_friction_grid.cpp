@@ -49,5 +49,33 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::Values(Symmetry::Plane, Symmetry::Axisymmetric),
                        ::testing::Values(1e-4, 1e-8)));
 
+// The semismooth Newton (friction.stick = "exact", nodal contact points for both laws):
+// the 25 iterations asked at both δ. Measured (docs/friction.md "Session 8",
+// bench runs): every case converges at both δ, all within 25 but one: Q2 axisymmetric,
+// sticking ram, h = 0.25, μ = 0.05 at δ = 1e-8 takes 8 + 18 = 26, a known failure of
+// this test (run in session 8: 239 of 240 pass, that one fails).
+class ExactStickFullGrid : public ::testing::TestWithParam<GridParameters> {};
+
+TEST_P(ExactStickFullGrid, ConvergesWithin25IterationsAtBothTolerances) {
+  const auto [ram, size, mu, q1, symmetry, tolerance] = GetParam();
+  FrictionGridCase c;
+  c.ram = ram;
+  c.size = size;
+  c.mu = mu;
+  c.element = q1 ? fem::ElementKind::Q1 : fem::ElementKind::Q2;
+  c.volumetric_points = q1 ? 1 : 2;
+  c.symmetry = symmetry;
+  c.exact_stick = true;
+  check_grid_case(c, tolerance, tolerance > 1e-6, true);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Grid, ExactStickFullGrid,
+    ::testing::Combine(::testing::Values(RamCondition::Sliding, RamCondition::Sticking),
+                       ::testing::Values(1.0, 0.5, 0.25),
+                       ::testing::Values(0.05, 0.1, 0.2, 0.3, 0.5), ::testing::Bool(),
+                       ::testing::Values(Symmetry::Plane, Symmetry::Axisymmetric),
+                       ::testing::Values(1e-4, 1e-8)));
+
 } // namespace
 } // namespace formflow::testing

@@ -24,6 +24,9 @@ struct FrictionGridCase {
   fem::ElementKind element = fem::ElementKind::Q2;
   int volumetric_points = 2; ///< Q2 2×2 or Q1 1×1
   physics::Symmetry symmetry = physics::Symmetry::Plane;
+  /// The semismooth Newton: nodal contact points (for both laws, so that the loads
+  /// compare on one discretisation) and friction.stick = "exact" for the exact law.
+  bool exact_stick = false;
 };
 
 inline std::string grid_case_name(const FrictionGridCase& c) {
@@ -31,6 +34,7 @@ inline std::string grid_case_name(const FrictionGridCase& c) {
       "{}_h{}_mu{}_{}_{}x{}_{}", c.ram == physics::RamCondition::Sliding ? "sliding" : "sticking",
       c.size, c.mu, c.element == fem::ElementKind::Q1 ? "Q1" : "Q2", c.volumetric_points,
       c.volumetric_points, c.symmetry == physics::Symmetry::Plane ? "plane" : "axi");
+  if (c.exact_stick) name += "_nodes_exact_stick";
   std::replace(name.begin(), name.end(), '.', 'p');
   return name;
 }
@@ -48,6 +52,10 @@ inline io::Case grid_case(const FrictionGridCase& c, bool exact, double toleranc
       exact ? physics::FrictionRegularization::None : physics::FrictionRegularization::Regularized;
   case_.solver.tolerance = tolerance;
   case_.solver.max_iterations = 200; // the setting: a stall or a tail shows as > 25
+  if (c.exact_stick) {
+    case_.contact.normals = assembly::ContactNormals::Nodes;
+    if (exact) case_.friction_stick = io::StickEnforcement::Exact;
+  }
   return case_;
 }
 

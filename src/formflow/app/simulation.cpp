@@ -143,7 +143,9 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
   switch (plan.loop) {
   case solvers::LoopKind::AugmentedNewton:
     // Exact Coulomb friction by Newton, multipliers updated between its steps
-    // (solvers/augmented_newton.hpp).
+    // (solvers/augmented_newton.hpp); with friction.stick = "exact" every step holds
+    // the stuck nodes' u_T = 0 exactly (solvers/exact_stick.hpp).
+    if (case_.friction_stick == io::StickEnforcement::Exact) nonlinear.enable_exact_stick();
     take_augmented(solvers::augmented_newton(nonlinear, solver, case_.solver, on_iteration,
                                              results.timing, start_velocity));
     return outcome;

@@ -23,6 +23,12 @@ namespace formflow::io {
 /// (io/case_file.cpp), which checks every key against io/case_keys.cpp; the
 /// defaults here are the paper's benchmark (SPEC §4): Q2, 2×2 volumetric
 /// rule, mesh II, μ = 0, d = 1e-3, d_N = 1e-6, d_T = 1e-6, δ = 1e-4.
+/// How exact friction's Newton loop holds stuck points (friction.stick): the stick
+/// penalty r with a multiplier update per iteration (the default), or u_T = 0 imposed
+/// exactly in every Newton step at the stuck Γ3 nodes, their traction the constraint's
+/// reaction (a semismooth Newton, issue 16; needs contact.normals = "nodes").
+enum class StickEnforcement { Augmented, Exact };
+
 struct Case {
   physics::Process process;
   /// Where the cells come from: source, size, channel geometry, file and its
@@ -36,7 +42,8 @@ struct Case {
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
   assembly::Formulation formulation; ///< penalty or mixed; exact-constraint (Uzawa) settings
   physics::Friction friction;
-  assembly::ContactSettings contact; ///< face or nodal contact normals
+  StickEnforcement friction_stick = StickEnforcement::Augmented; ///< friction.stick
+  assembly::ContactSettings contact;                             ///< face or nodal contact normals
   physics::Penalty penalty;
   solvers::IterationControl solver;
   physics::Thermal thermal; ///< hot forming: the heat problem and its coupling (docs/thermal.md)

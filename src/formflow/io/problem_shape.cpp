@@ -11,6 +11,8 @@ solvers::ProblemShape problem_shape(const Case& case_) {
   shape.exact_incompressibility = case_.penalty.d == 0;
   shape.exact_contact = case_.penalty.d_n == 0;
   shape.exact_friction = case_.friction.regularization == physics::FrictionRegularization::None;
+  shape.exact_stick = case_.friction_stick == StickEnforcement::Exact;
+  shape.nodal_contact = case_.contact.normals == assembly::ContactNormals::Nodes;
   shape.axisymmetric = case_.symmetry == physics::Symmetry::Axisymmetric;
   shape.method = case_.solver.method;
   shape.linear = case_.solver.linear;

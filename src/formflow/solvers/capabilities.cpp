@@ -20,6 +20,16 @@ std::optional<Refusal> refusal(const ProblemShape& shape) {
                    "yet be combined with the exact constraints d = 0 or d_N = 0 (Uzawa steps)",
                    "use friction.regularization = \"regularized\", or penalty.d > 0 and "
                    "penalty.dN > 0"};
+  if (shape.exact_stick && !shape.exact_friction)
+    return Refusal{{"friction.regularization", "friction.stick"},
+                   "friction.stick = \"exact\" holds the stuck points of the exact law; the "
+                   "regularised law has none",
+                   "use friction.regularization = \"none\", or friction.stick = \"augmented\""};
+  if (shape.exact_stick && !shape.nodal_contact)
+    return Refusal{{"contact.normals", "friction.stick"},
+                   "friction.stick = \"exact\" needs one friction multiplier per Γ3 node "
+                   "(with face Gauss points the stuck tractions are not unique)",
+                   "use contact.normals = \"nodes\", or friction.stick = \"augmented\""};
   if (shape.mixed && shape.axisymmetric)
     return Refusal{{"formulation.type", "geometry.symmetry"},
                    "the mixed formulation is plane only: its pressure term has no hoop part u_r/r",
@@ -53,6 +63,13 @@ LoopKind served_loop(const ProblemShape& shape) {
 std::variant<LoopKind, Refusal> choose_loop(const ProblemShape& shape) {
   if (auto refused = refusal(shape)) return std::move(*refused);
   const LoopKind loop = served_loop(shape);
+  if (shape.exact_stick && loop != LoopKind::AugmentedNewton)
+    return Refusal{{"solver.method", "friction.stick"},
+                   "friction.stick = \"exact\" is a semismooth Newton: the secant loop (or "
+                   "a mixed formulation without a condensed pressure) has no Newton step to "
+                   "constrain",
+                   "use solver.method = \"newton\" (penalty, or mixed with d > 0), or "
+                   "friction.stick = \"augmented\""};
   if (shape.linear_given && !can_serve(shape.linear, loop_storage(loop)))
     return Refusal{{"solver.linear", "formulation.pressure"},
                    fmt::format("{} (Cholesky LLᵀ) cannot factorise the indefinite Taylor–Hood "
@@ -81,7 +98,9 @@ std::string loop_name(LoopKind loop, const ProblemShape& shape) {
                        linear_solver_name(linear_solver_for(loop, shape)),
                        shape.exact_contact ? "with uzawa contact " : "");
   case LoopKind::AugmentedSecant: return "augmented-lagrangian friction around secant";
-  case LoopKind::AugmentedNewton: return "augmented-lagrangian friction around newton";
+  case LoopKind::AugmentedNewton:
+    return shape.exact_stick ? "semismooth newton friction (exact stick at the nodes)"
+                             : "augmented-lagrangian friction around newton";
   }
   return "unknown";
 }

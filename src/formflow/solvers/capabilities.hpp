@@ -21,6 +21,8 @@ struct ProblemShape {
   bool exact_incompressibility = false; ///< penalty.d = 0
   bool exact_contact = false;           ///< penalty.dN = 0
   bool exact_friction = false;          ///< friction.regularization = "none"
+  bool exact_stick = false;             ///< friction.stick = "exact"
+  bool nodal_contact = false;           ///< contact.normals = "nodes"
   bool axisymmetric = false;
   NonlinearMethod method = NonlinearMethod::Newton;    ///< solver.method
   LinearSolverKind linear = LinearSolverKind::Cholmod; ///< solver.linear

@@ -3,6 +3,14 @@
 #include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/newton_duals.hpp"
 
+#include "formflow/core/error.hpp"
+#include "formflow/fem/dof_map.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <limits>
+#include <map>
 #include <vector>
 
 namespace formflow::solvers {
@@ -66,6 +74,117 @@ Real FormingNonlinearProblem<dim>::update_constraint_multipliers(const VectorX& 
     for (const auto& point : problem_.contact_state(velocity))
       normal_velocity.push_back(point.normal_velocity);
   return multipliers.update(velocity, normal_velocity);
+}
+
+template <int dim> void FormingNonlinearProblem<dim>::enable_exact_stick() {
+  FF_ASSERT(problem_.has_exact_friction() && problem_.discretisation().contact_points_at_nodes(),
+            "exact stick needs exact friction on nodal contact points (checked with the case)");
+  stick_nodes_ = exact_stick_nodes();
+  constrained_.clear();
+}
+
+template <int dim>
+std::vector<typename FormingNonlinearProblem<dim>::StickNode>
+FormingNonlinearProblem<dim>::exact_stick_nodes() const {
+  const mesh::Mesh<dim>& mesh = problem_.mesh();
+  const auto& facets = problem_.discretisation().contact_facets();
+  const int n_q = problem_.discretisation().facet_rule().size();
+  // The nodal rule's points are the face nodes in face-node order (contact_normals.cpp).
+  const auto state = problem_.contact_state(problem_.constraints().values);
+  std::map<Index, std::vector<std::size_t>> points_at;
+  for (std::size_t p = 0; p < facets.size(); ++p) {
+    const mesh::BoundaryFacet& facet = mesh.facets[facets[p]];
+    const std::vector<int> face_nodes =
+        mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
+    FF_ASSERT(static_cast<int>(face_nodes.size()) == n_q, "one nodal-rule point per face node");
+    for (int q = 0; q < n_q; ++q)
+      points_at[mesh.cells(face_nodes[q], facet.cell)].push_back(p * n_q + q);
+  }
+  std::vector<StickNode> nodes;
+  for (const auto& [node, points] : points_at) {
+    StickNode entry{node, points, {}, 0.0};
+    for (std::size_t k : points) entry.weight += state[k].weight;
+    bool eligible = true;
+    for (int i = 0; i < dim && eligible; ++i) {
+      entry.rows[i] = problem_.plan().free_index(fem::dof_of<dim>(node, i));
+      eligible = entry.rows[i] >= 0;
+    }
+    for (std::size_t k : points)
+      eligible = eligible && state[k].normal.dot(state[points.front()].normal) > 1.0 - 1e-12;
+    if (eligible) nodes.push_back(std::move(entry));
+  }
+  return nodes;
+}
+
+template <int dim>
+std::vector<StepConstraint> FormingNonlinearProblem<dim>::step_constraints(const VectorX& u) const {
+  constrained_.clear();
+  if (stick_nodes_.empty() || !friction_) return {};
+  const auto state = problem_.contact_state(u, friction_);
+  std::vector<StepConstraint> constraints;
+  for (std::size_t n = 0; n < stick_nodes_.size(); ++n) {
+    const StickNode& node = stick_nodes_[n];
+    // Its points share velocity, normal and τ_f, so they stick together.
+    bool stuck = true;
+    for (std::size_t k : node.points) stuck = stuck && state[k].sticking;
+    if (!stuck) continue;
+    const Point<dim> normal = state[node.points.front()].normal;
+    const Point<dim> slip = state[node.points.front()].tangential_velocity;
+    // Orthonormal tangents of the node's plane (2D: one; 3D: two).
+    std::vector<Point<dim>> tangents;
+    if constexpr (dim == 2) {
+      tangents.push_back(Point<dim>(-normal[1], normal[0]));
+    } else {
+      const Point<dim> seed = std::abs(normal[0]) < 0.9 ? Point<dim>::UnitX() : Point<dim>::UnitY();
+      const Point<dim> first = (seed - seed.dot(normal) * normal).normalized();
+      tangents.push_back(first);
+      tangents.push_back(normal.cross(first));
+    }
+    for (const Point<dim>& tangent : tangents) {
+      StepConstraint c;
+      for (int i = 0; i < dim; ++i) {
+        c.rows.push_back(node.rows[i]);
+        c.coefficients.push_back(tangent[i]);
+      }
+      c.target = -slip.dot(tangent); // u_T + δ_T = 0
+      constraints.push_back(std::move(c));
+      constrained_.emplace_back(n, tangent);
+    }
+  }
+  return constraints;
+}
+
+template <int dim>
+void FormingNonlinearProblem<dim>::constrained_step_taken(const std::vector<Real>& reactions,
+                                                          Real t) {
+  FF_ASSERT(reactions.size() == constrained_.size() && friction_, "one reaction per constraint");
+  if (friction_->traction.empty())
+    friction_->traction.assign(problem_.n_contact_points(), Point<dim>::Zero());
+  for (std::size_t k = 0; k < reactions.size(); ++k) {
+    const StickNode& node = stick_nodes_[constrained_[k].first];
+    // With the nodal rule λ̂ loads its node alone, by W λ̂ (W the node's share of Γ3).
+    const Point<dim> change = (-t * reactions[k] / node.weight) * constrained_[k].second;
+    for (std::size_t p : node.points) friction_->traction[p] += change;
+  }
+}
+
+template <int dim>
+Real FormingNonlinearProblem<dim>::slip_reversal(const VectorX& u, const VectorX& step) const {
+  Real first = std::numeric_limits<Real>::infinity();
+  if (stick_nodes_.empty() || !friction_) return first;
+  const auto state = problem_.contact_state(u, friction_);
+  // u_T is linear in u: the step's own tangential velocity is its change.
+  const auto change = problem_.contact_state(step);
+  for (const StickNode& node : stick_nodes_) {
+    const std::size_t k = node.points.front();
+    const Real traction = state[k].friction_traction.norm();
+    if (state[k].sticking || state[k].friction_threshold <= 0 || !(traction > 0)) continue;
+    const Point<dim> direction = state[k].friction_traction / traction;
+    const Real along = state[k].tangential_velocity.dot(direction);
+    const Real rate = change[k].tangential_velocity.dot(direction);
+    if (along > 0 && rate < 0 && -along / rate <= 1.0) first = std::min(first, -along / rate);
+  }
+  return first;
 }
 
 template class FormingNonlinearProblem<2>;

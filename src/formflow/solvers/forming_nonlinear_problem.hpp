@@ -6,6 +6,7 @@
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/solvers/nonlinear_problem.hpp"
 
+#include <array>
 #include <functional>
 
 namespace formflow::solvers {
@@ -24,9 +25,14 @@ public:
   const assembly::FormingProblem<dim>& forming() const { return problem_; }
 
   /// Exact friction: the multipliers λ̂ frozen in every assembly (not owned; null: λ̂ = 0).
-  void set_friction_multipliers(const assembly::FrictionMultipliers<dim>* multipliers) {
+  /// With exact stick (below) the Newton steps change the stuck nodes' λ̂
+  /// (constrained_step_taken).
+  void set_friction_multipliers(assembly::FrictionMultipliers<dim>* multipliers) {
     friction_ = multipliers;
   }
+  /// friction.stick = "exact" (exact friction, nodal contact points): every Newton step
+  /// imposes u_T = 0 at the Γ3 nodes that stick for the current λ̂ (step_constraints).
+  void enable_exact_stick();
   /// Called by after_iteration; `changes`: the hook changes the problem (λ̂).
   void set_after_iteration(Hook hook, bool changes) {
     hook_ = std::move(hook);
@@ -65,6 +71,17 @@ public:
   /// λ ← λ + r M⁻¹B u, λ_N ← λ_N + r_N u_N on the attached ConstraintMultipliers.
   Real update_constraint_multipliers(const VectorX& velocity) override;
 
+  /// Exact stick: u_T = 0 at every eligible Γ3 node whose points all stick for the
+  /// current λ̂ (|λ̂ + r u_T| ≤ τ_f), one constraint per tangent direction. The assembly
+  /// is the augmented one (traction λ̂ + r u_T, stiffness r): once u_T = 0 holds the
+  /// traction is λ̂, and the penalty's force and stiffness cancel in the reaction.
+  std::vector<StepConstraint> step_constraints(const VectorX& u) const override;
+  /// λ̂ at the constrained nodes += t × (−reaction / the node's weight) along the tangent.
+  void constrained_step_taken(const std::vector<Real>& reactions, Real t) override;
+  /// Over the eligible nodes that slip for the current λ̂: where u_T·t̂ (t̂ the
+  /// traction's direction) reaches 0 along the step.
+  Real slip_reversal(const VectorX& u, const VectorX& step) const override;
+
   bool changes_after_iteration() const override { return hook_ && hook_changes_; }
   AfterIteration after_iteration(const IterationState& state) override {
     return hook_ ? hook_(state) : AfterIteration{};
@@ -72,7 +89,22 @@ public:
 
 private:
   const assembly::FormingProblem<dim>& problem_;
-  const assembly::FrictionMultipliers<dim>* friction_ = nullptr;
+  /// A Γ3 node whose stick is imposed exactly: its points (all with one normal) and
+  /// free rows.
+  struct StickNode {
+    Index node = 0;
+    std::vector<std::size_t> points;
+    std::array<Index, dim> rows{};
+    Real weight = 0.0; ///< Σ JxW of its points: λ̂ loads the node by weight × λ̂
+  };
+  /// The nodes eligible for exact stick: nodal contact points, every dof of the node
+  /// free, one normal at all its points (not a dead-metal corner).
+  std::vector<StickNode> exact_stick_nodes() const;
+
+  assembly::FrictionMultipliers<dim>* friction_ = nullptr;
+  std::vector<StickNode> stick_nodes_;
+  /// Per constraint of the last step_constraints: its node and tangent.
+  mutable std::vector<std::pair<std::size_t, Point<dim>>> constrained_;
   assembly::UnsymmetricTangent<dim> coupling_;
   Hook hook_;
   bool hook_changes_ = false;

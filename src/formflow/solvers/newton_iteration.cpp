@@ -2,6 +2,7 @@
 // The Newton loop: secant start, tangent steps with a line search, secant fallback.
 #include "formflow/solvers/newton_iteration.hpp"
 #include "formflow/solvers/coupled_tangent_solve.hpp"
+#include "formflow/solvers/exact_stick.hpp"
 #include "formflow/solvers/stop_rule.hpp"
 #include "formflow/solvers/timed_linear_step.hpp"
 
@@ -20,6 +21,9 @@ namespace {
 /// The line search stops once |δ·R(u + tδ)| ≤ this × |δ·R(u)| (a Wolfe-type curvature test).
 constexpr Real line_search_slope_ratio = 0.5;
 constexpr int max_line_search_steps = 8;
+/// How far past a slip-reversal kink the step goes (relative): the node's slip is then
+/// −1e-3 of what it was, so r |u_T| ≪ 2 τ_f and its trial falls inside the Coulomb disk.
+constexpr Real kink_overshoot = 1e-3;
 
 /// The free components of a full dof vector.
 VectorX free_part(const assembly::ScatterPlan& plan, const VectorX& full) {
@@ -53,6 +57,8 @@ struct NewtonWork {
   /// tangent, coupling and force were assembled at the current iterate with the
   /// current duals (by the previous step's line search): no assembly needed.
   bool tangent_ready = false;
+  /// The tangent condensed onto the step's constraints (solvers/exact_stick.hpp).
+  assembly::SparseMatrix condensed = {};
 };
 
 /// K(w) u = F (w = nullptr: constant viscosity): returns the full velocity, or a stop reason.
@@ -88,25 +94,66 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
   }
   work.tangent_ready = false;
   const VectorX gradient = free_part(plan, work.force);
-  if (work.linear.factorize(work.tangent.matrix)) return std::nullopt;
+  // Exact constraints on the step (exact friction's stuck nodes): δ = g + z, z = P z,
+  // solved on the condensed tangent (solvers/exact_stick.hpp).
+  std::vector<StepConstraint> constraints = work.problem.step_constraints(velocity);
+  const bool constrained = !constraints.empty();
+  std::optional<StepCondensation> condensation;
+  VectorX particular, rhs = -gradient;
+  const assembly::SparseMatrix* matrix = &work.tangent.matrix;
+  if (constrained) {
+    condensation.emplace(std::move(constraints), plan.n_free());
+    condensation->condense(work.tangent.matrix, work.condensed);
+    matrix = &work.condensed;
+    particular = condensation->particular();
+    VectorX product = work.tangent.matrix.selfadjointView<Eigen::Lower>() * particular;
+    if (work.problem.has_coupling()) work.problem.apply_coupling(particular, product);
+    rhs = -condensation->project(gradient + product);
+  }
+  if (work.linear.factorize(*matrix)) return std::nullopt;
   VectorX free_step;
   if (!work.problem.has_coupling()) {
-    if (work.linear.solve(-gradient, free_step)) return std::nullopt;
+    if (work.linear.solve(rhs, free_step)) return std::nullopt;
   } else {
     // The full-ε̇ form: J = T + N, N unsymmetric; T's factor preconditions GMRES.
     ScopedTimer timer(work.linear.times(), "krylov");
     const CouplingProduct coupling = [&](const VectorX& x, VectorX& y) {
-      work.problem.apply_coupling(x, y);
+      if (!constrained) return work.problem.apply_coupling(x, y);
+      VectorX projected = VectorX::Zero(x.size());
+      work.problem.apply_coupling(condensation->project(x), projected);
+      y += condensation->project(projected);
     };
     const KrylovOutcome krylov =
-        solve_coupled_tangent(work.tangent.matrix, coupling, work.linear.solver(), -gradient,
-                              free_step, work.forcing, max_krylov_iterations);
+        solve_coupled_tangent(*matrix, coupling, work.linear.solver(), rhs, free_step, work.forcing,
+                              max_krylov_iterations);
     work.linear.times().count("krylov iterations", krylov.iterations);
     if (!free_step.allFinite()) return std::nullopt;
   }
-  const Real slope0 = free_step.dot(gradient); // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
-  if (!(slope0 < 0)) return std::nullopt;
+  // The line search runs along the unconstrained part z (its slope sees no stuck
+  // tangential row, whose balance is the constraint's multiplier, set after the step).
+  VectorX direction = free_step;
+  std::vector<Real> reactions;
+  if (constrained) {
+    direction = condensation->project(free_step);
+    free_step = particular + direction;
+    // c_k·(R + J δ): what each constraint supplies for the full step.
+    VectorX balance = work.tangent.matrix.selfadjointView<Eigen::Lower>() * free_step;
+    if (work.problem.has_coupling()) work.problem.apply_coupling(free_step, balance);
+    reactions = condensation->components(gradient + balance);
+  }
+  const Real slope0 = direction.dot(gradient); // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
+  if (!(slope0 < 0) && !constrained) return std::nullopt;
   const VectorX step = plan.expand(free_step, VectorX::Zero(plan.n_dofs()));
+  if (constrained && !(slope0 < 0)) {
+    // No descent left along z (the stick targets dominate the step): the full
+    // semismooth step, whose constraints hold exactly.
+    VectorX next = velocity + step;
+    work.problem.update_duals(velocity, step, next, *work.duals);
+    work.problem.constrained_step_taken(reactions, 1.0);
+    slope_at(work, next, step, 0.0, direction); // the internal force at uⁿ⁺¹
+    full_change = step.norm() / next.norm();
+    return next;
+  }
 
   // Line search along δ on the slope δ·R(u + tδ) (the derivative of the potential
   // where there is one: deviatoric form, frozen τ_f): find t with |slope(t)| small.
@@ -121,7 +168,7 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
   const auto acceptable = [&](Real slope, int k) {
     return (slope <= 0 && k == 0) || std::abs(slope) <= line_search_slope_ratio * std::abs(slope0);
   };
-  const bool look_ahead = !work.problem.changes_after_iteration() &&
+  const bool look_ahead = !constrained && !work.problem.changes_after_iteration() &&
                           step.norm() / (velocity + step).norm() >= work.tolerance;
   Real t = 1.0, slope = 0.0;
   if (look_ahead) {
@@ -142,11 +189,11 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     }
   }
   ScopedTimer timer(work.linear.times(), "line search");
-  if (!look_ahead) slope = slope_at(work, velocity, step, t, free_step);
+  if (!look_ahead) slope = slope_at(work, velocity, step, t, direction);
   Real low = 0.0, slope_low = slope0, high = 1.0, slope_high = slope;
   for (int k = 0; k < max_line_search_steps && !acceptable(slope, k); ++k) {
     t = low - slope_low * (high - low) / (slope_high - slope_low);
-    slope = slope_at(work, velocity, step, t, free_step);
+    slope = slope_at(work, velocity, step, t, direction);
     if (slope > 0) {
       high = t, slope_high = slope;
       slope_low *= 0.5;
@@ -155,11 +202,25 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
       slope_high *= 0.5;
     }
   }
+  if (constrained && !acceptable(slope, max_line_search_steps)) {
+    // No acceptable t on [0, 1]: the slope jumps where a slipping node's slip would
+    // reverse along the step (its friction force flips by 2 τ_f). Stopping short of
+    // that kink leaves the node slipping, a little less each iteration: a linear tail
+    // (measured 0.885 per iteration, Q1 axisymmetric, sliding, h = 0.5, μ = 0.2). Just
+    // past the kink the node's trial λ̂ + r u_T lies inside the disk: the active set
+    // catches it as stuck and the next step holds it exactly.
+    const Real kink = work.problem.slip_reversal(velocity, step);
+    if (kink <= 1.0 && kink >= 0.5 * t) {
+      t = std::min(1.0, kink * (1.0 + kink_overshoot));
+      slope = slope_at(work, velocity, step, t, direction);
+    }
+  }
   VectorX next = velocity + t * step;
   {
     ScopedTimer dual_timer(work.linear.times(), "dual update");
     work.problem.update_duals(velocity, step, next, *work.duals);
   }
+  if (constrained) work.problem.constrained_step_taken(reactions, t);
   full_change = step.norm() / next.norm();
   return next;
 }

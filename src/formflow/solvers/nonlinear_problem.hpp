@@ -14,8 +14,10 @@
 #include "formflow/core/types.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include <limits>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace formflow::solvers {
 
@@ -52,6 +54,15 @@ struct AfterIteration {
 struct UzawaLimits {
   Real tolerance = 0.0; ///< relative multiplier change that ends the steps
   int max_steps = 1;    ///< steps per secant step
+};
+
+/// One linear constraint c·δ = target on a Newton step, c a unit vector on a few free
+/// rows (exact friction's u_T = 0 at a stuck node: c its tangent on the node's free
+/// dofs, target −u_T). The constraints one problem returns are orthonormal.
+struct StepConstraint {
+  std::vector<Index> rows;        ///< free-system rows of c's entries
+  std::vector<Real> coefficients; ///< c on those rows, ‖c‖ = 1
+  Real target = 0.0;              ///< the value c·δ must take
 };
 
 /// A steady nonlinear problem R(u) = 0 over full dof vectors (free and prescribed).
@@ -102,6 +113,21 @@ public:
   virtual std::optional<UzawaLimits> uzawa_limits() const { return std::nullopt; }
   /// One Uzawa update from the velocity just solved for; the relative multiplier change.
   virtual Real update_constraint_multipliers(const VectorX& /*velocity*/) { return 0.0; }
+
+  // --- constraints inside the Newton step (optional) -------------------------------
+  /// Linear constraints the next Newton step from `u` must meet exactly (the step is
+  /// condensed onto them, solvers/exact_stick.hpp); empty: none. Called after the
+  /// tangent at `u` was assembled.
+  virtual std::vector<StepConstraint> step_constraints(const VectorX& /*u*/) const { return {}; }
+  /// After a constrained step of length t: `reactions[k]` = c_k·(R(u) + J δ), the force
+  /// the k-th constraint had to supply for the full step (its multiplier's change, up to
+  /// the constraint's weight), so the problem can take t of it.
+  virtual void constrained_step_taken(const std::vector<Real>& /*reactions*/, Real /*t*/) {}
+  /// The smallest t in (0, 1] at which a slipping point's slip would reverse along
+  /// u + t·step (exact stick: a kink of the residual along the step); +∞ if none.
+  virtual Real slip_reversal(const VectorX& /*u*/, const VectorX& /*step*/) const {
+    return std::numeric_limits<Real>::infinity();
+  }
 
   // --- the after-iteration hook ---------------------------------------------------
   /// after_iteration may change the problem (Newton then cannot reuse a tangent

@@ -370,6 +370,8 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"friction.regularization", "\"none\""},
       {"friction.augmentation", "10.0"},
       {"friction.newton_augmentation", "1000.0"},
+      // default: "exact" is refused with the secant method below (test_formulation_keys.cpp)
+      {"friction.stick", "\"augmented\""},
       {"penalty.d", "0.01"},
       {"penalty.dN", "1e-05"},
       {"penalty.dT", "1e-07"},

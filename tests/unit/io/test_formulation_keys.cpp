@@ -106,6 +106,29 @@ TEST(FormulationKeys, CombinationsNotYetSupportedAreRefused) {
   EXPECT_TRUE(has_text(friction_taylor_hood.message, "Taylor–Hood"));
 }
 
+TEST(FormulationKeys, ExactStickNeedsExactFrictionNodalPointsAndNewton) {
+  const Case accepted = load_case("", {{"friction.regularization", "none"},
+                                       {"contact.normals", "nodes"},
+                                       {"friction.stick", "exact"}});
+  EXPECT_EQ(accepted.friction_stick, StickEnforcement::Exact);
+  EXPECT_EQ(load_case("", {}).friction_stick, StickEnforcement::Augmented);
+  const InputError regularised =
+      refusal("", {{"contact.normals", "nodes"}, {"friction.stick", "exact"}});
+  EXPECT_EQ(regularised.key, "friction.stick");
+  EXPECT_TRUE(has_text(regularised.hint, "friction.regularization = \"none\""));
+  const InputError faces =
+      refusal("", {{"friction.regularization", "none"}, {"friction.stick", "exact"}});
+  EXPECT_EQ(faces.key, "friction.stick");
+  EXPECT_TRUE(has_text(faces.hint, "contact.normals = \"nodes\""));
+  const InputError secant = refusal("", {{"friction.regularization", "none"},
+                                         {"contact.normals", "nodes"},
+                                         {"friction.stick", "exact"},
+                                         {"solver.method", "secant"}});
+  EXPECT_EQ(secant.key, "solver.method");
+  EXPECT_TRUE(has_text(secant.hint, "solver.method = \"newton\""));
+  EXPECT_EQ(refusal("", {{"friction.stick", "penalty"}}).key, "friction.stick");
+}
+
 TEST(FormulationKeys, RefusalInAFileNamesItsLine) {
   const fs::path path =
       fs::temp_directory_path() / ("formflow-formulation-" + std::to_string(getpid()) + ".toml");

@@ -94,6 +94,15 @@ std::vector<CaseKey> friction_keys() {
                "with a condensed pressure): r = value/d_N; Newton's tangent carries the stick "
                "penalty, and a stiffer one settles the multipliers in fewer updates "
                "(docs/friction.md)"),
+      enum_key(
+          "friction.stick", "augmented",
+          {{"augmented", StickEnforcement::Augmented}, {"exact", StickEnforcement::Exact}},
+          [](auto& c) -> auto& { return c.friction_stick; })
+          .doc("exact friction solved by Newton: augmented = stuck points held by the stick "
+               "penalty r and a multiplier update per iteration; exact = a semismooth Newton "
+               "with u_T = 0 imposed in every step at the stuck Γ3 nodes (needs "
+               "contact.normals = \"nodes\"; r then only predicts the active set and is "
+               "1/d_N unless friction.newton_augmentation is given; docs/friction.md)"),
   };
 }
 
