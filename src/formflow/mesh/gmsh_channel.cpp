@@ -64,7 +64,8 @@ std::vector<Point<2>> die_face_polyline(const ChannelGeometry& geometry, Real si
 }
 
 void build_channel_model(const GmshSession& session, const ChannelGeometry& geometry,
-                         const std::vector<Point<2>>& die_face, Real size, int order) {
+                         const std::vector<Point<2>>& die_face, Real size, int order,
+                         const std::function<void()>& size_field) {
   FF_ASSERT(die_face.size() >= 2, "the die face needs two points");
   FF_ASSERT(order == 1 || order == 2, "order must be 1 or 2");
   session.call([&] {
@@ -106,6 +107,7 @@ void build_channel_model(const GmshSession& session, const ChannelGeometry& geom
     gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 3);
     gmsh::option::setNumber("Mesh.RecombineAll", 1);
     gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0); // quad-9, not quad-8
+    if (size_field) size_field();
     gmsh::model::mesh::generate(2);
     if (order == 2) gmsh::model::mesh::setOrder(2);
   });
