@@ -12,10 +12,10 @@ std::vector<CaseKey> adapt_keys() {
           .within(0, 1)
           .why("a fraction of the load: 0 switches adaptivity off, 1 is a 100 % error")
           .constraint("> 0 needs a plane or axisymmetric channel from mesh.source = \"structured\" "
-                      "or \"gmsh\" (the cycles remesh it with Gmsh), a build with Gmsh, and a "
-                      "problem whose load error can be estimated (penalty d > 0, dN > 0, "
-                      "regularised friction, Q1 or Q2 velocity without the Taylor–Hood "
-                      "pressure)")
+                      "or \"gmsh\" (the cycles remesh it with Gmsh), a build with Gmsh, Newton, "
+                      "penalties d > 0 and dN > 0 and regularised friction (else refused); where "
+                      "the load's error is not estimated (Coulomb friction, Taylor–Hood) the "
+                      "cycles stop after the first, summary.json adapt.stop saying why")
           .doc("relative error of the load to reach: the cycles stop once the estimate of "
                "|p_h − p| (solver.load_error; \"none\" counts as \"refined\" here) is at most "
                "this times |p_h|; 0: no adaptivity"),
