@@ -111,6 +111,14 @@ TEST(LoadErrorEstimate, WedgeIndicatorsSumToTheRefinedRunsChange) {
   expect_indicators_sum_to_the_refined_runs_change(hill_drawing(15.0, 0.25));
 }
 
+TEST(LoadErrorEstimate, CoulombFrictionIndicatorsSumToTheRefinedRunsChange) {
+  // μ = 0.1 on the container and the die: the adjoint now carries the transpose of
+  // dτ_f through the mollified contact pressure (FormingProblem::apply_coupling_transpose).
+  io::Case case_ = sticking_ram(1.0);
+  case_.friction.mu = 0.1;
+  expect_indicators_sum_to_the_refined_runs_change(case_);
+}
+
 TEST(LoadErrorEstimate, WithoutEstimateSummarySaysNull) {
   io::Case case_ = sticking_ram(1.0);
   case_.solver.load_error = solvers::LoadErrorMethod::None;
