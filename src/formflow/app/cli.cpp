@@ -148,6 +148,18 @@ int run_case(const Options& options) {
       fmt::print("load: {} p = {:.4f} (no error estimate: {})\n", load,
                  results.pressure.ram_reaction, results.load_error.unavailable);
   }
+  if (show && !results.adapt.cycles.empty()) {
+    // One line per adaptive cycle ([adapt]), then why they stopped.
+    for (std::size_t k = 0; k < results.adapt.cycles.size(); ++k) {
+      const post::AdaptCycle& cycle = results.adapt.cycles[k];
+      fmt::print("adapt cycle {}: {} cells, {} dofs, p = {:.5f}{}, {:.1f} s\n", k, cycle.cells,
+                 cycle.dofs, cycle.load,
+                 cycle.estimate ? fmt::format(" ± {:.5f}", *cycle.estimate) : std::string(),
+                 cycle.seconds);
+    }
+    fmt::print("adapt: {} ({} cycles; target {:g} of the load)\n", results.adapt.stop,
+               results.adapt.cycles.size(), case_.adapt.target_error);
+  }
   if (show && !results.coarse_iterations.empty())
     fmt::print("coarse start (solver.coarse_levels): mesh.size {} took {} Newton iterations "
                "(not counted above; their time is in the solver phases)\n",

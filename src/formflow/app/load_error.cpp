@@ -5,6 +5,7 @@
 #include "formflow/app/simulation.hpp"
 #include "formflow/app/solve_plan.hpp"
 #include "formflow/io/mesh_input.hpp"
+#include "formflow/mesh/uniform_refinement.hpp"
 #include "formflow/post/load_error_estimate.hpp"
 
 #include <algorithm>
@@ -36,8 +37,6 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
               bool mesh_from_case, bool converged, PhaseTimes& times) {
   if (case_.solver.load_error == solvers::LoadErrorMethod::None)
     return unavailable("solver.load_error = \"none\"");
-  if (!mesh_from_case || case_.mesh.source == mesh::MeshSource::File)
-    return unavailable("the mesh was not made from mesh.size, so there is no refined mesh");
   if (!converged) return unavailable("the run did not converge");
   if (problem.has_exact_friction())
     return unavailable("exact friction has no Newton tangent without its multipliers");
@@ -51,9 +50,19 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
   std::vector<Index> parent;
   {
     ScopedTimer timer(times, "error estimate");
-    mesh::MeshSpec spec = case_.mesh;
-    spec.size = case_.mesh.size / 2;
-    fine_mesh = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec));
+    if (mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured) {
+      // The structured channel at half the size: nested in the one that ran.
+      mesh::MeshSpec spec = case_.mesh;
+      spec.size = case_.mesh.size / 2;
+      fine_mesh = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec));
+      parent = post::parent_cells(problem.mesh(), fine_mesh);
+    } else {
+      // Any other mesh (Gmsh, a file, an adaptive cycle's): every cell split in 2^dim,
+      // nested by construction (a Gmsh remesh at half the size would not be).
+      mesh::RefinedMesh<dim> refined = mesh::refine_uniformly(problem.mesh());
+      fine_mesh = std::move(refined.mesh);
+      parent = std::move(refined.parent);
+    }
     fine = std::make_unique<assembly::FormingProblem<dim>>(fine_mesh, problem_settings(case_));
     if (mixed) { // the condensed pressure, as on the mesh that ran (d > 0 here)
       fine_pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
@@ -62,7 +71,6 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
     }
     if (!fine->terms().newton_ready())
       return unavailable("the refined problem has no Newton tangent");
-    parent = post::parent_cells(problem.mesh(), fine_mesh);
   }
   solvers::IterationControl settle = case_.solver;
   settle.coarse_levels = 0;

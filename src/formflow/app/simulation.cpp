@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // One case from parameters to results, in the dimension of its mesh.
 #include "formflow/app/simulation.hpp"
+#include "formflow/app/adaptive_run.hpp"
 #include "formflow/app/coarse_start.hpp"
 #include "formflow/app/load_error.hpp"
 #include "formflow/app/solve_plan.hpp"
@@ -183,7 +184,7 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
 template <int dim>
 void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from_case,
               Simulation& simulation, const IterationCallback& on_iteration,
-              bool estimate_condition);
+              bool estimate_condition, const VectorX* start_velocity);
 
 /// solve_on, with an input error found by a back-end during the solve (a PETSc
 /// option that nothing read: the solver knows the key, not the file) located where
@@ -191,9 +192,10 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
 template <int dim>
 void solve_located(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from_case,
                    Simulation& simulation, const IterationCallback& on_iteration,
-                   bool estimate_condition) {
+                   bool estimate_condition, const VectorX* start_velocity = nullptr) {
   try {
-    solve_on(case_, mesh, mesh_from_case, simulation, on_iteration, estimate_condition);
+    solve_on(case_, mesh, mesh_from_case, simulation, on_iteration, estimate_condition,
+             start_velocity);
   } catch (const InputError& error) {
     const auto where = case_.key_locations.find(error.key);
     if (!error.file.empty()) throw;
@@ -206,7 +208,7 @@ void solve_located(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh
 template <int dim>
 void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from_case,
               Simulation& simulation, const IterationCallback& on_iteration,
-              bool estimate_condition) {
+              bool estimate_condition, const VectorX* start_velocity) {
   post::Results& results = simulation.results;
   std::unique_ptr<assembly::FormingProblem<dim>> problem;
   {
@@ -228,7 +230,7 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
   // solution. Exact friction's coarse levels solve the Coulomb law with λ̂ = 0, i.e.
   // stick penalty r (the multipliers live at the fine Γ3 points only).
   std::optional<CoarseStart> coarse;
-  if (plan.is_newton() && mesh_from_case) {
+  if (plan.is_newton() && mesh_from_case && !start_velocity) {
     coarse = coarse_start(case_, mesh, results.timing);
     if (coarse) {
       results.coarse_iterations = coarse->iterations;
@@ -241,12 +243,13 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
     // Hot forming (app/thermal_coupling.hpp): the loop below, again at each coupling step.
     const FlowSolve solve_flow = [&](const VectorX* start) {
       return run_counted_loop(plan, case_, *problem, on_iteration, results,
-                              start ? start : (coarse ? &coarse->velocity : nullptr), multipliers);
+                              start ? start : (coarse ? &coarse->velocity : start_velocity),
+                              multipliers);
     };
     outcome = couple_thermal(case_, *problem, solve_flow, on_iteration, multipliers, results);
   } else {
     outcome = run_counted_loop(plan, case_, *problem, on_iteration, results,
-                               coarse ? &coarse->velocity : nullptr, multipliers);
+                               coarse ? &coarse->velocity : start_velocity, multipliers);
   }
   results.method = plan.name(coarse.has_value());
   results.stop_reason = outcome.stop_reason;
@@ -276,6 +279,7 @@ Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration
                     bool estimate_condition) {
   if (case_.manufactured != physics::ManufacturedSolution::None)
     return simulate_manufactured(case_, on_iteration, estimate_condition);
+  if (case_.adapt.enabled()) return simulate_adaptive(case_, on_iteration); // app/adaptive_run.cpp
   Simulation simulation;
   const auto start = Clock::now();
   {
@@ -306,6 +310,22 @@ Simulation simulate_on(const io::Case& case_, mesh::Mesh<dim> mesh,
   return simulation;
 }
 
+template <int dim>
+Simulation simulate_from(const io::Case& case_, mesh::Mesh<dim> mesh, const VectorX& start,
+                         const IterationCallback& on_iteration) {
+  Simulation simulation;
+  const auto clock_start = Clock::now();
+  simulation.mesh = std::move(mesh);
+  solve_located(case_, std::get<mesh::Mesh<dim>>(simulation.mesh), false, simulation, on_iteration,
+                false, &start);
+  add_total(simulation.results, clock_start);
+  return simulation;
+}
+
+template Simulation simulate_from<2>(const io::Case&, mesh::Mesh<2>, const VectorX&,
+                                     const IterationCallback&);
+template Simulation simulate_from<3>(const io::Case&, mesh::Mesh<3>, const VectorX&,
+                                     const IterationCallback&);
 template Real condition_at<2>(const assembly::FormingProblem<2>&, const VectorX&);
 template Real condition_at<3>(const assembly::FormingProblem<3>&, const VectorX&);
 template Simulation simulate_on<2>(const io::Case&, mesh::Mesh<2>, const IterationCallback&, bool);

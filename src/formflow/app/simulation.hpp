@@ -55,6 +55,14 @@ template <int dim>
 Simulation simulate_on(const io::Case& case_, mesh::Mesh<dim> mesh,
                        const IterationCallback& on_iteration = {}, bool estimate_condition = false);
 
+/// simulate_on with Newton started from `start` (a full dof vector on `mesh`, e.g.
+/// the previous adaptive cycle's solution interpolated; its prescribed values are
+/// replaced by the problem's) instead of a coarse start. The load's error estimate,
+/// if asked for, is computed on `mesh` refined uniformly (mesh/uniform_refinement.hpp).
+template <int dim>
+Simulation simulate_from(const io::Case& case_, mesh::Mesh<dim> mesh, const VectorX& start,
+                         const IterationCallback& on_iteration = {});
+
 /// The manufactured-solution problem of `case_` (verification.solution ≠ none):
 /// unit square, box mesh with the case's distortion, exact velocity on the
 /// whole boundary, body force; `errors` filled (app/manufactured_simulation.cpp).

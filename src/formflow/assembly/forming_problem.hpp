@@ -68,10 +68,11 @@ public:
   void apply_coupling(const UnsymmetricTangent<dim>& coupling, const VectorX& x_free,
                       VectorX& y_free) const;
 
-  /// y += Nᵀ x for the cell part of the coupling N of assemble_newton (full dof
-  /// vectors, prescribed entries included: the adjoint of a reaction needs the
-  /// driven rows). The friction part (dτ_f through the mollified σ̄_N) has no
-  /// transpose here: callers check `coupling.has_friction` first.
+  /// y += Nᵀ x for the coupling N of assemble_newton (full dof vectors, prescribed
+  /// entries included: the adjoint of a reaction needs the driven rows). The
+  /// friction part (dτ_f through the mollified σ̄_N = A u_N/d_N) is transposed as
+  /// the penalty contact pressure's: not with attached constraint multipliers
+  /// (their σ_N is not u_N/d_N), which callers check (`multipliers()`).
   void apply_coupling_transpose(const UnsymmetricTangent<dim>& coupling, const VectorX& x,
                                 VectorX& y) const;
 

@@ -118,7 +118,6 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
 template <int dim>
 void FormingProblem<dim>::apply_coupling_transpose(const UnsymmetricTangent<dim>& coupling,
                                                    const VectorX& x, VectorX& y) const {
-  FF_ASSERT(!coupling.has_friction, "the friction coupling has no transpose here");
   // N = Σ_points c (divergence row)ᵀ (deviator row), so Nᵀ x = Σ c (deviator)ᵀ (divergence · x).
   const int n_local = coupling.n_local, n_nodes = mesh_.nodes_per_cell();
   std::vector<Index> dofs(n_local);
@@ -136,6 +135,42 @@ void FormingProblem<dim>::apply_coupling_transpose(const UnsymmetricTangent<dim>
     for (int l = 0; l < n_local; ++l) g += divergence[l] * x[dofs[l]];
     g *= coupling.coefficients[k];
     for (int l = 0; l < n_local; ++l) y[dofs[l]] += g * deviator[l];
+  }
+  if (!coupling.has_friction) return;
+
+  // The friction part is N_f = B S M: M x = σ̄_N(x) = A (u_N(x)/d_N) at the Γ3 points
+  // (A the mollifier, the normals fixed), S the per-point (∂τ_f/∂σ̄_N) ĝ, B the
+  // tractions' nodal forces ∫ φ_a · dΓ. So N_fᵀ x = Mᵀ Sᵀ Bᵀ x, in two face loops.
+  FF_ASSERT(multipliers_ == nullptr, "the friction coupling's transpose is the penalty contact's");
+  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
+  typename fem::CellValues<dim>::Gradients coordinates, unused;
+  const int n_face_q = facet_rule().size();
+  const std::size_t n_facets = discretisation_->contact_facets().size();
+  std::vector<Real> weighted(n_facets * n_face_q, 0.0), spread;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t position = 0; position < n_facets; ++position) {
+      const mesh::BoundaryFacet& facet = mesh_.facets[discretisation_->contact_facets()[position]];
+      gather(facet.cell, nullptr, coordinates, unused);
+      reinit_contact(facet_values, coordinates, static_cast<Index>(position));
+      for (int q = 0; q < n_face_q; ++q) {
+        const std::size_t k = position * n_face_q + q;
+        if (pass == 0) { // Sᵀ Bᵀ x: the slip-weighted trace of x at each point
+          if (coupling.threshold_slip[k].isZero(0.0)) continue;
+          Point<dim> trace = Point<dim>::Zero();
+          for (int a = 0; a < n_nodes; ++a)
+            trace += facet_values.shape(q)[a] *
+                     x.template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, facet.cell), 0));
+          weighted[k] = facet_values.JxW(q) * coupling.threshold_slip[k].dot(trace);
+        } else { // Mᵀ: u_N = φ_a n · u_a, divided by d_N
+          const Point<dim> load =
+              (spread[k] / settings_.penalty.d_n) * Point<dim>(facet_values.normal(q));
+          for (int a = 0; a < n_nodes; ++a)
+            y.template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, facet.cell), 0)) +=
+                facet_values.shape(q)[a] * load;
+        }
+      }
+    }
+    if (pass == 0) discretisation_->mollifier().apply_transpose(weighted, spread);
   }
 }
 

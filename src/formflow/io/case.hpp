@@ -10,6 +10,7 @@
 #include "formflow/physics/manufactured.hpp"
 #include "formflow/physics/process.hpp"
 #include "formflow/physics/thermal.hpp"
+#include "formflow/post/adaptivity.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
 #include <map>
@@ -46,7 +47,8 @@ struct Case {
   assembly::ContactSettings contact;                             ///< face or nodal contact normals
   physics::Penalty penalty;
   solvers::IterationControl solver;
-  physics::Thermal thermal; ///< hot forming: the heat problem and its coupling (docs/thermal.md)
+  post::AdaptSettings adapt; ///< adaptive refinement by the load's error indicators
+  physics::Thermal thermal;  ///< hot forming: the heat problem and its coupling (docs/thermal.md)
   /// Verification: a manufactured solution on the unit square replaces the
   /// process (None: the forming case), on a box mesh with mesh.distortion.
   physics::ManufacturedSolution manufactured = physics::ManufacturedSolution::None;

@@ -151,6 +151,7 @@ public:
     check_linear_solver();
     check_verification();
     check_thermal();
+    check_adapt();
     check_mesh_memory();
   }
 
@@ -407,6 +408,50 @@ private:
                 "(hensel_spittel: 0 < m3 + m8 T ≤ 1), or a lower thermal.max_temperature",
                 {"material.law", "material.hs_m3", "material.hs_m8", "material.st_n",
                  "thermal.billet_temperature", "thermal.tool_temperature"});
+  }
+
+  /// Adaptivity (docs/error-estimation.md) remeshes the plane channel with Gmsh and
+  /// needs the load's error indicators: what it cannot serve is refused here.
+  void check_adapt() const {
+    if (!case_.adapt.enabled()) return;
+    const std::initializer_list<std::string> switch_key = {"adapt.target_error"};
+    const std::string off = "set adapt.target_error = 0 (no adaptivity)";
+#if !FORMFLOW_WITH_GMSH
+    die_error("adapt.target_error",
+              "needs Gmsh to remesh, and this formflow was built without it "
+              "(FORMFLOW_WITH_GMSH=OFF)",
+              off + ", or rebuild with libgmsh-dev installed");
+#endif
+    if (case_.mesh.dimension == 3)
+      die_error("geometry.dimension",
+                "adaptivity is not done for the solid channel yet (only plane and axisymmetric)",
+                off + ", or geometry.dimension = 2", switch_key);
+    if (case_.mesh.source == mesh::MeshSource::File)
+      die_error("mesh.source",
+                "a mesh from a file has no channel geometry for the cycles to remesh",
+                off + ", or mesh.source = \"structured\" or \"gmsh\"", switch_key);
+    if (case_.manufactured != physics::ManufacturedSolution::None)
+      die_error("verification.solution",
+                "adaptivity estimates a forming load, which a "
+                "manufactured solution does not have",
+                off, switch_key);
+    if (case_.thermal.enabled)
+      die_error("thermal.enabled", "adaptivity with hot forming is not done yet", off, switch_key);
+    if (case_.friction.regularization == physics::FrictionRegularization::None)
+      die_error("friction.regularization",
+                "exact friction has no error estimate to drive adaptivity (no Newton tangent "
+                "without its multipliers)",
+                off + ", or a regularised friction law (friction.regularization)", switch_key);
+    if ((case_.formulation.type == assembly::FormulationType::Mixed && case_.penalty.d == 0) ||
+        case_.penalty.d_n == 0)
+      die_error(case_.penalty.d_n == 0 ? "penalty.dN" : "penalty.d",
+                "exact constraints (d = 0 or dN = 0) have no error estimate to drive adaptivity",
+                off + ", or a penalty > 0", switch_key);
+    if (case_.solver.method != solvers::NonlinearMethod::Newton)
+      die_error("solver.method",
+                "adaptivity restarts each cycle's Newton from the previous solution; the secant "
+                "iteration has no such start",
+                off + ", or solver.method = \"newton\"", switch_key);
   }
 
   /// A mesh that cannot fit in this machine's memory is refused now, not by the allocator.

@@ -17,9 +17,10 @@ std::vector<CaseKey> make_table() {
   using namespace keys;
   std::vector<CaseKey> table;
   // Section order = case_sections() order (the reference and the JSON follow it).
-  for (auto part : {process_keys(), geometry_keys(), mesh_keys(), integration_keys(),
-                    formulation_keys(), material_keys(), contact_keys(), friction_keys(),
-                    penalty_keys(), solver_keys(), thermal_keys(), verification_keys()})
+  for (auto part :
+       {process_keys(), geometry_keys(), mesh_keys(), integration_keys(), formulation_keys(),
+        material_keys(), contact_keys(), friction_keys(), penalty_keys(), solver_keys(),
+        adapt_keys(), thermal_keys(), verification_keys()})
     for (CaseKey& key : part) table.push_back(std::move(key));
   return table;
 }
@@ -116,6 +117,8 @@ const std::vector<CaseSection>& case_sections() {
       {"penalty", "Penalty and regularisation parameters (paper eq. 3.8, 3.14)."},
       {"solver", "The nonlinear iteration: Newton, or the paper's secant-modulus (Kachanov) "
                  "iteration (eq. 5.2–5.3)."},
+      {"adapt", "Adaptive refinement driven by the load's error indicators: remesh where they "
+                "are largest until the estimate meets a target (docs/error-estimation.md)."},
       {"thermal", "Hot forming: the steady heat equation in the workpiece, coupled to a "
                   "temperature-dependent flow law (docs/thermal.md)."},
       {"verification",

@@ -146,6 +146,31 @@ json thermal_json(const post::ThermalResults& thermal) {
             {"flow_iterations", thermal.flow_iterations}}}};
 }
 
+/// Adaptive refinement ([adapt], docs/error-estimation.md): one entry per cycle,
+/// the last one being the mesh the rest of the summary describes.
+json adapt_json(const Case& case_, const post::AdaptRecord& record) {
+  json cycles = json::array();
+  for (std::size_t k = 0; k < record.cycles.size(); ++k) {
+    const post::AdaptCycle& cycle = record.cycles[k];
+    cycles.push_back({{"cycle", k},
+                      {"cells", cycle.cells},
+                      {"dofs", cycle.dofs},
+                      {"load", cycle.load},
+                      {"estimate", cycle.estimate ? json(*cycle.estimate) : json(nullptr)},
+                      {"relative_estimate", cycle.estimate && cycle.load != 0
+                                                ? json(*cycle.estimate / std::abs(cycle.load))
+                                                : json(nullptr)},
+                      {"newton_iterations", cycle.newton_iterations},
+                      {"marked_cells", cycle.marked},
+                      {"time_s", cycle.seconds}});
+  }
+  return {{"target_error", case_.adapt.target_error},
+          {"fraction", case_.adapt.fraction},
+          {"reached_target", record.reached_target},
+          {"stop", record.stop},
+          {"cycles", std::move(cycles)}};
+}
+
 json timing_json(const PhaseTimes& timing) {
   json out = json::object();
   // The phases every run has are always present, so readers need no defaults.
@@ -181,6 +206,10 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["contact"] = contact_json(case_, results);
   if (results.thermal.enabled) out["thermal"] = thermal_json(results.thermal);
   out["mesh"] = mesh_json(case_, results);
+  if (!results.adapt.cycles.empty()) {
+    out["mesh"]["adapted"] = results.adapt.cycles.size() > 1; // Gmsh remeshes after cycle 0
+    out["adapt"] = adapt_json(case_, results.adapt);
+  }
   out["timing_s"] = timing_json(results.timing);
   // What the time bought: every factorisation (coarse levels and secant steps
   // included) and the GMRES iterations of Newton's unsymmetric steps; the back-end,

@@ -102,7 +102,8 @@ void set_recombined_quadrilateral_options(Real size) {
 }
 
 void build_channel_model(const GmshSession& session, const ChannelGeometry& geometry,
-                         const std::vector<Point<2>>& die_face, Real size, int order) {
+                         const std::vector<Point<2>>& die_face, Real size, int order,
+                         const std::function<void()>& size_field) {
   FF_ASSERT(order == 1 || order == 2, "order must be 1 or 2");
   session.call([&] {
     gmsh::model::add("channel");
@@ -112,6 +113,7 @@ void build_channel_model(const GmshSession& session, const ChannelGeometry& geom
     // Only elements in a physical group are written to a .msh: the surface too.
     gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {model.surface}), "domain");
     set_recombined_quadrilateral_options(size);
+    if (size_field) size_field();
     gmsh::model::mesh::generate(2);
     if (order == 2) gmsh::model::mesh::setOrder(2);
   });

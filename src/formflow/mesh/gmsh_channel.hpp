@@ -6,6 +6,7 @@
 #include "formflow/mesh/gmsh_session.hpp"
 
 #include <utility>
+#include <functional>
 #include <vector>
 
 namespace formflow::mesh {
@@ -38,9 +39,12 @@ void set_recombined_quadrilateral_options(Real size);
 /// the exit; the exit runs to x_d + L_e. Any die profile enters only here,
 /// so a wedge or curved die is another `die_face`. Physical curve groups carry
 /// the part names (label_name); the surface is the physical group "domain",
-/// so that a written .msh keeps its elements.
+/// so that a written .msh keeps its elements. `size_field`, if given, runs in
+/// the session just before meshing, to replace the uniform size by a field
+/// (mesh/gmsh_sized_channel.hpp).
 void build_channel_model(const GmshSession& session, const ChannelGeometry& geometry,
-                         const std::vector<Point<2>>& die_face, Real size, int order);
+                         const std::vector<Point<2>>& die_face, Real size, int order,
+                         const std::function<void()>& size_field = {});
 
 /// The channel with `die_face`, meshed by Gmsh, as a formflow mesh.
 Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry,

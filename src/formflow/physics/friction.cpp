@@ -37,4 +37,12 @@ void NonlocalAverage::apply(const std::vector<Real>& pressure, std::vector<Real>
       averaged[i] += coefficients_[k] * pressure[neighbours_[k]];
 }
 
+void NonlocalAverage::apply_transpose(const std::vector<Real>& values,
+                                      std::vector<Real>& spread) const {
+  spread.assign(values.size(), 0.0);
+  for (int i = 0; i < size(); ++i)
+    for (int k = offsets_[i]; k < offsets_[i + 1]; ++k)
+      spread[neighbours_[k]] += coefficients_[k] * values[i];
+}
+
 } // namespace formflow::physics

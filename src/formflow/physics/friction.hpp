@@ -24,6 +24,8 @@ public:
 
   /// averaged[i] = Σ_j w_j p_j / Σ_j w_j over the points j within `radius` of i.
   void apply(const std::vector<Real>& pressure, std::vector<Real>& averaged) const;
+  /// The transpose: spread[j] = Σ_i A_ij values[i] (the adjoint of a goal through σ̄_N).
+  void apply_transpose(const std::vector<Real>& values, std::vector<Real>& spread) const;
   int size() const { return static_cast<int>(offsets_.size()) - 1; }
 
 private:

@@ -88,9 +88,10 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
   VectorX force;
   fine.assemble_newton(prolonged, thresholds, assembly::NewtonDuals<dim>{}, force, &tangent,
                        &coupling);
-  if (coupling.has_friction)
-    return unavailable("a pressure-dependent friction threshold couples the tangent through the "
-                       "mollified contact pressure, whose transpose is not implemented");
+  if (coupling.has_friction && fine.multipliers())
+    return unavailable("a pressure-dependent friction threshold with constraint multipliers "
+                       "(the mixed formulation) couples the tangent through a contact pressure "
+                       "whose transpose is not implemented");
   const VectorX gradient = reaction_gradient(fine, tangent, coupling);
   auto solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
   if (!solver->analyze(tangent.matrix) || !solver->factorize(tangent.matrix))

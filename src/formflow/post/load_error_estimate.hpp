@@ -29,9 +29,9 @@ inline constexpr Real assumed_load_error_order = 1.0;
 ///  1. ũ = u prolonged to the fine mesh (exact: the spaces nest).
 ///  2. The adjoint z on the fine mesh: Jᵀ z = ∂Q/∂u_free with J the Newton tangent
 ///     at ũ (primal, the exact Jacobian; τ_f frozen), i.e. (T + Nᵀ) z = g; T is
-///     factorised once, Nᵀ (the full-ε̇ form's unsymmetric rest) goes into GMRES
-///     preconditioned by T. A pressure-dependent friction threshold's coupling has
-///     no transpose here: unavailable.
+///     factorised once, Nᵀ (the full-ε̇ form's unsymmetric rest and a pressure-
+///     dependent threshold's dτ_f) goes into GMRES preconditioned by T. With the
+///     mixed formulation's multipliers the friction part has no transpose: unavailable.
 ///  3. W = (1 on the driven dofs, −z on the free ones): Q(ũ) − z·R(ũ) = W·f(ũ) is
 ///     Q on the fine mesh after one linearised step, W_h = W at the coarse nodes is
 ///     a lifting for the coarse reaction, and per coarse cell K

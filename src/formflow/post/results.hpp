@@ -5,6 +5,7 @@
 #include "formflow/assembly/terms/term.hpp"
 #include "formflow/core/timer.hpp"
 #include "formflow/core/types.hpp"
+#include "formflow/post/adaptivity.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
 #include <optional>
@@ -143,6 +144,8 @@ struct Results {
   /// coarse level, coarsest first; not counted in `iterations`. Empty: none.
   std::vector<int> coarse_iterations;
   std::vector<Real> coarse_mesh_sizes;
+  /// Adaptive refinement ([adapt]): one record per cycle; empty without it.
+  AdaptRecord adapt;
 
   int dimension = 2; ///< of the mesh: 2 (quadrilaterals) or 3 (hexahedra)
   Index n_cells = 0, n_nodes = 0, n_dofs = 0;

@@ -248,6 +248,39 @@ TEST(NewtonSystem, GlobalTangentMatchesFiniteDifferencesOfTheResidual) {
   EXPECT_GT((with_coupling - symmetric).norm(), 1e3 * fd_tolerance * symmetric.norm());
 }
 
+TEST(NewtonSystem, CouplingTransposeIsTheCouplingsTranspose) {
+  // The adjoint of the load (post/load_error_estimate.hpp) applies Nᵀ matrix free:
+  // the full form's cell part and Coulomb's dτ_f through the mollified σ̄_N.
+  // Column by column against apply_coupling over the free dofs: the same products
+  // summed in another order, so they agree to round-off, ε times the terms per
+  // entry (at most a few hundred here) relative to ‖N‖: 1e-12.
+  for (const physics::ViscousStrain strain :
+       {physics::ViscousStrain::Deviatoric, physics::ViscousStrain::Full}) {
+    const SmallExtrusion extrusion(regularised_extrusion(strain));
+    const assembly::ScatterPlan& plan = extrusion.problem->plan();
+    assembly::LinearSystem tangent = plan.make_system();
+    assembly::UnsymmetricTangent<2> coupling;
+    VectorX force;
+    extrusion.problem->assemble_newton(extrusion.u,
+                                       extrusion.problem->friction_thresholds(extrusion.u), {},
+                                       force, &tangent, &coupling);
+    ASSERT_TRUE(coupling.has_friction);
+    const Index n = plan.n_free();
+    MatrixX forward(n, n), transposed(n, n);
+    for (Index k = 0; k < n; ++k) {
+      VectorX column = VectorX::Zero(n);
+      extrusion.problem->apply_coupling(coupling, VectorX::Unit(n, k), column);
+      forward.col(k) = column;
+      VectorX full = VectorX::Zero(plan.n_dofs());
+      extrusion.problem->apply_coupling_transpose(
+          coupling, plan.expand(VectorX::Unit(n, k), VectorX::Zero(plan.n_dofs())), full);
+      transposed.col(k) = extrusion.free_part(full);
+    }
+    ASSERT_GT(forward.norm(), 0.0);
+    EXPECT_LE((transposed - forward.transpose()).norm(), 1e-12 * forward.norm());
+  }
+}
+
 TEST(NewtonSystem, FullFormJacobianWithItsUnsymmetricCouplingMatchesFiniteDifferences) {
   // The paper's full-ε̇ a-form and τ_f(u) not frozen: the symmetric tangent alone
   // misses ⅔ ν′ dε̄̇ ⅓ ε̇_V ε̇_V and dτ_f; with the coupling the Jacobian is exact.

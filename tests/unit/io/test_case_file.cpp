@@ -403,6 +403,11 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       // without PETSc refuses in turn.
       {"solver.petsc_options", "\"\""},
       {"solver.load_error", "\"linearized\""},
+      // adapt.target_error stays 0: adaptivity is refused with the secant method above.
+      {"adapt.target_error", "0.0"},
+      {"adapt.max_cycles", "5"},
+      {"adapt.max_dofs", "12345"},
+      {"adapt.fraction", "0.3"},
       {"verification.solution", "\"smooth\""},
       {"verification.distortion", "\"random\""},
       {"verification.amplitude", "0.2"},

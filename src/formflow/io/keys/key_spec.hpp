@@ -119,6 +119,7 @@ std::vector<CaseKey> contact_keys();
 std::vector<CaseKey> friction_keys();
 std::vector<CaseKey> penalty_keys();
 std::vector<CaseKey> thermal_keys();
+std::vector<CaseKey> adapt_keys();
 std::vector<CaseKey> solver_keys();
 std::vector<CaseKey> verification_keys();
 

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// Dörfler marking and the next mesh's target sizes.
+#include "formflow/post/adaptivity.hpp"
+
+#include "formflow/core/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace formflow::post {
+
+std::vector<bool> dorfler_marking(const VectorX& indicators, Real fraction) {
+  const Index n = indicators.size();
+  std::vector<bool> marked(static_cast<std::size_t>(n), false);
+  std::vector<Index> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), Index{0});
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
+    return std::abs(indicators[a]) > std::abs(indicators[b]);
+  });
+  const Real total = indicators.cwiseAbs().sum();
+  Real sum = 0;
+  for (Index cell : order) {
+    if (sum >= fraction * total || indicators[cell] == 0) break;
+    marked[static_cast<std::size_t>(cell)] = true;
+    sum += std::abs(indicators[cell]);
+  }
+  return marked;
+}
+
+Real cell_side(const mesh::Mesh<2>& mesh, Index cell) {
+  const int n = mesh.nodes_per_side();
+  const int corners[4] = {0, n - 1, n * n - 1, n * (n - 1)}; // counter-clockwise
+  Real twice_area = 0;
+  for (int k = 0; k < 4; ++k) {
+    const auto a = mesh.nodes.col(mesh.cells(corners[k], cell));
+    const auto b = mesh.nodes.col(mesh.cells(corners[(k + 1) % 4], cell));
+    twice_area += a.x() * b.y() - b.x() * a.y();
+  }
+  return std::sqrt(std::abs(twice_area) / 2);
+}
+
+VectorX target_node_sizes(const mesh::Mesh<2>& mesh, const std::vector<bool>& marked) {
+  FF_ASSERT(static_cast<Index>(marked.size()) == mesh.n_cells(), "one flag per cell");
+  VectorX sizes = VectorX::Constant(mesh.n_nodes(), std::numeric_limits<Real>::infinity());
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    const Real side = cell_side(mesh, cell) * (marked[static_cast<std::size_t>(cell)] ? 0.5 : 1.0);
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+      sizes[mesh.cells(a, cell)] = std::min(sizes[mesh.cells(a, cell)], side);
+  }
+  return sizes;
+}
+
+} // namespace formflow::post

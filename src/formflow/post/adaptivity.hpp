@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Adaptive refinement driven by the load's error indicators: settings, marking, sizes.
+#pragma once
+
+#include "formflow/core/types.hpp"
+#include "formflow/mesh/mesh.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace formflow::post {
+
+/// The [adapt] section (docs/error-estimation.md, "Adaptivity").
+struct AdaptSettings {
+  /// Stop when the load's error estimate is at most this fraction of |load|;
+  /// 0 (the default): no adaptivity, the run is one solve on the case's mesh.
+  Real target_error = 0.0;
+  int max_cycles = 8;      ///< solves, the first (on the case's mesh) included
+  Index max_dofs = 400000; ///< no cycle on a mesh expected to have more dofs
+  Real fraction = 0.5;     ///< Dörfler's θ: refine the cells holding this share of Σ|η_K|
+  bool enabled() const { return target_error > 0; }
+};
+
+/// One solve of an adaptive run, as summary.json `adapt.cycles` records it.
+struct AdaptCycle {
+  Index cells = 0, dofs = 0;
+  Real load = 0.0;              ///< the ram pressure (drawing: the drawing stress) p_h
+  std::optional<Real> estimate; ///< of |p_h − p|; none: not computed (it ends the run)
+  int newton_iterations = 0;
+  Index marked = 0;   ///< cells marked for refinement after this cycle (0 for the last)
+  Real seconds = 0.0; ///< wall time of the cycle: solve, estimate, marking, remeshing
+};
+
+/// The record of an adaptive run: empty `cycles` when there was none.
+struct AdaptRecord {
+  std::vector<AdaptCycle> cycles;
+  std::string stop; ///< why the cycles ended: target reached, max_cycles, max_dofs, ...
+  bool reached_target = false;
+};
+
+/// Dörfler (bulk) marking: the fewest cells, largest |η_K| first, whose |η_K| sum to
+/// at least `fraction` of Σ|η_K|. Signed indicators are marked by magnitude: a
+/// cell whose refinement raises the load needs it as much as one that lowers it.
+/// Returns one flag per cell.
+std::vector<bool> dorfler_marking(const VectorX& indicators, Real fraction);
+
+/// The side of a square of the cell's area (corner nodes; Q2's curved edges
+/// ignored), the size Gmsh's target sizes mean.
+Real cell_side(const mesh::Mesh<2>& mesh, Index cell);
+
+/// The target size at each node of `mesh` for the next mesh: marked cells halve
+/// their side, the others keep it; a node takes the smallest of its cells' (so a
+/// refined cell is not widened by its neighbours' interpolation).
+VectorX target_node_sizes(const mesh::Mesh<2>& mesh, const std::vector<bool>& marked);
+
+} // namespace formflow::post

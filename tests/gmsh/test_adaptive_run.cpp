@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// Adaptive refinement ([adapt]): the cycles, their record, and the reaction = power
+// identity on the remeshed (Gmsh) meshes.
+#include "formflow/app/simulation.hpp"
+#include "formflow/core/error.hpp"
+#include "formflow/io/results_writer.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <numbers>
+
+namespace formflow {
+namespace {
+
+/// The sticking-ram benchmark (paper law, d = 1e-3) at h = 1 with two cycles and an
+/// unreachable target, so the second cycle runs on a Gmsh mesh refined where the
+/// first one's indicators were largest.
+io::Case two_cycles() {
+  io::Case case_;
+  case_.process.ram = physics::RamCondition::Sticking;
+  case_.mesh.size = 1.0;
+  case_.solver.load_error = solvers::LoadErrorMethod::Refined;
+  case_.adapt.target_error = 1e-9;
+  case_.adapt.max_cycles = 2;
+  case_.adapt.fraction = 0.3;
+  return case_;
+}
+
+TEST(AdaptiveRun, CyclesAreRecordedAndTheRefinedMeshIsBetter) {
+  const io::Case case_ = two_cycles();
+  const post::Results results = app::simulate(case_).results;
+  ASSERT_TRUE(results.converged());
+  const post::AdaptRecord& record = results.adapt;
+  ASSERT_EQ(record.cycles.size(), 2u);
+  EXPECT_EQ(record.stop, "max_cycles");
+  EXPECT_FALSE(record.reached_target);
+  const post::AdaptCycle& first = record.cycles[0];
+  const post::AdaptCycle& second = record.cycles[1];
+  EXPECT_GT(first.marked, 0);
+  EXPECT_LT(first.marked, first.cells) << "Dörfler with θ = 0.3 marks a part";
+  EXPECT_GT(second.dofs, first.dofs);
+  EXPECT_EQ(second.dofs, results.n_dofs) << "the results are the last cycle's";
+  ASSERT_TRUE(first.estimate && second.estimate);
+  // Both loads lie above Hill's (1 + π/2) k (kinematic) and the refined mesh is
+  // closer: the marked cells hold the error (the die corner's fan).
+  const double exact = 1.0 + std::numbers::pi / 2.0;
+  EXPECT_GT(second.load, exact);
+  EXPECT_LT(second.load - exact, first.load - exact);
+  EXPECT_LT(*second.estimate, *first.estimate);
+  // The reaction equals the total discrete power at a converged iterate on the
+  // remeshed mesh too (tests/regression/test_load_consistency.cpp: within 20 δ).
+  EXPECT_LT(std::abs(results.pressure.ram_reaction - results.pressure.total_power) /
+                results.pressure.ram_reaction,
+            20 * case_.solver.tolerance);
+  const std::string summary = io::summary_json(case_, results);
+  EXPECT_EQ(summary.find("NaN"), std::string::npos);
+  const nlohmann::json document = nlohmann::json::parse(summary);
+  ASSERT_TRUE(document.contains("adapt"));
+  EXPECT_EQ(document["adapt"]["stop"], "max_cycles");
+  EXPECT_EQ(document["adapt"]["cycles"].size(), 2u);
+  EXPECT_EQ(document["adapt"]["cycles"][1]["dofs"], results.n_dofs);
+  EXPECT_TRUE(document["mesh"]["adapted"].get<bool>());
+}
+
+TEST(AdaptiveRun, WithoutAdaptTheSummaryHasNoAdaptBlock) {
+  io::Case case_;
+  case_.process.ram = physics::RamCondition::Sticking;
+  case_.mesh.size = 10.0 / 6.0; // mesh I: fast
+  const post::Results results = app::simulate(case_).results;
+  EXPECT_TRUE(results.adapt.cycles.empty());
+  // The case's own [adapt] keys are echoed under "case"; the cycle record is absent.
+  const nlohmann::json document = nlohmann::json::parse(io::summary_json(case_, results));
+  EXPECT_FALSE(document.contains("adapt"));
+  EXPECT_FALSE(document["mesh"].contains("adapted"));
+}
+
+TEST(AdaptiveRun, AFileMeshIsRefusedNamingTheKey) {
+  try {
+    io::load_case_text(
+        "[mesh]\nsource = \"file\"\nfile = \"x.msh\"\n[adapt]\ntarget_error = 1e-3\n", "adapt.toml",
+        {});
+    FAIL() << "accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.key, "mesh.source");
+    EXPECT_NE(std::string(error.what()).find("remesh"), std::string::npos) << error.what();
+  }
+}
+
+} // namespace
+} // namespace formflow
