@@ -2,6 +2,7 @@
 // One case from parameters to results, in the dimension of its mesh.
 #include "formflow/app/simulation.hpp"
 #include "formflow/app/coarse_start.hpp"
+#include "formflow/app/distributed_run.hpp"
 #include "formflow/app/load_error.hpp"
 #include "formflow/app/solve_plan.hpp"
 #include "formflow/app/thermal_coupling.hpp"
@@ -46,6 +47,7 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   settings.initial_rate = case_.solver.initial_rate;
   settings.symmetry = case_.symmetry;
   settings.contact = case_.contact;
+  settings.distribution = distribution(); // one rank's own cells in a distributed run
   return settings;
 }
 
@@ -115,6 +117,7 @@ solvers::SecantOutcome run_counted_loop(const SolvePlan& plan, const io::Case& c
   counter.fill(outcome.history);
   results.linear_algebra.solver = solver->name(); // e.g. "petsc-gmres-cholesky"
   results.linear_algebra.iterations = solver->krylov_iterations();
+  results.linear_algebra.ranks = distribution().size;
   return outcome;
 }
 
@@ -268,6 +271,7 @@ void add_total(post::Results& results, Clock::time_point start) {
 
 Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration,
                     bool estimate_condition) {
+  check_distributed(case_); // what a run on several ranks does not serve yet: exit 2
   if (case_.manufactured != physics::ManufacturedSolution::None)
     return simulate_manufactured(case_, on_iteration, estimate_condition);
   Simulation simulation;
