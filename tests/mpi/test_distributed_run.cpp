@@ -9,6 +9,7 @@
 #include "support/approx.hpp"
 #include "support/run_cli.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,11 +35,16 @@ struct DistributedCase {
   Real delta; ///< solver.tolerance
 };
 
+/// gtest's name of a parameter (its bytes otherwise).
+void PrintTo(const DistributedCase& c, std::ostream* out) {
+  *out << c.name;
+}
+
 std::vector<io::Override> all_edits(const DistributedCase& c) {
   std::vector<io::Override> edits = c.edits;
   // The distributed slice runs the paper's secant iteration (docs/petsc.md).
   edits.emplace_back("solver.method", "secant");
-  edits.emplace_back("solver.tolerance", std::to_string(c.delta));
+  edits.emplace_back("solver.tolerance", fmt::format("{}", c.delta));
   return edits;
 }
 
@@ -51,9 +58,13 @@ struct MpiRun {
 
 MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirectory& scratch,
                const std::string& extra = {}) {
-  std::string command = quoted(FORMFLOW_MPIEXEC) + " -n " + std::to_string(ranks) +
-                        " --oversubscribe --allow-run-as-root " + quoted(FORMFLOW_BINARY) +
-                        " run -q -o " + quoted((scratch / "results").string());
+  // OpenMPI's ranks wait for each other by spinning unless told to yield: on a machine
+  // with fewer free cores than ranks (oversubscribed, or shared) that turns every
+  // message into a time slice. Yielding changes no number, only the wall time.
+  std::string command = "OMPI_MCA_mpi_yield_when_idle=1 " + quoted(FORMFLOW_MPIEXEC) + " -n " +
+                        std::to_string(ranks) + " --oversubscribe --allow-run-as-root " +
+                        quoted(FORMFLOW_BINARY) + " run -q -o " +
+                        quoted((scratch / "results").string());
   if (!c.case_path.empty())
     command += " " + quoted(std::string(FORMFLOW_SOURCE_DIR) + "/" + c.case_path);
   for (const auto& [key, value] : all_edits(c)) command += " --set " + quoted(key + "=" + value);
@@ -111,21 +122,21 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
 }
 
 const DistributedCase paper_penalty{
-    "paper_penalty", "", {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}}, 1e-10};
+    "paper_penalty", "", {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}}, 1e-7};
 const DistributedCase paper_mixed{"paper_condensed_mixed",
                                   "",
                                   {{"mesh.size", "2.5"},
                                    {"friction.mu", "0.1"},
                                    {"formulation.type", "mixed"},
                                    {"formulation.pressure", "P1disc"}},
-                                  1e-10};
+                                  1e-7};
 const DistributedCase round_penalty{
-    "round_quarter_penalty", "cases/round-rod-3d.toml", {{"mesh.size", "0.5"}}, 1e-8};
+    "round_quarter_penalty", "cases/round-rod-3d.toml", {{"mesh.size", "0.5"}}, 1e-7};
 const DistributedCase round_mixed{
     "round_quarter_condensed_mixed",
     "cases/round-rod-3d.toml",
     {{"mesh.size", "0.5"}, {"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}},
-    1e-8};
+    1e-7};
 
 INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
                          ::testing::Values(std::pair(paper_penalty, 2), std::pair(paper_mixed, 2),
