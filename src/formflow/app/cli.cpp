@@ -112,7 +112,7 @@ int run_case(const Options& options) {
   }
   // Every iteration is a safe point to stop at after SIGINT/SIGTERM (app/stop_signals.hpp).
   const IterationCallback callback = [&monitor, show](const solvers::IterationRecord& record) {
-    throw_if_signalled();
+    stop_if_signalled(); // on several ranks: all of them at the same iteration
     if (show) monitor(record);
   };
   const Simulation simulation = simulate(case_, callback);

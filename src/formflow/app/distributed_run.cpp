@@ -2,6 +2,7 @@
 #include "formflow/app/distributed_run.hpp"
 
 #include "formflow/app/solve_plan.hpp"
+#include "formflow/app/stop_signals.hpp"
 #include "formflow/core/error.hpp"
 
 #include <fmt/format.h>
@@ -23,6 +24,17 @@ void set_distribution(assembly::Distribution distribution) {
 
 const assembly::Distribution& distribution() {
   return stored();
+}
+
+void stop_if_signalled() {
+  const assembly::Distribution& run = distribution();
+  if (!run.distributed()) {
+    throw_if_signalled();
+    return;
+  }
+  Real seen = stop_signal() != 0 ? 1.0 : 0.0;
+  run.sum_over_ranks(std::span<Real>(&seen, 1));
+  if (seen > 0) throw Stopped("stopped by a signal during the solve");
 }
 
 void check_distributed(const io::Case& case_) {

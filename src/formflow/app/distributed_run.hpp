@@ -17,6 +17,12 @@ inline bool is_output_rank() {
   return distribution().rank == 0;
 }
 
+/// The iteration callback's safe point: throws Stopped after SIGINT/SIGTERM
+/// (app/stop_signals.hpp). On several ranks they agree first (a sum over the ranks of
+/// the signals seen), so that all stop at the same iteration: a rank that stopped alone
+/// would leave the others waiting in the next factorisation.
+void stop_if_signalled();
+
 /// On more than one rank, refuses (InputError naming the key, before the solve) what the
 /// distributed slice does not serve: a linear solver other than PETSc, any loop but the
 /// plain secant iteration (penalty or condensed mixed with d > 0, regularised friction),
