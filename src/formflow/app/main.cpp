@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
       static_cast<void>(std::freopen("/dev/null", "w", stderr));
     }
     formflow::app::set_distribution(std::move(distribution));
+    petsc::set_distributed_systems(true); // the PETSc back-end sums the ranks' shares
     const int code = formflow::app::run_cli(static_cast<int>(rest.size()) - 1, rest.data());
     return petsc::max_over_ranks(code);
   }

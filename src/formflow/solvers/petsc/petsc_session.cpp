@@ -81,6 +81,21 @@ int n_ranks() {
   return size;
 }
 
+namespace {
+bool& distributed_flag() {
+  static bool distributed = false;
+  return distributed;
+}
+} // namespace
+
+void set_distributed_systems(bool distributed) {
+  distributed_flag() = distributed;
+}
+
+bool distributed_systems() {
+  return distributed_flag() && n_ranks() > 1;
+}
+
 int rank() {
   ensure_initialized();
   PetscMPIInt rank = 0;

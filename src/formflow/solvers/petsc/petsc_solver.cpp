@@ -24,7 +24,7 @@ constexpr const char* options_key = "solver.petsc_options";
 class PetscSolver final : public LinearSolver {
 public:
   PetscSolver(MatrixStorage storage, const std::string& options)
-      : storage_(storage), options_(options), distributed_(petsc::n_ranks() > 1) {}
+      : storage_(storage), options_(options), distributed_(petsc::distributed_systems()) {}
   ~PetscSolver() override {
     if (ksp_) KSPDestroy(&ksp_);
     for (IS& field : fields_)
@@ -259,7 +259,8 @@ private:
     MatCreateVecs(matrix_, &solution_, &rhs_);
   }
 
-  /// A distributed run (issue 20): `matrix` is this rank's share, the entries of its own
+  /// A distributed run (issue 20; app/main.cpp said so, and PETSC_COMM_WORLD has more
+  /// than one rank): `matrix` is this rank's share, the entries of its own
   /// cells (assembly/discretisation.hpp) in the global free numbering; the ranks' shares
   /// add up to the system. The first call numbers the free dofs so that each rank owns a
   /// contiguous range (a dof belongs to the lowest rank whose cells touch it, i.e. whose
@@ -372,7 +373,7 @@ private:
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
   std::vector<PetscInt> pattern_outer_, pattern_inner_;
-  bool distributed_ = false;          ///< PETSC_COMM_WORLD has more than one rank
+  bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
   std::vector<PetscInt> petsc_index_; ///< distributed: free dof → PETSc's row
   std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
   VecScatter to_all_ = nullptr;       ///< distributed: the solution to every rank
