@@ -120,6 +120,14 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
             << std::abs(reaction - reference) / std::abs(reference) << "\n";
   EXPECT_TRUE(testing::approx(reaction, reference, tolerance));
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
+  // The fields once as fields.vtu, and as fields.pvtu with one piece per rank.
+  const auto results = scratch / "results";
+  EXPECT_TRUE(std::filesystem::exists(results / "fields.vtu"));
+  EXPECT_TRUE(std::filesystem::exists(results / "fields.pvtu"));
+  for (int rank = 0; rank <= ranks; ++rank)
+    EXPECT_EQ(std::filesystem::exists(results / ("fields_" + std::to_string(rank) + ".vtu")),
+              rank < ranks)
+        << rank;
   EXPECT_EQ(run.summary.at("method"), serial.results.method);
   // -q: formflow has nothing to say, from any rank (the launcher may: not checked).
   EXPECT_EQ(run.err.find("error:"), std::string::npos) << run.err;
