@@ -69,24 +69,5 @@ TEST(PetscCli, AMisspeltCaseOptionNamesTheKeyAndItsLine) {
   EXPECT_FALSE(std::filesystem::exists(scratch / "results" / "summary.json"));
 }
 
-/// Until distributed assembly lands (docs/petsc.md), N ranks would each solve and
-/// write the whole case: refused, with one message (rank 0's), not N.
-TEST(PetscCli, SeveralMpiRanksAreRefusedOnce) {
-  testing::ScratchDirectory scratch("formflow-petsc-cli");
-  const std::string command = "mpirun -np 2 --oversubscribe --allow-run-as-root " +
-                              quoted(FORMFLOW_BINARY) + " run -q -o " +
-                              quoted((scratch / "results").string()) + " " + small_case + " 2> " +
-                              quoted((scratch / "err.txt").string()) + " > /dev/null";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2);
-  const std::string err = testing::read_text(scratch / "err.txt");
-  const std::string message = "distributed runs are not implemented yet";
-  const auto first = err.find(message);
-  ASSERT_NE(first, std::string::npos) << err;
-  EXPECT_EQ(err.find(message, first + 1), std::string::npos) << "printed more than once:\n" << err;
-  EXPECT_FALSE(std::filesystem::exists(scratch / "results" / "summary.json"));
-}
-
 } // namespace
 } // namespace formflow

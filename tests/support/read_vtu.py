@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # Reads a .vtu file with VTK's own XML reader and prints what it saw as JSON.
 #
-# Usage: /usr/bin/python3 read_vtu.py FILE.vtu
+# Usage: /usr/bin/python3 read_vtu.py FILE.vtu   (or FILE.pvtu: the parallel reader,
+#        which reads the pieces the file names, beside it)
 # Needs Debian's python3-vtk9, which only /usr/bin/python3 can import.
 # Output: {"n_points", "n_cells", "cell_types": [...], "points": [[x, y, z], ...],
 #          "cells": [[point ids in VTK order], ...],
@@ -16,7 +17,7 @@ import json
 import sys
 
 from vtkmodules.vtkCommonCore import vtkIdList, vtkObject
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader, vtkXMLUnstructuredGridReader
 
 
 def arrays(data):
@@ -33,7 +34,8 @@ def arrays(data):
 
 def main(path):
     vtkObject.GlobalWarningDisplayOff()  # errors are reported through the exit code below
-    reader = vtkXMLUnstructuredGridReader()
+    parallel = path.endswith(".pvtu")
+    reader = vtkXMLPUnstructuredGridReader() if parallel else vtkXMLUnstructuredGridReader()
     reader.SetFileName(path)
     reader.Update()
     grid = reader.GetOutput()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Command-line parsing (CLI11) and the run/check subcommands.
 #include "formflow/app/cli.hpp"
+#include "formflow/app/distributed_run.hpp"
 
 #include "formflow/app/monitor.hpp"
 #include "formflow/app/simulation.hpp"
@@ -80,8 +81,11 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc, char**
 int run_case(const Options& options) {
   const io::Case case_ = io::load_case(options.case_path, parse_assignments(options.assignments));
   print_warnings(case_);
+  check_distributed(case_); // several MPI ranks: what they cannot serve yet, before any output
   // Before the solve: a -o that cannot take the results costs nothing (exit 2).
-  io::check_output_directory(options.output_directory, io::result_file_names());
+  // A distributed run writes once, from rank 0 (the other ranks' output is muted by main).
+  if (is_output_rank())
+    io::check_output_directory(options.output_directory, io::result_file_names());
   Monitor monitor(stdout, case_.solver.tolerance, case_.solver.max_iterations,
                   case_.solver.linear == solvers::LinearSolverKind::Petsc);
   const bool show = !options.quiet && !options.json;
@@ -110,13 +114,14 @@ int run_case(const Options& options) {
   }
   // Every iteration is a safe point to stop at after SIGINT/SIGTERM (app/stop_signals.hpp).
   const IterationCallback callback = [&monitor, show](const solvers::IterationRecord& record) {
-    throw_if_signalled();
+    stop_if_signalled(); // on several ranks: all of them at the same iteration
     if (show) monitor(record);
   };
   const Simulation simulation = simulate(case_, callback);
   const post::Results& results = simulation.results;
-  io::write_results(options.output_directory, case_, simulation.mesh, results,
-                    signal_stop_request());
+  if (is_output_rank())
+    io::write_results(options.output_directory, case_, simulation.mesh, results,
+                      signal_stop_request());
   if (stop_signal() != 0) return report_late_signal(options.output_directory);
 
   if (options.json) fmt::print("{}\n", io::summary_json(case_, results));
@@ -259,6 +264,11 @@ int run_cli(int argc, char** argv) {
       return Ok;
     }
     if (*study) {
+      if (distribution().distributed())
+        throw InputError("command line", 0, "study",
+                         fmt::format("a study on {} MPI ranks is not served yet (docs/petsc.md)",
+                                     distribution().size),
+                         "run each rung with mpirun ... formflow run, or the study as one process");
       study_options.overrides = parse_assignments(study_assignments);
       return study_command(study_options);
     }

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Entry point of the formflow binary.
 #include "formflow/app/cli.hpp"
+#include "formflow/app/distributed_run.hpp"
 #include "formflow/app/stop_signals.hpp"
 
 #if FORMFLOW_WITH_PETSC
 #include "formflow/solvers/petsc/petsc_session.hpp"
 
-#include <fmt/format.h>
-
+#include <cstdio>
 #include <cstdlib>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,17 +30,6 @@ int launcher_value(std::initializer_list<const char*> names, int fallback) {
 int main(int argc, char** argv) {
   formflow::app::install_stop_handlers();
 #if FORMFLOW_WITH_PETSC
-  // Distributed assembly is not there yet (issue 20, docs/petsc.md): N ranks would
-  // each solve the whole case and write the same files. Refused, said once.
-  const int ranks = launcher_value({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}, 1);
-  if (ranks > 1) {
-    if (launcher_value({"OMPI_COMM_WORLD_RANK", "PMI_RANK"}, 0) == 0)
-      fmt::print(stderr,
-                 "error: formflow was started on {} MPI ranks; distributed runs are not "
-                 "implemented yet (docs/petsc.md): run it as one process\n",
-                 ranks);
-    return 2;
-  }
   // PETSc's own options (-ksp_type cg, -pc_type gamg, ...) go to its options
   // database, over the case's solver.petsc_options; the rest to CLI11.
   const std::vector<std::string> arguments(argv + 1, argv + argc);
@@ -48,6 +38,28 @@ int main(int argc, char** argv) {
   std::vector<char*> rest{argv[0]};
   for (std::string& argument : split.rest) rest.push_back(argument.data());
   rest.push_back(nullptr);
+  // Started by mpirun on N > 1 ranks (issue 20, docs/petsc.md): MPI now (a serial run
+  // starts it only at its first PETSc solve, and a CHOLMOD run never), each rank its
+  // own slab of cells; only rank 0 prints and writes, and every rank exits with the
+  // largest code of all (a rank that failed makes the run fail).
+  if (launcher_value({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}, 1) > 1) {
+    namespace petsc = formflow::solvers::petsc;
+    formflow::assembly::Distribution distribution;
+    distribution.size = petsc::n_ranks();
+    distribution.rank = petsc::rank();
+    distribution.sum_over_ranks = [](std::span<formflow::Real> values) {
+      petsc::sum_over_ranks(values);
+    };
+    if (distribution.rank != 0) {
+      // The same monitor lines and messages as rank 0's: said once, by rank 0.
+      static_cast<void>(std::freopen("/dev/null", "w", stdout));
+      static_cast<void>(std::freopen("/dev/null", "w", stderr));
+    }
+    formflow::app::set_distribution(std::move(distribution));
+    petsc::set_distributed_systems(true); // the PETSc back-end sums the ranks' shares
+    const int code = formflow::app::run_cli(static_cast<int>(rest.size()) - 1, rest.data());
+    return petsc::max_over_ranks(code);
+  }
   return formflow::app::run_cli(static_cast<int>(rest.size()) - 1, rest.data());
 #else
   return formflow::app::run_cli(argc, argv);

@@ -3,6 +3,7 @@
 #include "formflow/app/simulation.hpp"
 #include "formflow/app/adaptive_run.hpp"
 #include "formflow/app/coarse_start.hpp"
+#include "formflow/app/distributed_run.hpp"
 #include "formflow/app/load_error.hpp"
 #include "formflow/app/solve_plan.hpp"
 #include "formflow/app/thermal_coupling.hpp"
@@ -47,6 +48,7 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   settings.initial_rate = case_.solver.initial_rate;
   settings.symmetry = case_.symmetry;
   settings.contact = case_.contact;
+  settings.distribution = distribution(); // one rank's own cells in a distributed run
   return settings;
 }
 
@@ -120,6 +122,7 @@ solvers::SecantOutcome run_counted_loop(const SolvePlan& plan, const io::Case& c
   results.linear_algebra.matrix_nonzeros = factor.matrix_nonzeros;
   results.linear_algebra.factor_nonzeros = factor.factor_nonzeros;
   results.linear_algebra.factor_flops = factor.factor_flops;
+  results.linear_algebra.ranks = distribution().size;
   return outcome;
 }
 
@@ -277,6 +280,7 @@ void add_total(post::Results& results, Clock::time_point start) {
 
 Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration,
                     bool estimate_condition) {
+  check_distributed(case_); // what a run on several ranks does not serve yet: exit 2
   if (case_.manufactured != physics::ManufacturedSolution::None)
     return simulate_manufactured(case_, on_iteration, estimate_condition);
   if (case_.adapt.enabled()) return simulate_adaptive(case_, on_iteration); // app/adaptive_run.cpp

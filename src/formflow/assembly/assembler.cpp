@@ -47,7 +47,16 @@ void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink
     return FaceState<dim>{cell, position, face_values, velocities, points, slip};
   };
 
-  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+  // A distributed run (issue 20) assembles the matrix and loads of its own cells only
+  // (the ranks' systems add up in the distributed matrix); the force and power passes
+  // run over every cell on every rank, from the velocity every rank holds.
+  const bool own_cells_only = pass == AssemblyPass::Secant;
+  FF_ASSERT(!discretisation_.distribution().distributed() || pass != AssemblyPass::Tangent,
+            "a distributed run has no Newton tangent yet");
+  const std::vector<Index>& assembled = discretisation_.assembled_cells();
+  const Index n_loop = own_cells_only ? static_cast<Index>(assembled.size()) : mesh.n_cells();
+  for (Index k = 0; k < n_loop; ++k) {
+    const Index cell = own_cells_only ? assembled[k] : k;
     discretisation_.gather(cell, request.velocity, coordinates, velocities);
     discretisation_.load_cell(cell, full, &volumetric);
     cell_state.cell = cell;

@@ -5,6 +5,7 @@
 #include "formflow/assembly/kernels/fixed_size.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/fem/dof_map.hpp"
+#include "formflow/mesh/cell_partition.hpp"
 #include "formflow/physics/kinematics.hpp"
 
 namespace formflow::assembly {
@@ -20,9 +21,20 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
                       ? fem::nodal_rule<dim - 1>(mesh.order + 1)
                       : fem::gauss_rule<dim - 1>(mesh.order + 1)) {
   FF_ASSERT(dim == 2 || !axisymmetric(), "axisymmetry is a two-dimensional formulation");
+  // A distributed run scatters only its own cells: the others are empty blocks, so the
+  // pattern (and the memory of the rank's system) holds only the own cells' entries.
+  const Distribution& distribution = settings.distribution;
+  std::vector<int> part;
+  if (distribution.distributed()) part = mesh::slab_partition(mesh, distribution.size);
   BlockDofs blocks;
-  for (Index cell = 0; cell < mesh.n_cells(); ++cell)
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    if (!part.empty() && part[cell] != distribution.rank) {
+      blocks.add({});
+      continue;
+    }
+    assembled_cells_.push_back(cell);
     blocks.add(fem::dofs_of_nodes<dim>(mesh.cells.col(cell)));
+  }
   plan_ = std::make_unique<ScatterPlan>(n_dofs(), constraints_.prescribed, blocks);
 
   // Contact faces, grouped by cell so that the cell loop adds them to the

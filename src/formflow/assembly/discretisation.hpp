@@ -7,6 +7,7 @@
 
 #include "formflow/assembly/constraints.hpp"
 #include "formflow/assembly/contact_normals.hpp"
+#include "formflow/assembly/distribution.hpp"
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/fem/values_cache.hpp"
@@ -25,6 +26,7 @@ struct DiscretisationSettings {
   int volumetric_points = 2;   ///< Gauss points per direction of the volumetric rule
   ContactSettings contact;     ///< face or nodal contact normals
   Real mollifier_radius = 0.0; ///< radius h of σ̄_N (friction.radius); 0: local
+  Distribution distribution;   ///< distributed run: this rank's slab of cells (issue 20)
 };
 
 /// The fixed part of a forming problem. Built once; every cell loop, the drivers'
@@ -38,7 +40,13 @@ public:
 
   const mesh::Mesh<dim>& mesh() const { return mesh_; }
   const DiscretisationSettings& settings() const { return settings_; }
+  /// The scatter plan of the cells this rank assembles (all of them in a serial run;
+  /// in a distributed run its pattern holds only the own cells' entries).
   const ScatterPlan& plan() const { return *plan_; }
+  /// The cells whose matrices and loads this rank assembles (ascending): all cells, or
+  /// in a distributed run its slab (mesh/cell_partition.hpp).
+  const std::vector<Index>& assembled_cells() const { return assembled_cells_; }
+  const Distribution& distribution() const { return settings_.distribution; }
   const DirichletConstraints& constraints() const { return constraints_; }
   Index n_dofs() const { return mesh_.n_nodes() * dim; }
   bool axisymmetric() const { return settings_.symmetry == physics::Symmetry::Axisymmetric; }
@@ -113,6 +121,7 @@ private:
   DiscretisationSettings settings_;
   DirichletConstraints constraints_;
   std::unique_ptr<ScatterPlan> plan_;
+  std::vector<Index> assembled_cells_;
   fem::QuadratureRule<dim> full_rule_, volumetric_rule_;
   fem::QuadratureRule<dim - 1> facet_rule_;
   std::vector<Index> contact_facets_;       ///< Mesh::facets indices of Γ3, in mesh order

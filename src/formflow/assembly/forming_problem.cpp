@@ -48,7 +48,7 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
       discretisation_(std::make_unique<Discretisation<dim>>(
           mesh,
           DiscretisationSettings{settings.symmetry, settings.volumetric_points, settings.contact,
-                                 settings.friction.radius},
+                                 settings.friction.radius, settings.distribution},
           std::move(constraints))) {
   choose_terms();
 }
@@ -167,6 +167,10 @@ Real FormingProblem<dim>::driven_force(const LinearSystem& system, const VectorX
     const Index row = plan().prescribed_index(dof);
     force += reactions[row] - system.prescribed_loads[row];
   }
+  // A distributed run's system holds the rank's own cells: their reactions add up.
+  if (const Distribution& distribution = discretisation_->distribution();
+      distribution.distributed())
+    distribution.sum_over_ranks(std::span<Real>(&force, 1));
   return force;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/assembly/contact_normals.hpp"
+#include "formflow/assembly/distribution.hpp"
 #include "formflow/physics/flow_law.hpp"
 #include "formflow/physics/friction.hpp"
 #include "formflow/physics/process.hpp"
@@ -19,7 +20,8 @@ struct ProblemSettings {
   int volumetric_points = 2; ///< Gauss points per direction of the (1/d) term
   Real initial_rate = 1.0;   ///< ε̄̇ of the constant viscosity that starts the iteration
   physics::Symmetry symmetry = physics::Symmetry::Plane; ///< axisymmetric: dim = 2 only
-  ContactSettings contact; ///< face or nodal contact normals (assembly/contact_normals.hpp)
+  ContactSettings contact;   ///< face or nodal contact normals (assembly/contact_normals.hpp)
+  Distribution distribution; ///< a distributed run: the rank assembles its own cells only
 };
 
 } // namespace formflow::assembly

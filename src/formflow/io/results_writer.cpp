@@ -5,6 +5,7 @@
 #include "formflow/io/csv.hpp"
 #include "formflow/io/plot/pictures.hpp"
 #include "formflow/io/plot/solid_pictures.hpp"
+#include "formflow/io/pvtu.hpp"
 #include "formflow/io/report_html.hpp"
 #include "formflow/io/result_set.hpp"
 #include "formflow/io/vtu.hpp"
@@ -32,6 +33,10 @@ std::span<const std::string> result_file_names() {
     // one is removed from a directory an isothermal run reuses).
     all.push_back("temperature.png");
     all.push_back("temperature.svg");
+    // A distributed run's fields.pvtu and its pieces, one per rank (listed for up to 256
+    // ranks, so that a later run removes the stale ones).
+    all.push_back("fields.pvtu");
+    for (int part = 0; part < 256; ++part) all.push_back(piece_name(part));
     return all;
   }();
   return names;
@@ -47,6 +52,11 @@ void write_results(const std::string& directory, const Case& case_, const mesh::
   files.push_back({"history.csv", history_csv(results.history, results.stop_reason)});
   files.push_back({"contact.csv", contact_csv(results.contact, results.stop_reason, dim)});
   files.push_back({"fields.vtu", fields_vtu(mesh, results.fields, results.stop_reason)});
+  // A distributed run: also the parallel VTU, one piece per rank's slab (every rank
+  // holds the whole velocity in this first slice, so rank 0 writes them all).
+  if (const int ranks = results.linear_algebra.ranks; ranks > 1)
+    for (auto& [name, text] : fields_pvtu(mesh, results.fields, results.stop_reason, ranks))
+      files.push_back({std::move(name), std::move(text)});
   if (is_stop_requested(stop_requested)) throw Stopped("stopped before drawing the pictures");
   // The plane pictures, or a solid run's sections and unrolled die surface.
   std::vector<ReportPicture> report_pictures;

@@ -141,7 +141,8 @@ void point_data_section(Out out, const mesh::Mesh<dim>& mesh, const post::Fields
 }
 
 template <int dim>
-void cell_data_section(Out out, const mesh::Mesh<dim>& mesh, const post::Fields& fields) {
+void cell_data_section(Out out, const mesh::Mesh<dim>& mesh, const post::Fields& fields,
+                       std::span<const Index> cell_ids) {
   fmt::format_to(out, "      <CellData Scalars=\"equivalent_strain_rate\">\n");
   scalar_array(out, "equivalent_strain_rate", fields.cell_equivalent_strain_rate);
   scalar_array(out, "hydrostatic_stress", fields.cell_hydrostatic_stress);
@@ -150,7 +151,8 @@ void cell_data_section(Out out, const mesh::Mesh<dim>& mesh, const post::Fields&
   if (fields.cell_load_error.size() == mesh.n_cells())
     scalar_array(out, "load_error_indicator", fields.cell_load_error);
   fmt::format_to(out, "        <DataArray type=\"Int64\" Name=\"cell_id\" format=\"ascii\">\n");
-  for (Index c = 0; c < mesh.n_cells(); ++c) fmt::format_to(out, "{}{}", separator(c, 10), c);
+  for (Index c = 0; c < mesh.n_cells(); ++c)
+    fmt::format_to(out, "{}{}", separator(c, 10), cell_ids.empty() ? c : cell_ids[c]);
   fmt::format_to(out, "\n        </DataArray>\n      </CellData>\n");
 }
 
@@ -204,7 +206,9 @@ std::span<const int> vtk_node_order(int order, int dim) {
 
 template <int dim>
 std::string fields_vtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
-                       solvers::StopReason stop_reason) {
+                       solvers::StopReason stop_reason, std::span<const Index> cell_ids) {
+  if (!cell_ids.empty() && static_cast<Index>(cell_ids.size()) != mesh.n_cells())
+    throw InternalError("fields.vtu: one cell_id per cell");
   if (mesh.nodes_per_cell() != static_cast<int>(vtk_node_order(mesh.order, dim).size()))
     throw InternalError(fmt::format("fields.vtu: cells do not have (order + 1)^{} nodes", dim));
   check_fields(mesh, fields);
@@ -231,12 +235,14 @@ std::string fields_vtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
   points_section(out, mesh);
   cells_section(out, mesh);
   point_data_section(out, mesh, fields);
-  cell_data_section(out, mesh, fields);
+  cell_data_section(out, mesh, fields, cell_ids);
   fmt::format_to(out, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
   return text;
 }
 
-template std::string fields_vtu<2>(const mesh::Mesh<2>&, const post::Fields&, solvers::StopReason);
-template std::string fields_vtu<3>(const mesh::Mesh<3>&, const post::Fields&, solvers::StopReason);
+template std::string fields_vtu<2>(const mesh::Mesh<2>&, const post::Fields&, solvers::StopReason,
+                                   std::span<const Index>);
+template std::string fields_vtu<3>(const mesh::Mesh<3>&, const post::Fields&, solvers::StopReason,
+                                   std::span<const Index>);
 
 } // namespace formflow::io

@@ -32,8 +32,11 @@ std::span<const int> vtk_node_order(int order, int dim = 2);
 /// a run that stopped for another `stop_reason` also carries an XML comment
 /// `NOT CONVERGED (<stop_reason>)` at the top of the file.
 /// Throws InternalError if a field has the wrong size or a non-finite value.
+/// `cell_ids`: the cell_id written for each cell (a piece of fields.pvtu, io/pvtu.hpp,
+/// gives its cells' ids in the whole mesh); empty: 0, 1, 2, ...
 template <int dim>
 std::string fields_vtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
-                       solvers::StopReason stop_reason = solvers::StopReason::Converged);
+                       solvers::StopReason stop_reason = solvers::StopReason::Converged,
+                       std::span<const Index> cell_ids = {});
 
 } // namespace formflow::io

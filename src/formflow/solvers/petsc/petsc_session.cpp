@@ -81,6 +81,40 @@ int n_ranks() {
   return size;
 }
 
+namespace {
+bool& distributed_flag() {
+  static bool distributed = false;
+  return distributed;
+}
+} // namespace
+
+void set_distributed_systems(bool distributed) {
+  distributed_flag() = distributed;
+}
+
+bool distributed_systems() {
+  return distributed_flag() && n_ranks() > 1;
+}
+
+int rank() {
+  ensure_initialized();
+  PetscMPIInt rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  return rank;
+}
+
+void sum_over_ranks(std::span<double> values) {
+  ensure_initialized();
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
+                PETSC_COMM_WORLD);
+}
+
+int max_over_ranks(int value) {
+  ensure_initialized();
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  return value;
+}
+
 OptionsScope::OptionsScope(const std::string& case_options)
     : case_options_(parse_petsc_options(case_options)) {
   ensure_initialized();

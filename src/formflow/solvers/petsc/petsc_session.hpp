@@ -7,6 +7,7 @@
 
 #include <petscsys.h>
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,17 @@ const std::vector<PetscOption>& command_line_options();
 
 /// The MPI ranks of PETSC_COMM_WORLD.
 int n_ranks();
+/// Whether the linear systems are the ranks' shares of one distributed system (set by
+/// app/main.cpp for a distributed run). False by default: a program started by mpirun
+/// without saying so (a test binary, Python) solves on every rank alone, serially.
+void set_distributed_systems(bool distributed);
+bool distributed_systems();
+/// This process's rank in PETSC_COMM_WORLD.
+int rank();
+/// Every entry of `values` replaced by its sum over the ranks (collective).
+void sum_over_ranks(std::span<double> values);
+/// The largest of `value` over the ranks (collective): the exit code they agree on.
+int max_over_ranks(int value);
 
 /// solver.petsc_options in the options database while a solver lives: inserted,
 /// then the command line's options inserted again over them (the command line wins);

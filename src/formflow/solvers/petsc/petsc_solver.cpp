@@ -24,7 +24,7 @@ constexpr const char* options_key = "solver.petsc_options";
 class PetscSolver final : public LinearSolver {
 public:
   PetscSolver(MatrixStorage storage, const std::string& options)
-      : storage_(storage), options_(options) {}
+      : storage_(storage), options_(options), distributed_(petsc::distributed_systems()) {}
   ~PetscSolver() override {
     if (ksp_) KSPDestroy(&ksp_);
     for (IS& field : fields_)
@@ -32,6 +32,8 @@ public:
     if (matrix_) MatDestroy(&matrix_);
     if (rhs_) VecDestroy(&rhs_);
     if (solution_) VecDestroy(&solution_);
+    if (to_all_) VecScatterDestroy(&to_all_);
+    if (all_) VecDestroy(&all_);
   }
   PetscSolver(const PetscSolver&) = delete;
   PetscSolver& operator=(const PetscSolver&) = delete;
@@ -73,10 +75,20 @@ public:
     if (!ksp_) return false;
     petsc::ErrorCapture capture;
     const auto n = static_cast<PetscInt>(rhs.size());
-    PetscScalar* values = nullptr;
-    VecGetArray(rhs_, &values);
-    std::copy(rhs.data(), rhs.data() + n, values);
-    VecRestoreArray(rhs_, &values);
+    if (distributed_) {
+      // The rank's rhs is its own cells' loads: PETSc's stash sends each entry to the
+      // rank that owns its row, where they add up.
+      VecSet(rhs_, 0.0);
+      for (PetscInt i = 0; i < n; ++i)
+        if (rhs[i] != 0.0) VecSetValue(rhs_, petsc_index_[i], rhs[i], ADD_VALUES);
+      VecAssemblyBegin(rhs_);
+      VecAssemblyEnd(rhs_);
+    } else {
+      PetscScalar* values = nullptr;
+      VecGetArray(rhs_, &values);
+      std::copy(rhs.data(), rhs.data() + n, values);
+      VecRestoreArray(rhs_, &values);
+    }
     if (KSPSolve(ksp_, rhs_, solution_) != 0) return false;
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
     KSPGetConvergedReason(ksp_, &reason);
@@ -86,6 +98,17 @@ public:
     if (reason < 0) return false;
     const PetscScalar* result = nullptr;
     solution.resize(n);
+    if (distributed_) {
+      // First slice of issue 20: every rank gets the whole solution (the nonlocal
+      // friction average and the post-processing read any dof); a ghosted vector of
+      // the own cells' dofs is the design beyond it (docs/petsc.md).
+      VecScatterBegin(to_all_, solution_, all_, INSERT_VALUES, SCATTER_FORWARD);
+      VecScatterEnd(to_all_, solution_, all_, INSERT_VALUES, SCATTER_FORWARD);
+      VecGetArrayRead(all_, &result);
+      for (PetscInt i = 0; i < n; ++i) solution[i] = result[petsc_index_[i]];
+      VecRestoreArrayRead(all_, &result);
+      return true;
+    }
     VecGetArrayRead(solution_, &result);
     std::copy(result, result + n, solution.data());
     VecRestoreArrayRead(solution_, &result);
@@ -113,7 +136,7 @@ public:
 private:
   /// The KSP with formflow's defaults, then the options database over them.
   bool make_ksp(petsc::ErrorCapture& capture) {
-    if (KSPCreate(PETSC_COMM_SELF, &ksp_) != 0) return false;
+    if (KSPCreate(distributed_ ? PETSC_COMM_WORLD : PETSC_COMM_SELF, &ksp_) != 0) return false;
     PC preconditioner = nullptr;
     KSPGetPC(ksp_, &preconditioner);
     KSPSetType(ksp_, KSPPREONLY);
@@ -188,6 +211,10 @@ private:
   /// Copies `matrix` (its lower triangle for SymmetricLower) into the AIJ matrix,
   /// made on the first call and rebuilt only if the pattern changes.
   void copy(const assembly::SparseMatrix& matrix) {
+    if (distributed_) {
+      copy_distributed(matrix);
+      return;
+    }
     RowMatrix rows;
     if (storage_ == MatrixStorage::SymmetricLower) {
       const assembly::SparseMatrix strict = matrix.triangularView<Eigen::StrictlyLower>();
@@ -232,6 +259,87 @@ private:
     MatCreateVecs(matrix_, &solution_, &rhs_);
   }
 
+  /// A distributed run (issue 20; app/main.cpp said so, and PETSC_COMM_WORLD has more
+  /// than one rank): `matrix` is this rank's share, the entries of its own
+  /// cells (assembly/discretisation.hpp) in the global free numbering; the ranks' shares
+  /// add up to the system. The first call numbers the free dofs so that each rank owns a
+  /// contiguous range (a dof belongs to the lowest rank whose cells touch it, i.e. whose
+  /// share has its diagonal) and preallocates the MPIAIJ matrix from every rank's
+  /// entries (MatSetPreallocationCOO: off-rank rows go to their owners); every call then
+  /// hands the values over with MatSetValuesCOO, which sums the ranks' duplicates. No
+  /// rank holds more than its share and its own rows.
+  void copy_distributed(const assembly::SparseMatrix& matrix) {
+    const auto n = static_cast<PetscInt>(matrix.rows());
+    const bool symmetric_lower = storage_ == MatrixStorage::SymmetricLower;
+    const bool same_pattern =
+        matrix_ && pattern_outer_.size() == static_cast<std::size_t>(n + 1) &&
+        std::equal(pattern_outer_.begin(), pattern_outer_.end(), matrix.outerIndexPtr()) &&
+        pattern_inner_.size() == static_cast<std::size_t>(matrix.nonZeros()) &&
+        std::equal(pattern_inner_.begin(), pattern_inner_.end(), matrix.innerIndexPtr());
+    int rebuild = same_pattern ? 0 : 1;
+    MPI_Allreduce(MPI_IN_PLACE, &rebuild, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+    if (rebuild) {
+      if (matrix_) MatDestroy(&matrix_);
+      if (rhs_) VecDestroy(&rhs_);
+      if (solution_) VecDestroy(&solution_);
+      if (to_all_) VecScatterDestroy(&to_all_);
+      if (all_) VecDestroy(&all_);
+      pattern_outer_.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + n + 1);
+      pattern_inner_.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
+      PetscMPIInt rank = 0, size = 1;
+      MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+      MPI_Comm_size(PETSC_COMM_WORLD, &size);
+      // Owner of dof i: the lowest rank whose share has the diagonal entry (i, i).
+      std::vector<int> owner(static_cast<std::size_t>(n), size);
+      for (PetscInt column = 0; column < n; ++column)
+        for (auto k = pattern_outer_[column]; k < pattern_outer_[column + 1]; ++k)
+          if (pattern_inner_[k] == column) owner[column] = rank;
+      MPI_Allreduce(MPI_IN_PLACE, owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN,
+                    PETSC_COMM_WORLD);
+      std::vector<PetscInt> first(static_cast<std::size_t>(size) + 1, 0);
+      for (const int o : owner) {
+        FF_ASSERT(o < size, "every free dof is a dof of some rank's cells");
+        ++first[o + 1];
+      }
+      for (int r = 0; r < size; ++r) first[r + 1] += first[r];
+      std::vector<PetscInt> next(first.begin(), first.end() - 1);
+      petsc_index_.resize(static_cast<std::size_t>(n));
+      for (PetscInt i = 0; i < n; ++i) petsc_index_[i] = next[owner[i]]++;
+      // The COO entries of this share: both triangles of the symmetric matrix.
+      std::vector<PetscInt> rows, columns;
+      coo_source_.clear();
+      for (PetscInt column = 0; column < n; ++column)
+        for (auto k = pattern_outer_[column]; k < pattern_outer_[column + 1]; ++k) {
+          const PetscInt row = pattern_inner_[k];
+          rows.push_back(petsc_index_[row]);
+          columns.push_back(petsc_index_[column]);
+          coo_source_.push_back(k);
+          if (symmetric_lower && row != column) {
+            rows.push_back(petsc_index_[column]);
+            columns.push_back(petsc_index_[row]);
+            coo_source_.push_back(k);
+          }
+        }
+      const PetscInt owned = first[rank + 1] - first[rank];
+      if (MatCreate(PETSC_COMM_WORLD, &matrix_) != 0 ||
+          MatSetSizes(matrix_, owned, owned, n, n) != 0 || MatSetType(matrix_, MATMPIAIJ) != 0 ||
+          MatSetPreallocationCOO(matrix_, static_cast<PetscCount>(rows.size()), rows.data(),
+                                 columns.data()) != 0) {
+        if (matrix_) MatDestroy(&matrix_);
+        return;
+      }
+      if (symmetric_lower) {
+        MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE);
+        MatSetOption(matrix_, MAT_SPD, PETSC_TRUE);
+      }
+      MatCreateVecs(matrix_, &solution_, &rhs_);
+      VecScatterCreateToAll(solution_, &to_all_, &all_);
+    }
+    std::vector<PetscScalar> values(coo_source_.size());
+    for (std::size_t s = 0; s < values.size(); ++s) values[s] = matrix.valuePtr()[coo_source_[s]];
+    if (MatSetValuesCOO(matrix_, values.data(), INSERT_VALUES) != 0) MatDestroy(&matrix_);
+  }
+
   /// Options that nothing read by the first factorisation: the case's blamed on
   /// solver.petsc_options, the command line's on themselves.
   static void refuse_unused(const petsc::OptionsScope::Unused& unused) {
@@ -265,6 +373,11 @@ private:
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
   std::vector<PetscInt> pattern_outer_, pattern_inner_;
+  bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
+  std::vector<PetscInt> petsc_index_; ///< distributed: free dof → PETSc's row
+  std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
+  VecScatter to_all_ = nullptr;       ///< distributed: the solution to every rank
+  Vec all_ = nullptr;
   Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)
   std::vector<VectorX> near_null_space_; ///< the velocity block's rigid-body modes
   IS fields_[2] = {nullptr, nullptr};    ///< fieldsplit's "u" and "p"

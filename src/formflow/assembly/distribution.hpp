@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// A distributed run as the assembly sees it (issue 20, docs/petsc.md): which rank
+// this is, how many there are, and how to sum numbers over them. The assembly layer
+// knows no MPI; the app hands it the sum (solvers/petsc/petsc_session.hpp).
+#pragma once
+
+#include "formflow/core/types.hpp"
+
+#include <functional>
+#include <span>
+
+namespace formflow::assembly {
+
+struct Distribution {
+  int rank = 0;
+  int size = 1;
+  /// Replaces every entry by its sum over the ranks (MPI_Allreduce); collective.
+  std::function<void(std::span<Real>)> sum_over_ranks;
+  bool distributed() const { return size > 1; }
+};
+
+} // namespace formflow::assembly

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: MIT
+// Distributed runs (issue 20, docs/petsc.md): `mpirun -np N formflow run` with each
+// rank assembling its own slab of cells into one MPIAIJ matrix gives the serial
+// CHOLMOD ram reaction, for the paper's 2D case and a 3D round quarter, penalty and
+// condensed mixed, with friction; rank 0 alone writes and speaks; bad input is one
+// message and exit 2 on every rank.
+#include "formflow/app/simulation.hpp"
+#include "formflow/io/case.hpp"
+#include "support/approx.hpp"
+#include "support/run_cli.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace formflow {
+namespace {
+
+using testing::quoted;
+
+/// One distributed case: the case path ("" for the paper's) and its edits.
+struct DistributedCase {
+  std::string name;
+  std::string case_path;
+  std::vector<io::Override> edits;
+  Real delta; ///< solver.tolerance
+};
+
+/// gtest's name of a parameter (its bytes otherwise).
+void PrintTo(const DistributedCase& c, std::ostream* out) {
+  *out << c.name;
+}
+
+std::vector<io::Override> all_edits(const DistributedCase& c) {
+  std::vector<io::Override> edits = c.edits;
+  // The distributed slice runs the paper's secant iteration (docs/petsc.md).
+  edits.emplace_back("solver.method", "secant");
+  edits.emplace_back("solver.tolerance", fmt::format("{}", c.delta));
+  return edits;
+}
+
+/// `mpirun -np ranks formflow run` of the case with PETSc; its exit code, and its
+/// summary.json (null when none was written) and stderr.
+struct MpiRun {
+  int exit_code = -1;
+  nlohmann::json summary;
+  std::string err;
+};
+
+MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirectory& scratch,
+               const std::string& extra = {}) {
+  // OpenMPI's ranks wait for each other by spinning unless told to yield: on a machine
+  // with fewer free cores than ranks (oversubscribed, or shared) that turns every
+  // message into a time slice. Yielding changes no number, only the wall time. In a
+  // container without ptrace rights OpenMPI's shared-memory single copy (CMA) fails:
+  // plain copies instead, as OpenMPI's own FAQ advises.
+  std::string command = "OMPI_MCA_mpi_yield_when_idle=1 "
+                        "OMPI_MCA_btl_vader_single_copy_mechanism=none " +
+                        quoted(FORMFLOW_MPIEXEC) + " -n " + std::to_string(ranks) +
+                        " --oversubscribe --allow-run-as-root " + quoted(FORMFLOW_BINARY) +
+                        " run -q -o " + quoted((scratch / "results").string());
+  if (!c.case_path.empty())
+    command += " " + quoted(std::string(FORMFLOW_SOURCE_DIR) + "/" + c.case_path);
+  for (const auto& [key, value] : all_edits(c)) command += " --set " + quoted(key + "=" + value);
+  command += " --set solver.linear=petsc " + extra + " > " +
+             quoted((scratch / "out.txt").string()) + " 2> " +
+             quoted((scratch / "err.txt").string());
+  const int status = std::system(command.c_str());
+  MpiRun run;
+  if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
+  run.err = testing::read_text(scratch / "err.txt");
+  const auto summary = scratch / "results" / "summary.json";
+  if (std::filesystem::exists(summary))
+    run.summary = nlohmann::json::parse(testing::read_text(summary));
+  return run;
+}
+
+/// How far the distributed run's reaction may be from CHOLMOD's (relative), the
+/// derivation of tests/petsc/test_petsc_solver.cpp: the same iteration with two
+/// backward-stable direct solvers (CHOLMOD; MUMPS on the distributed matrix, whose
+/// sums over ranks only reorder the additions of the serial assembly, a relative
+/// perturbation of the matrix of a few ε), each solve's forward error at most κ ε,
+/// not accumulating beyond 1/(1 − ρ) ≤ 10 in a loop that contracts by ρ ≤ 0.9, and
+/// each run stopping within its own δ-sized last change, bounded by the same factor.
+Real direct_agreement(Real delta, Real reciprocal_condition) {
+  constexpr Real epsilon = std::numeric_limits<Real>::epsilon();
+  return 10 * (delta + epsilon / reciprocal_condition);
+}
+
+class DistributedMatchesCholmod : public ::testing::TestWithParam<std::pair<DistributedCase, int>> {
+};
+
+TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
+  const auto& [c, ranks] = GetParam();
+  const app::Simulation serial = app::simulate(
+      io::load_case(c.case_path.empty() ? std::string()
+                                        : std::string(FORMFLOW_SOURCE_DIR) + "/" + c.case_path,
+                    all_edits(c)),
+      {}, /*estimate_condition=*/true);
+  ASSERT_TRUE(serial.results.converged());
+  ASSERT_TRUE(serial.reciprocal_condition.has_value());
+  testing::ScratchDirectory scratch("formflow-mpi");
+  const MpiRun run = run_mpi(c, ranks, scratch);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ASSERT_FALSE(run.summary.is_null()) << "rank 0 wrote no summary.json";
+  const Real reaction = run.summary.at("pressure").at("ram_reaction").get<Real>();
+  const Real reference = serial.results.pressure.ram_reaction;
+  const Real tolerance = direct_agreement(c.delta, *serial.reciprocal_condition);
+  std::cout << c.name << " np " << ranks << ": rcond " << *serial.reciprocal_condition
+            << " tolerance " << tolerance << " difference "
+            << std::abs(reaction - reference) / std::abs(reference) << "\n";
+  EXPECT_TRUE(testing::approx(reaction, reference, tolerance));
+  EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
+  // The fields once as fields.vtu, and as fields.pvtu with one piece per rank.
+  const auto results = scratch / "results";
+  EXPECT_TRUE(std::filesystem::exists(results / "fields.vtu"));
+  EXPECT_TRUE(std::filesystem::exists(results / "fields.pvtu"));
+  for (int rank = 0; rank <= ranks; ++rank)
+    EXPECT_EQ(std::filesystem::exists(results / ("fields_" + std::to_string(rank) + ".vtu")),
+              rank < ranks)
+        << rank;
+  EXPECT_EQ(run.summary.at("method"), serial.results.method);
+  // -q: formflow has nothing to say, from any rank (the launcher may: not checked).
+  EXPECT_EQ(run.err.find("error:"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("formflow:"), std::string::npos) << run.err;
+}
+
+const DistributedCase paper_penalty{
+    "paper_penalty", "", {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}}, 1e-7};
+const DistributedCase paper_mixed{"paper_condensed_mixed",
+                                  "",
+                                  {{"mesh.size", "2.5"},
+                                   {"friction.mu", "0.1"},
+                                   {"formulation.type", "mixed"},
+                                   {"formulation.pressure", "P1disc"}},
+                                  1e-7};
+const DistributedCase round_penalty{
+    "round_quarter_penalty", "cases/round-rod-3d.toml", {{"mesh.size", "0.5"}}, 1e-7};
+const DistributedCase round_mixed{
+    "round_quarter_condensed_mixed",
+    "cases/round-rod-3d.toml",
+    {{"mesh.size", "0.5"}, {"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}},
+    1e-7};
+
+INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
+                         ::testing::Values(std::pair(paper_penalty, 2), std::pair(paper_mixed, 2),
+                                           std::pair(round_penalty, 2), std::pair(round_mixed, 2),
+                                           std::pair(paper_penalty, 4)),
+                         [](const auto& info) {
+                           return info.param.first.name + "_np" + std::to_string(info.param.second);
+                         });
+
+/// Bad input on two ranks: refused before the solve, once (rank 0's message), exit 2
+/// from every rank, nothing written.
+void expect_refused_once(const MpiRun& run, const std::string& message,
+                         const testing::ScratchDirectory& scratch) {
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  const auto first = run.err.find(message);
+  ASSERT_NE(first, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find(message, first + 1), std::string::npos) << "said more than once:\n"
+                                                                 << run.err;
+  EXPECT_FALSE(std::filesystem::exists(scratch / "results"));
+}
+
+TEST(DistributedRun, ABadValueIsOneMessageAndExitTwo) {
+  testing::ScratchDirectory scratch("formflow-mpi");
+  DistributedCase bad = paper_penalty;
+  bad.edits.emplace_back("friction.mu", "-1");
+  expect_refused_once(run_mpi(bad, 2, scratch), "friction.mu", scratch);
+}
+
+TEST(DistributedRun, ASerialOnlySolverIsRefusedNamingTheKey) {
+  testing::ScratchDirectory scratch("formflow-mpi");
+  // The later --set wins: CHOLMOD has no distributed matrix.
+  expect_refused_once(run_mpi(paper_penalty, 2, scratch, "--set solver.linear=cholmod"),
+                      "solver.linear: on 2 MPI ranks", scratch);
+}
+
+TEST(DistributedRun, NewtonIsRefusedNamingTheKey) {
+  testing::ScratchDirectory scratch("formflow-mpi");
+  expect_refused_once(run_mpi(paper_penalty, 2, scratch, "--set solver.method=newton"),
+                      "solver.method: on 2 MPI ranks", scratch);
+}
+
+} // namespace
+} // namespace formflow

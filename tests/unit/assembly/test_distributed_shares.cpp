@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// A distributed run's assembly without MPI (issue 20, docs/petsc.md): the ranks'
+// shares of the secant system (each rank's own cells, volume and Γ3 friction terms)
+// add up to the serial system, each share holds only its cells' entries, and the
+// slab partition gives every cell to exactly one rank.
+#include "formflow/assembly/forming_problem.hpp"
+#include "formflow/fem/dof_map.hpp"
+#include "formflow/mesh/cell_partition.hpp"
+#include "formflow/mesh/channel_mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace formflow::assembly {
+namespace {
+
+mesh::Mesh<2> channel() {
+  const mesh::ChannelGeometry geometry{2.0, 2.0, 1.0, 2.0}; // L_c, H_in, H_out, L_e
+  return mesh::make_channel_mesh(geometry, 0.5, 2);
+}
+
+ProblemSettings settings(Distribution distribution = {}) {
+  ProblemSettings settings;
+  settings.penalty.d = 1e-3;
+  settings.friction.mu = 0.1; // the Γ3 friction terms of the own cells' faces
+  settings.distribution = std::move(distribution);
+  return settings;
+}
+
+/// A non-uniform velocity, so that viscosities and slips vary from cell to cell.
+VectorX lagged_velocity(const mesh::Mesh<2>& mesh) {
+  VectorX w(mesh.n_nodes() * 2);
+  for (Index node = 0; node < mesh.n_nodes(); ++node) {
+    const Real x = mesh.nodes(0, node), y = mesh.nodes(1, node);
+    w[fem::dof_of<2>(node, 0)] = 1.0 + 0.3 * std::sin(x) * y;
+    w[fem::dof_of<2>(node, 1)] = 0.2 * x * y - 0.1 * y * y;
+  }
+  return w;
+}
+
+TEST(SlabPartition, EveryCellInOnePartEqualSizesOrderedAlongX) {
+  const mesh::Mesh<2> mesh = channel();
+  for (int parts : {1, 2, 3, 7}) {
+    const std::vector<int> part = mesh::slab_partition(mesh, parts);
+    ASSERT_EQ(static_cast<Index>(part.size()), mesh.n_cells());
+    std::vector<Index> count(parts, 0);
+    std::vector<Real> lowest(parts, std::numeric_limits<Real>::infinity());
+    std::vector<Real> highest(parts, -std::numeric_limits<Real>::infinity());
+    for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+      ASSERT_GE(part[cell], 0);
+      ASSERT_LT(part[cell], parts);
+      ++count[part[cell]];
+      Real x = 0;
+      for (Index a = 0; a < mesh.cells.rows(); ++a) x += mesh.nodes(0, mesh.cells(a, cell));
+      x /= static_cast<Real>(mesh.cells.rows());
+      lowest[part[cell]] = std::min(lowest[part[cell]], x);
+      highest[part[cell]] = std::max(highest[part[cell]], x);
+    }
+    const auto [smallest, largest] = std::minmax_element(count.begin(), count.end());
+    EXPECT_LE(*largest - *smallest, 1) << parts << " parts";
+    for (int r = 0; r + 1 < parts; ++r) EXPECT_LE(highest[r], lowest[r + 1]) << "slab " << r;
+  }
+}
+
+TEST(DistributedShares, AddUpToTheSerialSystemAndHoldOnlyTheirCells) {
+  const mesh::Mesh<2> mesh = channel();
+  const FormingProblem<2> serial(mesh, settings());
+  const VectorX w = lagged_velocity(mesh);
+  LinearSystem whole = serial.plan().make_system();
+  serial.assemble(&w, whole);
+  ASSERT_GT(serial.n_contact_points(), 0);
+
+  for (int ranks : {2, 3}) {
+    MatrixX sum = MatrixX::Zero(whole.matrix.rows(), whole.matrix.cols());
+    MatrixX magnitude = sum; // Σ_r |K_r|, for the round-off bounds below
+    VectorX rhs = VectorX::Zero(whole.rhs.size()), rhs_magnitude = rhs;
+    MatrixX reactions = MatrixX::Zero(whole.reaction_rows.rows(), whole.reaction_rows.cols());
+    MatrixX reaction_magnitude = reactions;
+    Real force = 0, force_magnitude = 0; // Σ_r f_r and Σ of |its terms|
+    Index force_terms = 0;
+    std::vector<int> owner(mesh.n_cells(), -1);
+    for (int rank = 0; rank < ranks; ++rank) {
+      // One process plays every rank: the sum over ranks is the caller's here (a no-op).
+      Distribution distribution{rank, ranks, [](std::span<Real>) {}};
+      const FormingProblem<2> share_problem(mesh, settings(distribution));
+      for (const Index cell : share_problem.discretisation().assembled_cells()) {
+        EXPECT_EQ(owner[cell], -1) << "cell " << cell << " assembled twice";
+        owner[cell] = rank;
+      }
+      LinearSystem share = share_problem.plan().make_system();
+      share_problem.assemble(&w, share);
+      // The share's pattern is its cells' entries only: less than the whole.
+      EXPECT_LT(share.matrix.nonZeros(), whole.matrix.nonZeros());
+      sum += MatrixX(share.matrix);
+      magnitude += MatrixX(share.matrix).cwiseAbs();
+      rhs += share.rhs;
+      rhs_magnitude += share.rhs.cwiseAbs();
+      reactions += MatrixX(share.reaction_rows);
+      reaction_magnitude += MatrixX(share.reaction_rows).cwiseAbs();
+      force += share_problem.driven_force(share, w);
+      for (const Index dof : serial.constraints().driven_dofs) {
+        const Index row = serial.plan().prescribed_index(dof);
+        const MatrixX dense_row = MatrixX(share.reaction_rows).row(row);
+        force_magnitude +=
+            (dense_row.cwiseAbs() * w.cwiseAbs()).sum() + std::abs(share.prescribed_loads[row]);
+        force_terms += share.reaction_rows.cols() + 1;
+      }
+    }
+    EXPECT_EQ(std::count(owner.begin(), owner.end(), -1), 0) << "a cell no rank assembled";
+    // Each entry is a sum over the (at most 4) cells of a 2D quadrilateral mesh that
+    // share a node, each cell's part itself a sum of quadrature and face terms. The
+    // ranks add the same cell parts in another order, which moves a sum of m ≤ 4 terms
+    // by at most (m − 1) ε Σ|terms| ≤ 3 ε Σ|terms|, and Σ|terms| ≤ Σ_r |K_r| only up
+    // to the cancellation inside a rank's share; twice that, 6 ε Σ_r |K_r|, is the bound
+    // (the same for the rhs and the reaction rows).
+    constexpr Real epsilon = std::numeric_limits<Real>::epsilon();
+    constexpr Real tiny = std::numeric_limits<Real>::min();
+    const auto within = [&](const MatrixX& a, const MatrixX& b, const MatrixX& size) {
+      return ((a - b).cwiseAbs().array() <= 6 * epsilon * size.array() + tiny).all();
+    };
+    EXPECT_TRUE(within(sum, MatrixX(whole.matrix), magnitude)) << ranks << " ranks";
+    EXPECT_TRUE(within(rhs, whole.rhs, rhs_magnitude)) << ranks << " ranks";
+    EXPECT_TRUE(within(reactions, MatrixX(whole.reaction_rows), reaction_magnitude))
+        << ranks << " ranks";
+    // The process force is a sum of M terms (reaction entries times u, loads) taken in
+    // two orders: at most 2 M ε Σ|terms| apart (the rows' own 6 ε is below that).
+    const Real serial_force = serial.driven_force(whole, w);
+    EXPECT_NEAR(force, serial_force,
+                2 * static_cast<Real>(force_terms) * epsilon * force_magnitude);
+  }
+}
+
+} // namespace
+} // namespace formflow::assembly
