@@ -100,20 +100,23 @@ INSTANTIATE_TEST_SUITE_P(
 /// A round billet through the square die (mesh/round_square_die_mesh.hpp):
 /// {L_c = 1, R = 1, H_out = 0.5, L_e = 1}, exit 0.5 × 0.5 (W_out = 0.5) at h = 0.25:
 /// the flat die face is the quarter disk minus the exit square, meeting the
-/// cylinder and the product's sides at right angles (64 hexahedra).
-io::Case round_square_case(fem::ElementKind element, assembly::ContactNormals normals) {
-  RectangleCase base{element, mesh::DieShape::Square, FrictionRegularization::Regularized, normals};
+/// cylinder and the product's sides at right angles (64 hexahedra); μ = 0.1,
+/// nonlocal radius 0.3, δ = 1e-8 as the bar's.
+io::Case round_square_case(fem::ElementKind element, assembly::ContactNormals normals,
+                           FrictionRegularization regularization) {
+  RectangleCase base{element, mesh::DieShape::Square, regularization, normals};
   io::Case case_ = rectangle_case(base);
   case_.mesh.solid.section = mesh::ChannelSection::Round;
   return case_;
 }
 
 class RoundBilletSquareDie
-    : public ::testing::TestWithParam<std::tuple<fem::ElementKind, assembly::ContactNormals>> {};
+    : public ::testing::TestWithParam<
+          std::tuple<fem::ElementKind, assembly::ContactNormals, FrictionRegularization>> {};
 
 TEST_P(RoundBilletSquareDie, NewtonConvergesAndTheReactionEqualsTheTotalPower) {
-  const auto [element, normals] = GetParam();
-  const app::Simulation run = app::simulate(round_square_case(element, normals));
+  const auto [element, normals, regularization] = GetParam();
+  const app::Simulation run = app::simulate(round_square_case(element, normals, regularization));
   ASSERT_EQ(run.dimension(), 3);
   const post::Results& results = run.results;
   ASSERT_TRUE(results.converged()) << solvers::stop_reason_name(results.stop_reason);
@@ -131,13 +134,19 @@ TEST_P(RoundBilletSquareDie, NewtonConvergesAndTheReactionEqualsTheTotalPower) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, RoundBilletSquareDie,
-    ::testing::Values(std::make_tuple(fem::ElementKind::Q1, assembly::ContactNormals::Faces),
-                      std::make_tuple(fem::ElementKind::Q1, assembly::ContactNormals::Nodes),
-                      std::make_tuple(fem::ElementKind::Q2, assembly::ContactNormals::Nodes)),
+    ::testing::Values(std::make_tuple(fem::ElementKind::Q1, assembly::ContactNormals::Faces,
+                                      FrictionRegularization::Regularized),
+                      std::make_tuple(fem::ElementKind::Q1, assembly::ContactNormals::Nodes,
+                                      FrictionRegularization::Regularized),
+                      std::make_tuple(fem::ElementKind::Q1, assembly::ContactNormals::Nodes,
+                                      FrictionRegularization::None),
+                      std::make_tuple(fem::ElementKind::Q2, assembly::ContactNormals::Nodes,
+                                      FrictionRegularization::Regularized)),
     [](const auto& info) {
       return std::string(std::get<0>(info.param) == fem::ElementKind::Q1 ? "Q1" : "Q2") +
              (std::get<1>(info.param) == assembly::ContactNormals::Faces ? "FaceNormals"
-                                                                         : "NodalNormals");
+                                                                         : "NodalNormals") +
+             (std::get<2>(info.param) == FrictionRegularization::None ? "Exact" : "Regularized");
     });
 
 } // namespace
