@@ -65,7 +65,8 @@ const BadCase bad_cases[] = {
     {"die-profile-wrong-end.toml", 4, "geometry.die_profile", "end the profile at y = "},
     {"die-land-unfit.toml", 4, "geometry.land_length", "not a multiple of mesh.size"},
     // Solid (3D) channels: what does not run yet (io/case_validation_3d.cpp).
-    {"solid-round-square-die.toml", 5, "geometry.section", "use geometry.die = \"wedge\""},
+    {"solid-round-square-die.toml", 6, "geometry.exit_half_width",
+     "the square die's exit must lie inside the round container"},
     {"solid-rectangle-unfit-width.toml", 5, "geometry.entry_half_width",
      "half widths are cut into cells of mesh.size"},
     {"solid-axisymmetric.toml", 4, "geometry.symmetry", "geometry.symmetry = \"plane\" in 3D"},

@@ -5,8 +5,10 @@
 #include "formflow/io/case_keys.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/gmsh_solid_channel.hpp"
+#include "formflow/mesh/round_square_die_mesh.hpp"
 
 #include <array>
+#include <cmath>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -36,6 +38,8 @@ std::optional<KeyRefusal> unused_solid_key(const Case& case_,
                       "out"};
   const bool slab = solid && section == ChannelSection::Slab;
   const bool rectangle = solid && section == ChannelSection::Rectangle;
+  const bool round_square = solid && section == ChannelSection::Round &&
+                            case_.mesh.geometry.die == mesh::DieShape::Square;
   struct Use {
     const char* key;
     bool used;
@@ -43,7 +47,9 @@ std::optional<KeyRefusal> unused_solid_key(const Case& case_,
   };
   const std::array<Use, 3> uses = {{{"geometry.thickness", slab, "\"slab\""},
                                     {"geometry.entry_half_width", rectangle, "\"rectangle\""},
-                                    {"geometry.exit_half_width", rectangle, "\"rectangle\""}}};
+                                    {"geometry.exit_half_width", rectangle || round_square,
+                                     "\"rectangle\" (or \"round\" with geometry.die = "
+                                     "\"square\")"}}};
   for (const Use& use : uses)
     if (!use.used && changed(use.key))
       return KeyRefusal{
@@ -57,13 +63,6 @@ std::optional<KeyRefusal> unused_solid_key(const Case& case_,
 /// What a solid case asks that the solid run does not do yet.
 std::optional<KeyRefusal> unsupported_in_3d(const Case& case_) {
   if (case_.mesh.dimension != 3) return std::nullopt;
-  if (case_.mesh.solid.section == ChannelSection::Round &&
-      case_.mesh.geometry.die == mesh::DieShape::Square)
-    return KeyRefusal{{"geometry.die", "geometry.section"},
-                      "a round billet through a square die (an annular die face) is not "
-                      "implemented yet: the round section runs with the revolved dies (why: "
-                      "docs/3d.md)",
-                      "use geometry.die = \"wedge\" (a conical die), \"arc\" or \"polyline\""};
   if (case_.symmetry == physics::Symmetry::Axisymmetric)
     return KeyRefusal{{"geometry.symmetry", "geometry.dimension"},
                       "the axisymmetric model is two-dimensional (y = r in the meridian plane)",
@@ -111,13 +110,46 @@ std::optional<KeyRefusal> rectangle_problem(const Case& case_) {
   return std::nullopt;
 }
 
+/// A round billet through the square die: the exit rectangle H_out × W_out is the
+/// O-grid's core, so it must fit inside the container's circle with half a cell
+/// to spare at its corner, and mesh.size must fit both its half sides
+/// (mesh/round_square_die_mesh.hpp).
+std::optional<KeyRefusal> round_square_problem(const Case& case_) {
+  if (case_.mesh.dimension != 3 || case_.mesh.solid.section != ChannelSection::Round ||
+      case_.mesh.geometry.die != mesh::DieShape::Square ||
+      case_.mesh.source != mesh::MeshSource::Structured) // a file's mesh has its own section
+    return std::nullopt;
+  const mesh::ChannelGeometry& geometry = case_.mesh.geometry;
+  const mesh::SolidChannel& solid = case_.mesh.solid;
+  const Real size = case_.mesh.size;
+  if (!mesh::round_square_exit_fits(geometry, solid, size))
+    return KeyRefusal{
+        {"geometry.exit_half_width", "geometry.exit_half_height", "geometry.entry_half_height"},
+        fmt::format("the exit's corner ({}, {}) is at radius {:.6g}, not inside the billet's "
+                    "radius {} by half a cell (mesh.size / 2 = {})",
+                    geometry.exit_half_height, solid.exit_half_width,
+                    std::hypot(geometry.exit_half_height, solid.exit_half_width),
+                    geometry.entry_half_height, 0.5 * size),
+        "the square die's exit must lie inside the round container: make "
+        "√(exit_half_height² + exit_half_width²) ≤ entry_half_height − mesh.size/2"};
+  if (mesh::cells_along(solid.exit_half_width, size) <= 0)
+    return KeyRefusal{{"geometry.exit_half_width", "mesh.size"},
+                      fmt::format("the half width {} is not a multiple of mesh.size = {} "
+                                  "({:.6g} cells)",
+                                  solid.exit_half_width, size, solid.exit_half_width / size),
+                      "the square die's exit rectangle is cut into cells of mesh.size: make "
+                      "geometry.exit_half_width a multiple of it"};
+  return std::nullopt;
+}
+
 } // namespace
 
 std::optional<KeyRefusal>
 solid_case_problem(const Case& case_, const std::function<bool(const std::string&)>& is_set) {
   if (auto refusal = unused_solid_key(case_, is_set)) return refusal;
   if (auto refusal = unsupported_in_3d(case_)) return refusal;
-  return rectangle_problem(case_);
+  if (auto refusal = rectangle_problem(case_)) return refusal;
+  return round_square_problem(case_);
 }
 
 } // namespace formflow::io

@@ -21,8 +21,9 @@ struct KeyRefusal {
 /// Why `case_` cannot run as its geometry.dimension asks: a solid-channel key
 /// (geometry.section, .thickness, .entry_half_width, .exit_half_width) set to a
 /// value other than its default where it has no effect, or a three-dimensional case with what 3D
-/// does not run yet (a round billet through the square die, Gmsh and .msh meshes, the axisymmetric
-/// model), or a rectangle whose half widths do not fit. `is_set(name)` tells whether the user gave
+/// does not run yet (Gmsh meshes of some sections, the axisymmetric model), a rectangle
+/// whose half widths do not fit, or a round billet's square-die exit that does not fit
+/// inside its circle. `is_set(name)` tells whether the user gave
 /// the key (a key left at its default is never the one to blame).
 /// std::nullopt when the case is fine.
 std::optional<KeyRefusal> solid_case_problem(const Case& case_,

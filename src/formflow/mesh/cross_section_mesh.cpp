@@ -123,4 +123,57 @@ Mesh<2> make_quarter_disk_section(int radial_cells, int order) {
   return mesh;
 }
 
+CoreRingSection make_core_ring_section(Real radius, Real half_y, Real half_z, int cells_y,
+                                       int cells_z, int ring_cells, int order) {
+  FF_ASSERT(cells_y > 0 && cells_z > 0 && ring_cells > 0 && (order == 1 || order == 2),
+            "cells and order");
+  FF_ASSERT(std::hypot(half_y, half_z) < radius, "the core's corner is inside the circle");
+  const Real corner_angle = std::atan2(half_z, half_y);
+  // The arc's point on the corner ray, and the blend; both blocks evaluate the
+  // same expressions on the shared ray (η, corner) and on the core's sides (η = 0:
+  // 1·side + 0·arc is the side bit for bit), so their nodes merge exactly.
+  const Point<2> arc_corner = radius / std::hypot(half_y, half_z) * Point<2>(half_y, half_z);
+  const auto blend = [](Real radial, const Point<2>& side, const Point<2>& arc) {
+    return ((1 - radial) * side + radial * arc).eval();
+  };
+  const auto on_arc = [radius](Real angle) {
+    return Point<2>(radius * std::cos(angle), radius * std::sin(angle));
+  };
+  // Below the corner ray: axis a radial (≈ y), axis b along the side y = half_y.
+  const auto lower = [&](Real radial, Real along) {
+    const Point<2> arc = along == 1   ? arc_corner
+                         : along == 0 ? Point<2>(radius, 0.0)
+                                      : on_arc(along * corner_angle);
+    return blend(radial, Point<2>(half_y, half_z * along), arc);
+  };
+  // Above it: axis a along the side z = half_z (y from 0), axis b radial (≈ z);
+  // the arc end at y = 0 is (0, radius) exactly (cos 90° is not 0 in floating point).
+  const auto upper = [&](Real along, Real radial) {
+    const Point<2> arc =
+        along == 1   ? arc_corner
+        : along == 0 ? Point<2>(0.0, radius)
+                     : on_arc(std::numbers::pi / 2 - along * (std::numbers::pi / 2 - corner_angle));
+    return blend(radial, Point<2>(half_y * along, half_z), arc);
+  };
+  constexpr auto Side = BoundaryLabel::FreeExit; // the core's outer sides, split off below
+  BlockMesh blocks(order);
+  blocks.add_block(cells_y, cells_z,
+                   [=](Real a, Real b) { return Point<2>(half_y * a, half_z * b); },
+                   {Symmetry, Side, Symmetry, Side});
+  blocks.add_block(ring_cells, cells_z, lower, {std::nullopt, Outer, Symmetry, std::nullopt});
+  blocks.add_block(cells_y, ring_cells, upper, {Symmetry, std::nullopt, std::nullopt, Outer});
+  CoreRingSection section;
+  section.mesh = blocks.finish();
+  section.core_cells = Index(cells_y) * cells_z;
+  std::vector<BoundaryFacet> boundary;
+  for (const BoundaryFacet& facet : section.mesh.facets)
+    (facet.label == Side ? section.core_sides : boundary).push_back(facet);
+  section.mesh.facets = std::move(boundary);
+  const Index core_nodes = Index(cells_y * order + 1) * (cells_z * order + 1);
+  FF_ASSERT(section.mesh.n_nodes() ==
+                core_nodes + Index(ring_cells) * order * (cells_y * order + cells_z * order + 1),
+            "the O-grid's blocks share their edges node for node");
+  return section;
+}
+
 } // namespace formflow::mesh

@@ -24,7 +24,7 @@ struct SolidChannel {
   ChannelSection section = ChannelSection::Slab;
   Real thickness = 1.0;         ///< slab: extent in z
   Real entry_half_width = 10.0; ///< rectangle: half width (z) of the container
-  Real exit_half_width = 5.0;   ///< rectangle: half width (z) of the product after the die
+  Real exit_half_width = 5.0;   ///< rectangle, round + square die: half width (z) of the product
 };
 
 } // namespace formflow::mesh

@@ -7,6 +7,7 @@
 #include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/mesh/extruded_mesh.hpp"
 #include "formflow/mesh/rectangle_channel_mesh.hpp"
+#include "formflow/mesh/round_square_die_mesh.hpp"
 #include "formflow/mesh/swept_mesh.hpp"
 
 #include <algorithm>
@@ -33,8 +34,10 @@ Real quarter_disk_cells(Real radial_cells) {
 Mesh<3> make_solid_channel_mesh(const ChannelGeometry& geometry, const SolidChannel& solid,
                                 Real size, int order, bool drawing) {
   const bool square = geometry.die == DieShape::Square;
-  if (solid.section == ChannelSection::Rectangle && square) {
-    Mesh<3> mesh = make_rectangle_channel_mesh(geometry, solid, size, order);
+  if (solid.section != ChannelSection::Slab && square) {
+    Mesh<3> mesh = solid.section == ChannelSection::Rectangle
+                       ? make_rectangle_channel_mesh(geometry, solid, size, order)
+                       : make_round_square_die_mesh(geometry, solid, size, order);
     if (drawing)
       for (BoundaryFacet& facet : mesh.facets)
         if (facet.label == BoundaryLabel::Container) facet.label = BoundaryLabel::FreeEntry;
@@ -70,7 +73,9 @@ Real solid_channel_cell_count(const ChannelGeometry& geometry, const SolidChanne
               geometry.exit_length * geometry.exit_half_height * solid.exit_half_width) /
              (size * size * size);
     return plane * width_layers(solid, size);
-  case ChannelSection::Round: return plane / rows * quarter_disk_cells(std::round(rows));
+  case ChannelSection::Round:
+    if (geometry.die == DieShape::Square) return round_square_die_cell_count(geometry, solid, size);
+    return plane / rows * quarter_disk_cells(std::round(rows));
   }
   return plane;
 }
@@ -85,6 +90,8 @@ std::vector<Real> solid_lengths_to_fit(const ChannelGeometry& geometry, const So
     lengths.push_back(solid.entry_half_width);
     if (square) lengths.push_back(solid.exit_half_width);
   }
+  // The round billet's square die: the exit rectangle is the O-grid's core.
+  if (solid.section == ChannelSection::Round && square) lengths.push_back(solid.exit_half_width);
   return lengths;
 }
 
@@ -94,6 +101,8 @@ bool solid_lengths_fit(const ChannelGeometry& geometry, const SolidChannel& soli
     if (cells_along(length, size) <= 0) return false;
   if (cells_along(geometry.exit_half_height, size) >= cells_along(geometry.entry_half_height, size))
     return false;
+  if (solid.section == ChannelSection::Round && square)
+    return round_square_exit_fits(geometry, solid, size);
   return solid.section != ChannelSection::Rectangle || !square ||
          cells_along(solid.exit_half_width, size) <= cells_along(solid.entry_half_width, size);
 }

@@ -19,6 +19,8 @@ namespace formflow::mesh {
 ///   half width following the half height linearly, w(h) = W_out + (W_in − W_out)
 ///   (h − H_out)/(H_in − H_out), so the die's y and z faces start and end together
 ///   (H_in/size rows, round(W_in/size) layers);
+/// * round, square die: mesh/round_square_die_mesh.hpp (the O-grid around the
+///   exit rectangle over the container, the rectangle alone over the exit);
 /// * round, not a square die: the O-grid quarter disk (H_in/size cells along each
 ///   axis) swept along the plane channel: radius h(x), the revolved die face.
 /// `drawing`: the container wall is free (Γ2), as free_container_wall in 2D.
@@ -33,12 +35,14 @@ Real solid_channel_cell_count(const ChannelGeometry& geometry, const SolidChanne
 
 /// The lengths a structured solid mesh divides into cells of mesh.size: the plane
 /// channel's (mesh::lengths_to_fit) and, for the rectangle, the container's half
-/// width and, with the square die, the exit's.
+/// width and, with the square die, the exit's; for the round section with the
+/// square die, the exit's half width.
 std::vector<Real> solid_lengths_to_fit(const ChannelGeometry& geometry, const SolidChannel& solid);
 
 /// Whether a structured solid mesh of `size` can be made: the plane channel's
 /// lengths and, for the rectangle, its half widths (both with the square die)
-/// are multiples of it (mesh sequencing asks this of each coarse level).
+/// are multiples of it, and a round billet's square-die exit fits inside the
+/// circle with half a cell to spare (mesh sequencing asks this of each coarse level).
 bool solid_lengths_fit(const ChannelGeometry& geometry, const SolidChannel& solid, Real size);
 
 } // namespace formflow::mesh

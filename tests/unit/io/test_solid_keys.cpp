@@ -85,11 +85,23 @@ TEST(SolidKeys, SolidKeysInAPlaneCaseAreRefusedByNameUnlessAtTheirDefaults) {
 }
 
 TEST(SolidKeys, WhatThreeDimensionsCannotRunYetIsRefusedNamingTheKeySetLast) {
-  // A round billet through the (default) square die: an annular die face.
-  const InputError round =
-      error_in("[geometry]\ndimension = 3\nsection = \"round\"\n", "geometry.section", 3);
-  EXPECT_TRUE(has_text(round.message, "not implemented yet")) << round.message;
-  error_in("[geometry]\nsection = \"round\"\ndimension = 3\ndie = \"square\"\n", "geometry.die", 4);
+  // A round billet through the (default) square die runs (mesh/round_square_die_mesh.hpp)
+  // while the exit rectangle fits inside the circle with half a cell to spare.
+  EXPECT_NO_THROW(
+      load_case_text("[geometry]\ndimension = 3\nsection = \"round\"\n", "round.toml", {}));
+  const InputError outside =
+      error_in("[geometry]\ndimension = 3\nsection = \"round\"\nexit_half_width = 9\n",
+               "geometry.exit_half_width", 4);
+  EXPECT_TRUE(has_text(outside.message, "not inside the billet's radius 10")) << outside.message;
+  error_in("[geometry]\ndimension = 3\nsection = \"round\"\nexit_half_width = 8\n"
+           "exit_half_height = 6\n",
+           "geometry.exit_half_height", 5); // radius 10 = R: no margin
+  error_in("[geometry]\ndimension = 3\nsection = \"round\"\nexit_half_width = 4.25\n",
+           "geometry.exit_half_width", 4); // not a multiple of mesh.size
+  // The revolved dies make a round product: no half width to set.
+  error_in("[geometry]\ndimension = 3\nsection = \"round\"\ndie = \"wedge\"\n"
+           "exit_half_width = 4\n",
+           "geometry.exit_half_width", 5);
   // The rectangle's half widths: no wider exit, cells of mesh.size across them (the
   // exit's only with the square die).
   error_in("[geometry]\ndimension = 3\nsection = \"rectangle\"\nexit_half_width = 11\n",

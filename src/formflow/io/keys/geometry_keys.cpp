@@ -46,11 +46,12 @@ KeySpec section_key() {
               {"rectangle", ChannelSection::Rectangle},
               {"round", ChannelSection::Round}},
              [](auto& c) -> auto& { return c.mesh.solid.section; })
-      .constraint("only with geometry.dimension = 3; \"round\" not with geometry.die = "
-                  "\"square\"")
+      .constraint("only with geometry.dimension = 3")
       .doc("solid channel (quarter model, symmetry planes y = 0 and z = 0): slab (the plane "
            "channel extruded over geometry.thickness, u_z = 0 on both z faces: plane strain in "
-           "3D), rectangle (half widths in z), round (a round billet, radius = the half heights)");
+           "3D), rectangle (half widths in z), round (a round billet, radius = the half heights; "
+           "with geometry.die = \"square\" the product is the rectangle exit_half_height × "
+           "exit_half_width)");
 }
 
 } // namespace
@@ -148,9 +149,12 @@ std::vector<CaseKey> geometry_keys() {
           .within(1e-6, 1e6)
           .why(length_range)
           .constraint("≤ geometry.entry_half_width; a multiple of mesh.size with the square "
-                      "die; only with geometry.dimension = 3 and geometry.section = \"rectangle\"")
+                      "die; only with geometry.dimension = 3 and geometry.section = \"rectangle\", "
+                      "or \"round\" with the square die (then the exit's corner within "
+                      "geometry.entry_half_height − mesh.size/2 of the axis)")
           .unit("length")
-          .doc("rectangle: half width (in z) of the product after the die"),
+          .doc("rectangle, and round with the square die: half width (in z) of the product "
+               "after the die"),
       enum_key(
           "geometry.symmetry", "plane",
           {{"plane", physics::Symmetry::Plane}, {"axisymmetric", physics::Symmetry::Axisymmetric}},
