@@ -15,7 +15,10 @@ using namespace assembly;
 
 TEST(ContactTemperature, TrescaShearYieldIsTheLawAtThePointsTemperature) {
   mesh::ChannelGeometry geometry{1.0, 1.0, 0.6, 1.0};
-  const mesh::Mesh<2> m = mesh::make_die_channel_mesh(geometry, 0.25, 1);
+  geometry.die = mesh::DieShape::Arc; // the wedge-like mesh of test_geometry_cache.cpp
+  geometry.die_radius = 1.0;
+  geometry.land_length = 0.25;
+  const mesh::Mesh<2> m = mesh::make_die_channel_mesh(geometry, 0.125, 1);
   ProblemSettings settings;
   // Hensel–Spittel with m8 = 0: σ_p = A e^(m1 T) ε̄̇^m3, so k(T₁)/k(T₀) = e^(m1 (T₁ − T₀))
   // at every point whatever its strain rate.
