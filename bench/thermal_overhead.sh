@@ -35,4 +35,14 @@ heat = statistics.median(a + s for a, s in zip(times("coupled", "thermal_assembl
                                               times("coupled", "thermal_solve")))
 print(f"isothermal total {iso:.3f} s, coupled total {hot:.3f} s (x{hot / iso:.2f}), "
       f"heat assembly + solve {heat:.3f} s ({100 * heat / iso:.0f} % of the isothermal run)")
+# The counts do not depend on the machine's load: Newton iterations on the fine mesh
+# (every coupling step's) and factorisations (coarse levels and heat solves included).
+def counts(label):
+    d = json.load(open(f"{work}/{label}0/summary.json"))
+    return d["iterations"], d["linear_algebra"]["factorizations"], d.get("thermal", {})
+for label in ("isothermal", "coupled"):
+    its, facts, thermal = counts(label)
+    steps = thermal.get("coupling", {}).get("flow_iterations") if thermal else None
+    print(f"{label}: {its} Newton iterations, {facts} factorizations"
+          + (f", flow iterations per coupling step {steps}" if steps else ""))
 PY

@@ -30,5 +30,29 @@ TEST(NotConvergedRun, EveryResultFileSaysSo) {
   EXPECT_TRUE(std::filesystem::exists(out / "convergence.png"));
 }
 
+TEST(NotConvergedRun, TheCouplingLimitHasItsOwnReasonAndMessage) {
+  // Every flow solve converges; one staggered step cannot meet a 1e-12 coupling
+  // tolerance (the temperature changes by its whole rise in the first step).
+  const ScratchDirectory scratch("formflow-coupling-limit");
+  const auto out = scratch / "out";
+  const CliResult result = run_cli("run -q --set mesh.size=2.5 --set thermal.enabled=true --set "
+                                   "thermal.max_coupling_iterations=1 "
+                                   "--set thermal.coupling_tolerance=1e-12 --set thermal.density=1 "
+                                   "--set thermal.heat_capacity=1 "
+                                   "-o " +
+                                       quoted(out.string()),
+                                   scratch.path());
+  ASSERT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_TRUE(has_text(result.err, "NOT CONVERGED (max_coupling_iterations)")) << result.err;
+  EXPECT_TRUE(has_text(result.err, "thermal.max_coupling_iterations = 1")) << result.err;
+  EXPECT_FALSE(has_text(result.err, "(max_iterations)")) << result.err;
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary.at("converged"), false);
+  EXPECT_EQ(summary.at("stop_reason"), "max_coupling_iterations");
+  EXPECT_EQ(summary.at("thermal").at("coupling").at("converged"), false);
+  EXPECT_EQ(summary.at("case").at("thermal").at("enabled"), true);
+  EXPECT_TRUE(std::filesystem::exists(out / "temperature.png"));
+}
+
 } // namespace
 } // namespace formflow::testing

@@ -126,6 +126,20 @@ int run_case(const Options& options) {
 
   if (options.json) fmt::print("{}\n", io::summary_json(case_, results));
   const std::string reason(solvers::stop_reason_name(results.stop_reason));
+  if (results.stop_reason == solvers::StopReason::CouplingLimit) {
+    // Every flow solve converged; the staggered heat-flow loop did not settle.
+    fmt::print(stderr,
+               "formflow: NOT CONVERGED ({}): the heat-flow coupling took "
+               "thermal.max_coupling_iterations = {} steps without meeting "
+               "thermal.coupling_tolerance = {:g} (last change: temperature {:.3e} of its rise, "
+               "pressure {}); results in {} are marked so\n",
+               reason, results.thermal.coupling_iterations, case_.thermal.coupling_tolerance,
+               results.thermal.temperature_change,
+               results.thermal.force_change ? fmt::format("{:.3e}", *results.thermal.force_change)
+                                            : std::string("not yet compared"),
+               options.output_directory);
+    return NotConverged;
+  }
   if (!results.converged()) {
     fmt::print(stderr,
                "formflow: NOT CONVERGED ({}) after {} iterations; results in {} are marked "

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
 // A manufactured-solution case: box mesh, exact boundary values, body force, error norms.
 #include "formflow/app/simulation.hpp"
+#include "formflow/app/thermal_coupling.hpp"
 
 #include "formflow/assembly/boundary_values.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/mesh/box_mesh.hpp"
 #include "formflow/mesh/cube_mesh.hpp"
 #include "formflow/physics/manufactured_3d.hpp"
+#include "formflow/physics/manufactured_thermal.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/forming_nonlinear_problem.hpp"
+#include "formflow/solvers/pattern_reuse.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
 #include <chrono>
@@ -19,6 +22,12 @@ namespace formflow::app {
 
 namespace {
 
+/// The coupled solution's T: from the billet's temperature up to 1.5 × the rise above it.
+physics::ManufacturedTemperature manufactured_temperature(const physics::Thermal& thermal) {
+  return physics::ManufacturedTemperature(thermal.billet_temperature,
+                                          physics::coupled_temperature_rise);
+}
+
 /// The exact field of `case_` in `dim` dimensions: the stream-function field on the
 /// unit square, the vector-potential field on the unit cube.
 template <int dim> auto exact_field(const io::Case& case_) {
@@ -26,6 +35,71 @@ template <int dim> auto exact_field(const io::Case& case_) {
     return physics::StreamFunctionField::of(case_.manufactured);
   else
     return physics::VectorPotentialField::of(case_.manufactured);
+}
+
+/// The coupled manufactured solution (thermal.enabled, plane only): the smooth velocity
+/// with the temperature of physics/manufactured_thermal.hpp, solved by the staggered loop
+/// of a hot run (app/thermal_coupling.hpp) with the exact T on all of ∂Ω, the body force
+/// of the temperature-dependent law and the heat source that make the pair exact. The
+/// velocity of the convection and the β σ_p ε̄̇ of the heat source are the discrete ones.
+void solve_coupled_manufactured(const io::Case& case_, Simulation& simulation,
+                                const IterationCallback& on_iteration) {
+  post::Results& results = simulation.results;
+  const mesh::Mesh<2>& box = std::get<mesh::Mesh<2>>(simulation.mesh);
+  const auto field = physics::StreamFunctionField::of(case_.manufactured);
+  const physics::ManufacturedTemperature temperature = manufactured_temperature(case_.thermal);
+  assembly::ProblemSettings settings = problem_settings(case_);
+  settings.symmetry = physics::Symmetry::Plane;
+  const physics::FlowLaw law = case_.material.selected();
+  auto velocity = [field](const Point<2>& x) { return field.velocity(x); };
+  auto body_force = [field, temperature, law](const Point<2>& x) {
+    return physics::coupled_body_force(law, field, temperature, x);
+  };
+  std::unique_ptr<assembly::FormingProblem<2>> problem;
+  {
+    ScopedTimer timer(results.timing, "setup");
+    problem = std::make_unique<assembly::FormingProblem<2>>(
+        box, settings, assembly::make_boundary_constraints<2>(box, velocity), body_force);
+  }
+  // The heat source at the full-rule points, in the cell-major order of the sources.
+  ManufacturedHeat<2> heat;
+  heat.temperature = [temperature](const Point<2>& x) { return temperature.value(x); };
+  {
+    const auto& discretisation = problem->discretisation();
+    fem::CellValues<2> values(box.order, discretisation.full_rule());
+    typename fem::CellValues<2>::Gradients coordinates, unused;
+    for (Index cell = 0; cell < box.n_cells(); ++cell) {
+      discretisation.gather(cell, nullptr, coordinates, unused);
+      values.reinit(coordinates);
+      for (int q = 0; q < values.n_points(); ++q)
+        heat.source.push_back(
+            physics::coupled_heat_source(law, case_.thermal, field, temperature, values.point(q)));
+    }
+  }
+  // The body force rules Newton out (assembly/newton_system.cpp): the secant loop, from
+  // its own start at each coupling step, one CHOLMOD analysis for all of them.
+  const auto solver = solvers::reuse_analysis(solvers::make_cholmod_solver());
+  const FlowSolve solve_flow = [&](const VectorX*, Real tolerance) {
+    solvers::FormingNonlinearProblem<2> nonlinear(*problem);
+    solvers::IterationControl control = case_.solver;
+    control.tolerance = tolerance;
+    return solvers::secant_iteration(nonlinear, *solver, control, on_iteration, results.timing);
+  };
+  const assembly::FrictionMultipliers<2> no_multipliers;
+  solvers::SecantOutcome outcome =
+      couple_thermal(case_, *problem, solve_flow, on_iteration, no_multipliers, results, &heat);
+  results.stop_reason = outcome.stop_reason;
+  results.history = std::move(outcome.history);
+  results.iterations = static_cast<int>(results.history.size());
+  post::evaluate_results(*problem, outcome.velocity, results);
+  results.fields.temperature = results.thermal.temperature;
+  simulation.errors =
+      post::error_norms<2>(*problem, outcome.velocity,
+                           {velocity, [field](const Point<2>& x) { return field.gradient(x); }});
+  simulation.temperature_errors = post::temperature_error_norms<2>(
+      problem->discretisation(), results.thermal.temperature,
+      {[temperature](const Point<2>& x) { return temperature.value(x); },
+       [temperature](const Point<2>& x) { return temperature.gradient(x); }});
 }
 
 template <int dim>
@@ -79,7 +153,9 @@ Simulation simulate_manufactured(const io::Case& case_, const IterationCallback&
       simulation.mesh = mesh::make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), cells, cells,
                                             order, case_.mesh.distortion);
   }
-  if (case_.mesh.dimension == 3)
+  if (case_.thermal.enabled)
+    solve_coupled_manufactured(case_, simulation, on_iteration); // plane only (case validation)
+  else if (case_.mesh.dimension == 3)
     solve_manufactured<3>(case_, simulation, on_iteration, estimate_condition);
   else
     solve_manufactured<2>(case_, simulation, on_iteration, estimate_condition);

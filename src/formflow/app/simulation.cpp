@@ -16,6 +16,7 @@
 #include "formflow/solvers/condition_estimate.hpp"
 #include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
+#include "formflow/solvers/pattern_reuse.hpp"
 #include "formflow/solvers/saddle_point_iteration.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
@@ -102,23 +103,27 @@ private:
   std::vector<long> per_iteration_;
 };
 
-/// The loop of the plan with the solver it names; the linear algebra's record in
-/// `results`.
+/// The linear solver the plan names.
+std::unique_ptr<solvers::LinearSolver> plan_solver(const SolvePlan& plan, const io::Case& case_) {
+  return solvers::make_linear_solver(plan.linear, solvers::loop_storage(plan.loop),
+                                     case_.solver.petsc_options);
+}
+
+/// The loop of the plan with `solver`; the linear algebra's record in `results` (the
+/// Krylov count is the solver's running total: every loop that used it).
 template <int dim>
-solvers::SecantOutcome run_counted_loop(const SolvePlan& plan, const io::Case& case_,
-                                        const assembly::FormingProblem<dim>& problem,
-                                        const IterationCallback& on_iteration,
-                                        post::Results& results, const VectorX* start_velocity,
-                                        assembly::FrictionMultipliers<dim>& multipliers) {
-  auto solver = solvers::make_linear_solver(plan.linear, solvers::loop_storage(plan.loop),
-                                            case_.solver.petsc_options);
-  KrylovCounter counter(*solver, on_iteration);
-  solvers::SecantOutcome outcome = run_loop(plan, case_, problem, *solver, counter.observer(),
+solvers::SecantOutcome
+run_counted_loop(const SolvePlan& plan, const io::Case& case_,
+                 const assembly::FormingProblem<dim>& problem, solvers::LinearSolver& solver,
+                 const IterationCallback& on_iteration, post::Results& results,
+                 const VectorX* start_velocity, assembly::FrictionMultipliers<dim>& multipliers) {
+  KrylovCounter counter(solver, on_iteration);
+  solvers::SecantOutcome outcome = run_loop(plan, case_, problem, solver, counter.observer(),
                                             results, start_velocity, multipliers);
   counter.fill(outcome.history);
-  results.linear_algebra.solver = solver->name(); // e.g. "petsc-gmres-cholesky"
-  results.linear_algebra.iterations = solver->krylov_iterations();
-  const solvers::FactorSize factor = solver->factor_size(); // the fine mesh's pattern
+  results.linear_algebra.solver = solver.name(); // e.g. "petsc-gmres-cholesky"
+  results.linear_algebra.iterations = solver.krylov_iterations();
+  const solvers::FactorSize factor = solver.factor_size(); // the fine mesh's pattern
   results.linear_algebra.matrix_nonzeros = factor.matrix_nonzeros;
   results.linear_algebra.factor_nonzeros = factor.factor_nonzeros;
   results.linear_algebra.factor_flops = factor.factor_flops;
@@ -243,15 +248,20 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
   assembly::FrictionMultipliers<dim> multipliers;
   solvers::SecantOutcome outcome;
   if (case_.thermal.enabled) {
-    // Hot forming (app/thermal_coupling.hpp): the loop below, again at each coupling step.
-    const FlowSolve solve_flow = [&](const VectorX* start) {
-      return run_counted_loop(plan, case_, *problem, on_iteration, results,
+    // Hot forming (app/thermal_coupling.hpp): the loop below, again at each coupling step,
+    // with one solver whose symbolic analysis serves every step (the pattern is the same).
+    const auto solver = solvers::reuse_analysis(plan_solver(plan, case_));
+    io::Case inner = case_; // solver.tolerance set per coupling step (inexact staggering)
+    const FlowSolve solve_flow = [&](const VectorX* start, Real tolerance) {
+      inner.solver.tolerance = tolerance;
+      return run_counted_loop(plan, inner, *problem, *solver, on_iteration, results,
                               start ? start : (coarse ? &coarse->velocity : start_velocity),
                               multipliers);
     };
     outcome = couple_thermal(case_, *problem, solve_flow, on_iteration, multipliers, results);
   } else {
-    outcome = run_counted_loop(plan, case_, *problem, on_iteration, results,
+    const auto solver = plan_solver(plan, case_);
+    outcome = run_counted_loop(plan, case_, *problem, *solver, on_iteration, results,
                                coarse ? &coarse->velocity : start_velocity, multipliers);
   }
   results.method = plan.name(coarse.has_value());

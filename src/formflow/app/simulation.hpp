@@ -6,6 +6,7 @@
 #include "formflow/mesh/any_mesh.hpp"
 #include "formflow/post/error_norms.hpp"
 #include "formflow/post/results.hpp"
+#include "formflow/post/temperature_error_norms.hpp"
 
 #include <functional>
 #include <optional>
@@ -30,6 +31,8 @@ struct Simulation {
   post::Results results;
   /// Error against the exact field: only for a manufactured solution (verification.solution).
   std::optional<post::ErrorNorms> errors;
+  /// Temperature error: only for the coupled manufactured solution (thermal.enabled too).
+  std::optional<post::TemperatureErrorNorms> temperature_errors;
   /// CHOLMOD rcond of K(u) at the final velocity, when asked for.
   std::optional<Real> reciprocal_condition;
 

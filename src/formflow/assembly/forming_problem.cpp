@@ -87,8 +87,13 @@ FormingProblem<dim>::contact_state(const VectorX& u,
       if (shear_yield) {
         const Real rate =
             physics::equivalent_strain_rate(strain_rate_at(facet_values, velocities, q));
-        point.shear_yield =
-            settings_.law.yield_stress(std::max(rate, settings_.law.rate1)) / std::sqrt(3.0);
+        const Real effective = std::max(rate, settings_.law.rate1);
+        const std::size_t k = state.size();
+        point.shear_yield = (contact_temperatures_.empty()
+                                 ? settings_.law.yield_stress(effective)
+                                 : physics::FlowLawAt(settings_.law, contact_temperatures_[k])
+                                       .yield_stress(effective)) /
+                            std::sqrt(3.0);
       }
       state.push_back(point);
     }

@@ -100,6 +100,11 @@ public:
     point_temperatures_ = std::move(temperatures);
   }
   const std::vector<Real>& point_temperatures() const { return point_temperatures_; }
+  /// Hot forming: the temperature at every Γ3 point (contact_state() order), at which the
+  /// Tresca and hybrid thresholds take the shear yield k = σ_p/√3; empty: the isothermal law.
+  void set_contact_temperatures(std::vector<Real> temperatures) {
+    contact_temperatures_ = std::move(temperatures);
+  }
   /// σ_p ε̄̇ at every full-rule point at `u` (cell-major; Assembler::dissipation_density).
   std::vector<Real> dissipation_density(const VectorX& u) const {
     return assembler_->dissipation_density(u);
@@ -178,7 +183,8 @@ private:
   std::unique_ptr<Discretisation<dim>> discretisation_;
   ConstraintMultipliers<dim>* multipliers_ = nullptr;
   TermSet<dim> terms_;
-  std::vector<Real> point_temperatures_; ///< hot forming (before assembler_, which reads it)
+  std::vector<Real> point_temperatures_;   ///< hot forming (before assembler_, which reads it)
+  std::vector<Real> contact_temperatures_; ///< hot forming: T at the Γ3 points
   std::unique_ptr<Assembler<dim>> assembler_;
 };
 

@@ -3,21 +3,36 @@
 #include "formflow/assembly/heat_problem.hpp"
 
 #include "formflow/core/error.hpp"
+#include "formflow/fem/lagrange.hpp"
+
+#include <Eigen/LU> // inverse() of the Jacobian
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace formflow::assembly {
 
 template <int dim>
 HeatProblem<dim>::HeatProblem(const Discretisation<dim>& discretisation,
-                              const physics::Thermal& thermal)
+                              const physics::Thermal& thermal,
+                              const BoundaryTemperature& boundary_temperature)
     : discretisation_(discretisation), thermal_(thermal) {
   const mesh::Mesh<dim>& mesh = discretisation.mesh();
   prescribed_.assign(mesh.n_nodes(), false);
+  prescribed_value_ = VectorX::Constant(mesh.n_nodes(), thermal.billet_temperature);
   const int n_side = mesh.nodes_per_side();
   for (Index f = 0; f < static_cast<Index>(mesh.facets.size()); ++f) {
     const mesh::BoundaryFacet& facet = mesh.facets[f];
+    if (boundary_temperature) {
+      for (const int local : mesh::face_local_nodes<dim>(n_side, facet.local_face)) {
+        const Index node = mesh.cells(local, facet.cell);
+        prescribed_[node] = true;
+        prescribed_value_[node] = boundary_temperature(mesh.nodes.col(node));
+      }
+      if (facet.label == mesh::BoundaryLabel::Front) outflow_.push_back(f);
+      continue;
+    }
     switch (facet.label) {
     case mesh::BoundaryLabel::Rear:
       for (const int local : mesh::face_local_nodes<dim>(n_side, facet.local_face))
@@ -28,6 +43,13 @@ HeatProblem<dim>::HeatProblem(const Discretisation<dim>& discretisation,
     case mesh::BoundaryLabel::Front: outflow_.push_back(f); break;
     default: break;
     }
+  }
+  const fem::QuadratureRule<dim>& rule = discretisation.full_rule();
+  for (int q = 0; q < rule.size(); ++q) {
+    VectorX unused;
+    reference_gradients_.emplace_back();
+    fem::tabulate_shape<dim>(mesh.order, rule.points[q], unused, reference_gradients_.back());
+    reference_hessians_.push_back(fem::tabulate_hessians<dim>(mesh.order, rule.points[q]));
   }
   free_index_.assign(mesh.n_nodes(), -1);
   for (Index node = 0; node < mesh.n_nodes(); ++node)
@@ -41,6 +63,33 @@ template <int dim> Real HeatProblem<dim>::supg_tau(Real speed, Real length, Real
   const Real xi = peclet < 1e-3 ? peclet / 3.0 - peclet * peclet * peclet / 45.0
                                 : 1.0 / std::tanh(peclet) - 1.0 / peclet;
   return length / (2.0 * speed) * xi;
+}
+
+template <int dim>
+VectorX
+HeatProblem<dim>::minus_laplacian(const typename fem::CellValues<dim>::Gradients& coordinates,
+                                  const typename fem::CellValues<dim>::Gradients& gradients, int q,
+                                  const Point<dim>& point) const {
+  // ∂²N/∂ξ∂ξ = Jᵀ (∂²N/∂x∂x) J + Σ_k ∂N/∂x_k ∂²x_k/∂ξ∂ξ, so ∂²N/∂x∂x = J⁻ᵀ (H_ξ − Σ_k
+  // ∂N/∂x_k G_k) J⁻¹ with G_k = Σ_b X_kb H_ξ(N_b) (zero on affine cells).
+  const auto& hessians = reference_hessians_[q];
+  const int n = static_cast<int>(hessians.size());
+  const Tensor2<dim> jacobian = coordinates * reference_gradients_[q].transpose();
+  const Tensor2<dim> inverse = jacobian.inverse();
+  std::array<Tensor2<dim>, dim> geometry;
+  for (int k = 0; k < dim; ++k) {
+    geometry[k].setZero();
+    for (int b = 0; b < n; ++b) geometry[k] += coordinates(k, b) * hessians[b];
+  }
+  VectorX result(n);
+  for (int a = 0; a < n; ++a) {
+    Tensor2<dim> reference = hessians[a];
+    for (int k = 0; k < dim; ++k) reference -= gradients(k, a) * geometry[k];
+    result[a] = -(inverse.transpose() * reference * inverse).trace();
+    // Axisymmetry (y = r): ∇·∇T = T_rr + T_r/r + T_zz.
+    if (discretisation_.axisymmetric()) result[a] -= gradients(1, a) / point[1];
+  }
+  return result;
 }
 
 template <int dim>
@@ -67,12 +116,15 @@ void HeatProblem<dim>::cell_system(Index cell, const VectorX& u, std::span<const
     const Real source = deformation.empty() ? 0.0 : deformation[q];
     const Real jxw = values.JxW(q);
     // (1) Galerkin convection N_a ρc u·∇N_b, (2) diffusion κ ∇N_a·∇N_b, (3) SUPG
-    // τ (ρc u·∇N_a)(ρc u·∇N_b − q): the residual's −∇·(κ∇T) is dropped (zero for affine
-    // Q1; for Q2 an O(h²) inconsistency, τκ → h²/12, that caps its L² rate at 2:
-    // docs/thermal.md).
+    // τ (ρc u·∇N_a)(ρc u·∇N_b − κ ΔN_b − q), the whole residual: without its −κΔT part
+    // (zero only for Q1 on affine plane cells) the method is inconsistent by τκ → h²/12,
+    // which capped Q2's L² rate at 2 (docs/thermal.md).
     const VectorX test = shape + tau * rho_c * streamline;
     matrix.noalias() += (rho_c * jxw) * test * streamline.transpose();
     matrix.noalias() += (kappa * jxw) * grad.transpose() * grad;
+    if (tau > 0)
+      matrix.noalias() += (tau * rho_c * kappa * jxw) * streamline *
+                          minus_laplacian(coordinates, grad, q, values.point(q)).transpose();
     load.noalias() += (source * jxw) * test;
   }
 }
@@ -177,7 +229,7 @@ HeatSystem HeatProblem<dim>::assemble(const VectorX& u, const HeatSources& sourc
                             if (column >= 0)
                               entries.emplace_back(row, column, matrix(a, b));
                             else
-                              system.rhs[row] -= matrix(a, b) * thermal_.billet_temperature;
+                              system.rhs[row] -= matrix(a, b) * prescribed_value_[nodes[b]];
                           }
                         }
                       });
@@ -190,7 +242,7 @@ template <int dim> VectorX HeatProblem<dim>::expand(const VectorX& free_temperat
   VectorX T(n_nodes());
   for (Index node = 0; node < n_nodes(); ++node)
     T[node] =
-        free_index_[node] < 0 ? thermal_.billet_temperature : free_temperatures[free_index_[node]];
+        free_index_[node] < 0 ? prescribed_value_[node] : free_temperatures[free_index_[node]];
   return T;
 }
 
@@ -293,6 +345,26 @@ template <int dim> std::vector<Real> HeatProblem<dim>::point_values(const Vector
       Real value = 0.0;
       for (int a = 0; a < values.n_nodes(); ++a)
         value += values.shape(q)[a] * T[mesh.cells(a, cell)];
+      result.push_back(value);
+    }
+  }
+  return result;
+}
+
+template <int dim> std::vector<Real> HeatProblem<dim>::contact_values(const VectorX& T) const {
+  const mesh::Mesh<dim>& mesh = discretisation_.mesh();
+  fem::FacetValues<dim> contact(mesh.order, discretisation_.facet_rule());
+  typename fem::CellValues<dim>::Gradients coordinates, unused;
+  std::vector<Real> result;
+  const auto& contact_facets = discretisation_.contact_facets();
+  for (Index position = 0; position < static_cast<Index>(contact_facets.size()); ++position) {
+    const Index cell = mesh.facets[contact_facets[position]].cell;
+    discretisation_.gather(cell, nullptr, coordinates, unused);
+    discretisation_.reinit_contact(contact, coordinates, position);
+    for (int q = 0; q < contact.n_points(); ++q) {
+      Real value = 0.0;
+      for (int a = 0; a < contact.n_nodes(); ++a)
+        value += contact.shape(q)[a] * T[mesh.cells(a, cell)];
       result.push_back(value);
     }
   }

@@ -7,6 +7,7 @@
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/physics/thermal.hpp"
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -46,7 +47,12 @@ struct HeatSystem {
 /// integral is β times the discrete plastic power exactly.
 template <int dim> class HeatProblem {
 public:
-  HeatProblem(const Discretisation<dim>& discretisation, const physics::Thermal& thermal);
+  /// T of the nodes where it is prescribed: `boundary_temperature` at the nodes of every
+  /// boundary facet when given (a manufactured solution, all of ∂Ω Dirichlet), else
+  /// thermal.billet_temperature on the rear end Γ1.
+  using BoundaryTemperature = std::function<Real(const Point<dim>&)>;
+  HeatProblem(const Discretisation<dim>& discretisation, const physics::Thermal& thermal,
+              const BoundaryTemperature& boundary_temperature = {});
 
   Index n_nodes() const { return discretisation_.mesh().n_nodes(); }
   /// The system for the velocity `u` (full dof vector) and the heat sources.
@@ -57,6 +63,9 @@ public:
   HeatBalance balance(const VectorX& u, const HeatSources& sources, const VectorX& T) const;
   /// T at every full-rule point, cell-major (what the flow law is taken at).
   std::vector<Real> point_values(const VectorX& T) const;
+  /// T at every Γ3 point, in contact_state() order (what the Tresca and hybrid shear
+  /// yield is taken at).
+  std::vector<Real> contact_values(const VectorX& T) const;
 
   /// The outflow end Γ5: min, flux-weighted mean ∫T u·n/∫u·n and max of T at its
   /// quadrature points.
@@ -79,9 +88,20 @@ private:
   void add_face_terms(const Values& values, Real transfer, Real reference,
                       std::span<const Real> friction, MatrixX& matrix, VectorX& load) const;
 
+  /// −ΔN_a (plus −(1/r) ∂N_a/∂r in axisymmetry) at full-rule point q of a cell with node
+  /// coordinates `coordinates` and physical gradients `gradients`: the diffusion part of
+  /// the SUPG residual, by the isoparametric map's second derivatives.
+  VectorX minus_laplacian(const typename fem::CellValues<dim>::Gradients& coordinates,
+                          const typename fem::CellValues<dim>::Gradients& gradients, int q,
+                          const Point<dim>& point) const;
+
   const Discretisation<dim>& discretisation_;
   physics::Thermal thermal_;
+  /// Reference gradients and second derivatives of the shape functions at the full rule.
+  std::vector<typename fem::CellValues<dim>::Gradients> reference_gradients_;
+  std::vector<std::vector<Eigen::Matrix<Real, dim, dim>>> reference_hessians_;
   std::vector<bool> prescribed_;  ///< per node: on the rear end (T = T_billet)
+  VectorX prescribed_value_;      ///< per node: T where prescribed_ (else unused)
   std::vector<Index> free_index_; ///< per node: index in T_f, or −1
   Index n_free_ = 0;
   std::vector<Index> free_surface_; ///< Mesh::facets indices of Γ2, Γ4

@@ -19,7 +19,43 @@ void basis_1d(int order, Real x, std::array<Real, 3>& value, std::array<Real, 3>
   }
 }
 
+/// Second derivatives of the same 1D basis (constant: the basis is at most quadratic).
+std::array<Real, 3> second_derivative_1d(int order) {
+  return order == 1 ? std::array<Real, 3>{0, 0, 0} : std::array<Real, 3>{1, -2, 1};
+}
+
 } // namespace
+
+template <int dim>
+std::vector<Eigen::Matrix<Real, dim, dim>> tabulate_hessians(int order, const Point<dim>& xi) {
+  const int n_side = order + 1;
+  int n_nodes = 1;
+  for (int d = 0; d < dim; ++d) n_nodes *= n_side;
+  std::array<std::array<Real, 3>, dim> value_1d{}, derivative_1d{};
+  for (int d = 0; d < dim; ++d) basis_1d(order, xi[d], value_1d[d], derivative_1d[d]);
+  const std::array<Real, 3> second_1d = second_derivative_1d(order);
+  std::vector<Eigen::Matrix<Real, dim, dim>> hessians(n_nodes);
+  for (int local = 0; local < n_nodes; ++local) {
+    std::array<int, dim> index{};
+    int rest = local;
+    for (int d = 0; d < dim; ++d) {
+      index[d] = rest % n_side;
+      rest /= n_side;
+    }
+    for (int g = 0; g < dim; ++g)
+      for (int h = 0; h < dim; ++h) {
+        Real partial = 1.0;
+        for (int d = 0; d < dim; ++d) {
+          const int derivatives = (d == g) + (d == h);
+          partial *= derivatives == 0   ? value_1d[d][index[d]]
+                     : derivatives == 1 ? derivative_1d[d][index[d]]
+                                        : second_1d[index[d]];
+        }
+        hessians[local](g, h) = partial;
+      }
+  }
+  return hessians;
+}
 
 template <int dim>
 void tabulate_shape(int order, const Point<dim>& xi, VectorX& values,
@@ -65,6 +101,8 @@ template void tabulate_shape<2>(int, const Point<2>&, VectorX&,
                                 Eigen::Matrix<Real, 2, Eigen::Dynamic>&);
 template void tabulate_shape<3>(int, const Point<3>&, VectorX&,
                                 Eigen::Matrix<Real, 3, Eigen::Dynamic>&);
+template std::vector<Eigen::Matrix<Real, 2, 2>> tabulate_hessians<2>(int, const Point<2>&);
+template std::vector<Eigen::Matrix<Real, 3, 3>> tabulate_hessians<3>(int, const Point<3>&);
 template Point<2> reference_node<2>(int, int);
 template Point<3> reference_node<3>(int, int);
 

@@ -5,6 +5,7 @@
 #include "formflow/core/types.hpp"
 
 #include <string_view>
+#include <vector>
 
 namespace formflow::fem {
 
@@ -40,6 +41,11 @@ inline Real lattice_coordinate(int order, int i) {
 template <int dim>
 void tabulate_shape(int order, const Point<dim>& xi, VectorX& values,
                     Eigen::Matrix<Real, dim, Eigen::Dynamic>& gradients);
+
+/// Reference second derivatives ∂²N_a/∂ξ_i∂ξ_j of the same shape functions at `xi`, one
+/// dim × dim matrix per node (the SUPG residual's diffusion term, assembly/heat_problem.cpp).
+template <int dim>
+std::vector<Eigen::Matrix<Real, dim, dim>> tabulate_hessians(int order, const Point<dim>& xi);
 
 /// The reference coordinates of local node `local` of an element of `order`.
 template <int dim> Point<dim> reference_node(int order, int local);

@@ -11,6 +11,7 @@
 #include "formflow/io/toml_lines.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
 #include "formflow/physics/friction.hpp"
+#include "formflow/physics/manufactured_thermal.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/petsc_option_text.hpp"
 
@@ -363,19 +364,23 @@ private:
   void check_thermal() const {
     const physics::Thermal& thermal = case_.thermal;
     if (!thermal.enabled) return;
-    const std::initializer_list<std::string> switch_key = {"thermal.enabled"};
-    if (case_.manufactured != physics::ManufacturedSolution::None)
+    // The coupled manufactured solution (physics/manufactured_thermal.hpp): plane only, T
+    // from billet_temperature to 1.5 × coupled_temperature_rise above it, all inside the
+    // range the law is checked on (else the clamp would change the exact problem).
+    if (case_.manufactured != physics::ManufacturedSolution::None && case_.mesh.dimension == 3)
       die_error("thermal.enabled",
-                "a manufactured solution (verification.solution) has no heat "
-                "problem",
-                "set thermal.enabled = false", {"verification.solution"});
-    if (case_.friction.law != physics::FrictionLaw::Coulomb &&
-        !physics::friction_vanishes(case_.friction))
-      die_error("friction.law",
-                "Tresca and hybrid friction with thermal.enabled = true are not done yet: their "
-                "shear yield k on Γ3 would be the isothermal law's",
-                "use friction.law = \"coulomb\" with thermal.enabled = true (docs/thermal.md)",
-                switch_key);
+                "the coupled manufactured solution (verification.solution with thermal) is "
+                "plane only",
+                "set mesh.dimension = 2 or thermal.enabled = false", {"verification.solution"});
+    if (case_.manufactured != physics::ManufacturedSolution::None &&
+        thermal.max_temperature <
+            thermal.billet_temperature + 1.5 * physics::coupled_temperature_rise)
+      die_error("thermal.max_temperature",
+                fmt::format("value {} is below the coupled manufactured solution's highest T, "
+                            "billet_temperature + {}",
+                            format_key_value(thermal.max_temperature),
+                            1.5 * physics::coupled_temperature_rise),
+                "raise thermal.max_temperature", {"verification.solution"});
     const bool convective = thermal.free_surface_transfer > 0;
     const Real low = std::min({thermal.billet_temperature, thermal.tool_temperature,
                                convective ? thermal.ambient_temperature : INFINITY});

@@ -14,6 +14,10 @@ nlohmann::ordered_json case_to_json(const Case& case_) {
   for (const CaseKey& key : case_keys()) {
     nlohmann::ordered_json& slot = json[std::string(key.section())][std::string(key.leaf())];
     std::visit([&slot](const auto& value) { slot = value; }, key.get(case_));
+    // A switch (an enum of exactly false/true, e.g. thermal.enabled) is a JSON boolean.
+    if (key.type == KeyType::Enum && key.choices.size() == 2 && key.choices[0] == "false" &&
+        key.choices[1] == "true")
+      slot = slot.get<std::string>() == "true";
   }
   json["source"] = case_.source;
   return json;

@@ -12,9 +12,13 @@
 
 namespace formflow::io {
 
-/// Every file write_results writes: summary.json, history.csv, contact.csv,
-/// fields.vtu, report.html (io/report_html.hpp) and each picture's .png and .svg.
-/// check_output_directory takes this list before the solve.
+/// Every file a run of any kind may write: summary.json, history.csv, contact.csv,
+/// fields.vtu, report.html (io/report_html.hpp), each plane and solid picture's .png and
+/// .svg, and hot forming's temperature.png/.svg. A run writes a subset (temperature.*
+/// only when thermal.enabled); the whole list is what it *replaces*: a file of this
+/// list that the new set lacks is removed (a stale temperature.png of an earlier hot run
+/// would otherwise sit beside an isothermal result), and check_output_directory takes
+/// it before the solve so that nothing in the way is found only after it.
 std::span<const std::string> result_file_names();
 
 /// Writes the files of result_file_names() into `directory` (created if

@@ -142,7 +142,7 @@ json thermal_json(const post::ThermalResults& thermal) {
            {{"iterations", thermal.coupling_iterations},
             {"converged", thermal.coupling_converged},
             {"temperature_change", thermal.temperature_change},
-            {"force_change", thermal.force_change},
+            {"force_change", thermal.force_change ? json(*thermal.force_change) : json(nullptr)},
             {"flow_iterations", thermal.flow_iterations}}}};
 }
 

@@ -81,8 +81,9 @@ struct ThermalResults {
   Real conducted = 0.0;        ///< conducted out through the rear end
   int coupling_iterations = 0; ///< staggered steps (a flow solve and a heat solve each)
   bool coupling_converged = false;
-  Real temperature_change = 0.0;    ///< last coupling step's max|ΔT| / max|T − T_billet|
-  Real force_change = 0.0;          ///< last coupling step's |Δp|/|p|
+  Real temperature_change = 0.0; ///< last coupling step's max|ΔT| / max|T − T_billet|
+  /// last coupling step's |Δp|/|p|; none before a second flow solve
+  std::optional<Real> force_change;
   std::vector<int> flow_iterations; ///< nonlinear iterations of each flow solve
 };
 

@@ -12,7 +12,17 @@ namespace formflow::solvers {
 
 /// Stalled: the loop stopped making progress (no new minimum of its merit over a
 /// window of iterations, solvers/stall_watch.hpp) before meeting the tolerance.
-enum class StopReason { Converged, MaxIterations, Diverged, NonFinite, SolverFailed, Stalled };
+/// CouplingLimit: hot forming's staggered loop took thermal.max_coupling_iterations
+/// steps, each flow solve converged, without meeting thermal.coupling_tolerance.
+enum class StopReason {
+  Converged,
+  MaxIterations,
+  Diverged,
+  NonFinite,
+  SolverFailed,
+  Stalled,
+  CouplingLimit
+};
 
 inline std::string_view stop_reason_name(StopReason reason) {
   switch (reason) {
@@ -22,6 +32,7 @@ inline std::string_view stop_reason_name(StopReason reason) {
   case StopReason::NonFinite: return "non_finite";
   case StopReason::SolverFailed: return "solver_failed";
   case StopReason::Stalled: return "stalled";
+  case StopReason::CouplingLimit: return "max_coupling_iterations";
   }
   return "unknown";
 }

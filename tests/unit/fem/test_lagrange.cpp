@@ -152,6 +152,37 @@ TEST(Lagrange, GradientsMatchCentralFiniteDifferences) {
   check_gradients_against_finite_differences<3>(2);
 }
 
+template <int dim> void check_hessians_against_finite_differences(int order) {
+  // The gradients are exact polynomials of degree ≤ 2 per variable: their central
+  // difference has no truncation error, only round-off ε/h ≈ 1e-11.
+  const Real h = 1e-5;
+  VectorX unused;
+  Eigen::Matrix<Real, dim, Eigen::Dynamic> plus, minus;
+  for (const Point<dim>& xi : sample_points<dim>()) {
+    const auto hessians = fem::tabulate_hessians<dim>(order, xi);
+    for (int g = 0; g < dim; ++g) {
+      Point<dim> forward = xi, backward = xi;
+      forward[g] += h;
+      backward[g] -= h;
+      fem::tabulate_shape<dim>(order, forward, unused, plus);
+      fem::tabulate_shape<dim>(order, backward, unused, minus);
+      for (int a = 0; a < static_cast<int>(hessians.size()); ++a)
+        for (int k = 0; k < dim; ++k) {
+          EXPECT_TRUE(approx(hessians[a](k, g), (plus(k, a) - minus(k, a)) / (2 * h), 0.0, 1e-8))
+              << "order " << order << ", d2N_" << a << "/dxi_" << k << "dxi_" << g;
+          EXPECT_EQ(hessians[a](k, g), hessians[a](g, k));
+        }
+    }
+  }
+}
+
+TEST(Lagrange, HessiansMatchCentralDifferencesOfTheGradients) {
+  check_hessians_against_finite_differences<2>(1);
+  check_hessians_against_finite_differences<2>(2);
+  check_hessians_against_finite_differences<3>(1);
+  check_hessians_against_finite_differences<3>(2);
+}
+
 template <int dim> void check_polynomial_reproduction(int order) {
   // Interpolating a polynomial of degree `order` per variable through the
   // nodes reproduces it and its gradient everywhere (Q_order completeness).

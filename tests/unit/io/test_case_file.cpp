@@ -384,7 +384,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"solver.coarse_levels", "2"},
       // thermal.enabled stays false: hybrid friction above is refused with it (its
       // switch itself: test_thermal_keys.cpp).
-      {"thermal.enabled", "\"false\""},
+      {"thermal.enabled", "false"}, // a switch: a JSON and TOML boolean
       {"thermal.temperature_unit", "\"kelvin\""},
       {"thermal.billet_temperature", "700.0"},
       {"thermal.density", "2.0"},

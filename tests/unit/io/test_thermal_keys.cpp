@@ -3,6 +3,7 @@
 // refusals with the key, file and line named.
 #include "formflow/core/error.hpp"
 #include "formflow/io/case.hpp"
+#include "formflow/io/case_json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -40,6 +41,18 @@ TEST(ThermalKeys, EnabledTakesATomlBooleanAndTheString) {
   error_in("[thermal]\nenabled = 1\n", "thermal.enabled", 2);
 }
 
+TEST(ThermalKeys, EnabledIsAJsonBooleanInTheCaseEcho) {
+  // summary.json's `case` block: a switch reads as true/false, not as a string.
+  const auto off = case_to_json(load_case("", {}));
+  const auto on = case_to_json(load_case_text("[thermal]\nenabled = true\n", "hot.toml", {}));
+  ASSERT_TRUE(off["thermal"]["enabled"].is_boolean()) << off["thermal"].dump();
+  ASSERT_TRUE(on["thermal"]["enabled"].is_boolean()) << on["thermal"].dump();
+  EXPECT_FALSE(off["thermal"]["enabled"].get<bool>());
+  EXPECT_TRUE(on["thermal"]["enabled"].get<bool>());
+  // The other enums stay strings.
+  EXPECT_TRUE(on["thermal"]["temperature_unit"].is_string());
+}
+
 TEST(ThermalKeys, TheUnitSetsSellarsTegartsAbsoluteTemperature) {
   const Case celsius =
       load_case_text("[material]\nlaw = \"sellars_tegart\"\ntemperature = 500\n", "hot.toml", {});
@@ -63,8 +76,15 @@ TEST(ThermalKeys, ASharesIsAFraction) {
   error_in("[thermal]\ntaylor_quinney = -0.1\n", "thermal.taylor_quinney", 2);
 }
 
-TEST(ThermalKeys, TrescaWithThermalIsRefusedForNow) {
-  error_in("[friction]\nlaw = \"tresca\"\nm = 0.5\n[thermal]\nenabled = true\n", "friction.law", 2);
+TEST(ThermalKeys, TrescaAndHybridWorkWithThermal) {
+  // Their shear yield is taken at the Γ3 points' temperature (test_contact_temperature).
+  EXPECT_TRUE(load_case_text("[friction]\nlaw = \"tresca\"\nm = 0.5\n[thermal]\nenabled = true\n",
+                             "hot.toml", {})
+                  .thermal.enabled);
+  EXPECT_TRUE(load_case_text("[friction]\nlaw = \"hybrid\"\nmu = 0.2\nm = 0.5\n[thermal]\n"
+                             "enabled = true\n",
+                             "hot.toml", {})
+                  .thermal.enabled);
 }
 
 TEST(ThermalKeys, ConditionTwoElevenIsCheckedOverTheTemperatureRange) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The Sellars–Tegart law and a law at one point's temperature (issue 18).
 #include "formflow/physics/flow_law.hpp"
+#include "formflow/physics/manufactured_thermal.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,6 +37,27 @@ TEST(SellarsTegart, SlopeIsTheDerivative) {
         (law.yield_stress(rate + step) - law.yield_stress(rate - step)) / (2 * step);
     EXPECT_NEAR(law.yield_stress_derivative(rate), numeric, 1e-7 * numeric) << rate;
   }
+}
+
+TEST(TemperatureSlope, IsTheDerivativeInTAtFixedRate) {
+  // ∂σ_p/∂T of both hot laws against central differences in T, step 1e-2 K: the scale
+  // of the T-dependence is R T²/(Q/n) ≈ 200 K, so truncation ≈ (1e-2/200)² ≈ 3e-9 relative,
+  // round-off ≈ 1e-16 σ/1e-2 K; asserted to 1e-6 relative.
+  const FlowLaw st = sellars_tegart(450);
+  FlowLaw hs;
+  HenselSpittel model;
+  model.A = 400, model.m1 = -2.5e-3, model.m3 = 0.12, model.m8 = 1e-4, model.temperature = 450;
+  hs.model = model;
+  for (const FlowLaw* law : {&st, static_cast<const FlowLaw*>(&hs)})
+    for (const Real rate : {1e-2, 0.3, 10.0, 300.0}) {
+      const Real step = 1e-2;
+      const Real numeric = (law_at_temperature(*law, 450 + step).yield_stress(rate) -
+                            law_at_temperature(*law, 450 - step).yield_stress(rate)) /
+                           (2 * step);
+      EXPECT_NEAR(yield_stress_temperature_slope(*law, rate), numeric, 1e-6 * std::abs(numeric))
+          << rate;
+      EXPECT_LT(numeric, 0.0); // both soften as T rises
+    }
 }
 
 TEST(SellarsTegart, SatisfiesConditionTwoElevenAndSoftensWithTemperature) {

@@ -21,6 +21,10 @@ struct HenselSpittel {
   }
   Real exponent() const { return m3 + m8 * temperature; }
   FlowResponse at(Real rate) const { return power_law_response(coefficient(), exponent(), rate); }
+  /// ∂σ_p/∂T at fixed rate: σ_p (m1 + m8 ln ε̄̇).
+  Real temperature_slope(Real rate) const {
+    return at(rate).viscosity * rate * (m1 + m8 * std::log(rate));
+  }
 };
 
 } // namespace formflow::physics

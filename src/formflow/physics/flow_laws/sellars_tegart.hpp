@@ -33,6 +33,14 @@ struct SellarsTegart {
     const Real stress = std::asinh(x) / alpha;
     return {stress / rate, x / (alpha * n * rate * std::sqrt(1.0 + x * x))};
   }
+  /// ∂σ_p/∂T at fixed rate: ∂x/∂T = −x Q/(n R T_abs²), so ∂σ_p/∂T = −x Q/(α_s n R T_abs²
+  /// √(1+x²)) (the coupled manufactured solution's body force needs it exactly).
+  Real temperature_slope(Real rate) const {
+    const Real x = std::exp((std::log(rate) + log_z_over_a_unit_rate()) / n);
+    const Real absolute = temperature + absolute_offset;
+    return -x * activation /
+           (alpha * n * gas_constant * absolute * absolute * std::sqrt(1.0 + x * x));
+  }
 };
 
 } // namespace formflow::physics
