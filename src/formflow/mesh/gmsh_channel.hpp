@@ -5,8 +5,8 @@
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/gmsh_session.hpp"
 
-#include <utility>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace formflow::mesh {
