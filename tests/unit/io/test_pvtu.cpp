@@ -52,7 +52,9 @@ TEST(Pvtu, PiecesMakeTheWholeGridWithItsFields) {
     }
     // A cut's nodes are in both pieces beside it: at least the whole mesh's nodes.
     EXPECT_GE(whole["n_points"].get<Index>(), mesh.n_nodes());
-    if (parts == 1) EXPECT_EQ(whole["n_points"].get<Index>(), mesh.n_nodes());
+    if (parts == 1) {
+      EXPECT_EQ(whole["n_points"].get<Index>(), mesh.n_nodes());
+    }
   }
 }
 
