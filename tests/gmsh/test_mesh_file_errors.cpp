@@ -98,6 +98,14 @@ TEST_F(MeshFile, MappedGroupAbsentFromTheFile) {
   EXPECT_TRUE(has_text(error_, "physical curves in the mesh: axis, front, ram, wall"));
 }
 
+TEST_F(MeshFile, MappedGroupOfAnotherDimension) {
+  // "domain" is the file's physical surface: a plane mesh's boundary parts are curves.
+  const int code = run_with(testing::two_squares(), "Q1", full_map + "die = \"domain\"\n");
+  expect_input_error(code, 11, "mesh.boundaries.die",
+                     "physical group \"domain\" is of dimension 2, not a curve");
+  EXPECT_TRUE(has_text(error_, "physical curves in the mesh: axis, front, ram, wall"));
+}
+
 TEST_F(MeshFile, UnmappedGroupOnTheBoundary) {
   const std::string without_front =
       "[mesh.boundaries]\nram = \"rear\"\naxis = \"symmetry\"\nwall = \"container\"\n";
@@ -112,8 +120,9 @@ TEST_F(MeshFile, BoundaryFacetWithoutLabel) {
   const std::string without_front =
       "[mesh.boundaries]\nram = \"rear\"\naxis = \"symmetry\"\nwall = \"container\"\n";
   const int code = run_with(mesh, "Q1", without_front);
-  expect_input_error(code, 6, "mesh.boundaries",
-                     "1 boundary facets are in no mapped physical curve, e.g. (2, 0)–(2, 1)");
+  expect_input_error(
+      code, 6, "mesh.boundaries",
+      "1 boundary facets are in no mapped physical curve, e.g. the segment (2, 0)–(2, 1)");
 }
 
 TEST_F(MeshFile, Triangles) {
