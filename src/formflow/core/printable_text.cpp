@@ -48,4 +48,10 @@ std::string printable_text(std::string_view text, std::size_t max_bytes) {
   return result;
 }
 
+std::string trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return {};
+  return std::string(text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1));
+}
+
 } // namespace formflow

@@ -18,4 +18,7 @@ std::size_t utf8_sequence_length(std::string_view text);
 /// is cut at a character boundary and ends with "…". Valid UTF-8 passes unchanged.
 std::string printable_text(std::string_view text, std::size_t max_bytes = 200);
 
+/// `text` without leading and trailing blanks (space, tab, CR, LF).
+std::string trimmed(std::string_view text);
+
 } // namespace formflow

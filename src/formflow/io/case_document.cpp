@@ -18,12 +18,6 @@ namespace formflow::io {
 
 namespace {
 
-std::string trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  return std::string(text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1));
-}
-
 /// One-line message and hint from toml11's multi-line, underlined syntax error.
 InputError syntax_error(const std::string& path, const toml::syntax_error& error) {
   std::istringstream lines(error.what());

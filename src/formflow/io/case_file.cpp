@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Reading a TOML case file and `--set` overrides into a validated Case (toml11 v3).
 #include "formflow/core/error.hpp"
+#include "formflow/core/printable_text.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_document.hpp"
 #include "formflow/io/case_keys.hpp"
@@ -36,12 +37,6 @@ struct Origin {
 
 int line_of(TomlLines& lines, const toml::value& value) {
   return static_cast<int>(lines.position(value).line);
-}
-
-std::string trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  return std::string(text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1));
 }
 
 /// Suggests the nearest sizes that fit every length: "1.25 (= 10/8) or 2.5 (= 10/4)".

@@ -16,9 +16,6 @@ namespace {
 
 using Subject = MeshFileError::Subject;
 
-// Gmsh element type numbers (gmsh.h getElementProperties, .msh format docs).
-constexpr int gmsh_quad4 = 3, gmsh_quad9 = 10, gmsh_quad8 = 16;
-
 // Gmsh numbers quadrilateral nodes corners first (counter-clockwise), then the
 // mid-edge nodes (bottom, right, top, left), then the centre — the VTK 9/28
 // order. Ours is lexicographic (fem/lagrange.hpp):
@@ -36,7 +33,7 @@ constexpr std::array<int, 9> lexicographic_of_gmsh_q2 = {0, 2, 8, 6, 1, 5, 7, 3,
 
 /// The 2D elements as Gmsh node tags in our lexicographic order, one row of
 /// `per_cell` tags per cell.
-std::vector<std::size_t> read_cells(int order) {
+std::vector<std::size_t> read_plane_cells(int order) {
   std::vector<int> types;
   std::vector<std::vector<std::size_t>> element_tags, node_tags;
   // A solid mesh's boundary quadrilaterals are not a plane mesh: say what the file is.
@@ -55,10 +52,10 @@ std::vector<std::size_t> read_cells(int order) {
                               "Mesh.SecondOrderIncomplete = 0";
   for (std::size_t k = 0; k < types.size(); ++k) {
     const int type = types[k];
-    if (type == gmsh_quad4 || type == gmsh_quad9) continue;
+    if (type == gmsh_reading::quad4 || type == gmsh_reading::quad9) continue;
     const std::string found = fmt::format("{} elements of type \"{}\"", element_tags[k].size(),
                                           gmsh_reading::element_type_name(type));
-    if (type == gmsh_quad8)
+    if (type == gmsh_reading::quad8)
       throw MeshFileError(Subject::Element, "",
                           found + ": 8-node serendipity quadrilaterals are not supported", q2_hint);
     throw MeshFileError(Subject::Element, "", found + ": formflow needs quadrilaterals",
@@ -68,7 +65,7 @@ std::vector<std::size_t> read_cells(int order) {
   if (types.size() > 1)
     throw MeshFileError(Subject::Element, "", "the mesh mixes 4-node and 9-node quadrilaterals",
                         "use one element order throughout");
-  const int file_order = types.front() == gmsh_quad4 ? 1 : 2;
+  const int file_order = types.front() == gmsh_reading::quad4 ? 1 : 2;
   if (file_order != order)
     throw MeshFileError(
         Subject::Element, "",
@@ -119,7 +116,7 @@ int lexicographic_of_gmsh_node(int order, int gmsh_node) {
 Mesh<2> mesh_from_gmsh_model(const GmshSession& session,
                              const std::vector<PhysicalBoundary>& boundaries, int order) {
   return session.call([&] {
-    const std::vector<std::size_t> cell_tags = read_cells(order);
+    const std::vector<std::size_t> cell_tags = read_plane_cells(order);
     Mesh<2> mesh;
     mesh.order = order;
     const Index per_cell = (order + 1) * (order + 1);

@@ -17,9 +17,6 @@ namespace {
 
 using Subject = MeshFileError::Subject;
 
-// Gmsh element type numbers (.msh format documentation).
-constexpr int gmsh_line2 = 1, gmsh_line3 = 8, gmsh_quad4 = 3, gmsh_quad9 = 10;
-
 /// A boundary facet by its corner nodes, sorted: the two ends of a plane cell's
 /// side, the four corners of a solid cell's face.
 template <int dim> using FacetKey = std::array<Index, dim == 2 ? 2 : 4>;
@@ -101,8 +98,8 @@ std::vector<FacetKey<dim>> group_facets(int tag,
                                         const std::unordered_map<std::size_t, Index>& index_of,
                                         const std::string& name) {
   using W = Words<dim>;
-  constexpr int first_order = dim == 2 ? gmsh_line2 : gmsh_quad4;
-  constexpr int second_order = dim == 2 ? gmsh_line3 : gmsh_quad9;
+  constexpr int first_order = dim == 2 ? line2 : quad4;
+  constexpr int second_order = dim == 2 ? line3 : quad9;
   std::vector<int> entities;
   gmsh::model::getEntitiesForPhysicalGroup(dim - 1, tag, entities);
   std::vector<FacetKey<dim>> facets;

@@ -19,17 +19,14 @@ namespace {
 
 using Subject = MeshFileError::Subject;
 
-// Gmsh element type numbers (.msh format documentation).
-constexpr int gmsh_quad4 = 3, gmsh_quad9 = 10, gmsh_hexa8 = 5, gmsh_hexa27 = 12, gmsh_hexa20 = 17;
-
 /// Gmsh node k of a hexahedron of `order` → our lexicographic node, from the
 /// reference coordinates Gmsh gives (the cube [−1, 1]³): no table to get wrong.
 std::vector<int> hex_node_map(int order) {
   std::string name;
   int dim = 0, element_order = 0, n_nodes = 0, n_primary = 0;
   std::vector<double> reference;
-  gmsh::model::mesh::getElementProperties(order == 1 ? gmsh_hexa8 : gmsh_hexa27, name, dim,
-                                          element_order, n_nodes, reference, n_primary);
+  gmsh::model::mesh::getElementProperties(order == 1 ? gmsh_reading::hexa8 : gmsh_reading::hexa27,
+                                          name, dim, element_order, n_nodes, reference, n_primary);
   const int n = order + 1;
   std::vector<int> map(static_cast<std::size_t>(n_nodes));
   std::vector<bool> taken(static_cast<std::size_t>(n * n * n), false);
@@ -49,7 +46,7 @@ std::vector<int> hex_node_map(int order) {
 
 /// The 3D elements as Gmsh node tags in our lexicographic order, one row of
 /// (order + 1)³ tags per cell.
-std::vector<std::size_t> read_cells(int order) {
+std::vector<std::size_t> read_solid_cells(int order) {
   std::vector<int> entity_types;
   std::vector<std::vector<std::size_t>> entity_elements, entity_nodes;
   gmsh::model::mesh::getElements(entity_types, entity_elements, entity_nodes, 3, -1);
@@ -77,10 +74,10 @@ std::vector<std::size_t> read_cells(int order) {
                               "Mesh.SecondOrderIncomplete = 0";
   for (std::size_t k = 0; k < types.size(); ++k) {
     const int type = types[k];
-    if (type == gmsh_hexa8 || type == gmsh_hexa27) continue;
+    if (type == gmsh_reading::hexa8 || type == gmsh_reading::hexa27) continue;
     const std::string found = fmt::format("{} elements of type \"{}\"", element_tags[k].size(),
                                           gmsh_reading::element_type_name(type));
-    if (type == gmsh_hexa20)
+    if (type == gmsh_reading::hexa20)
       throw MeshFileError(Subject::Element, "",
                           found + ": 20-node serendipity hexahedra are not supported; formflow "
                                   "needs 8-node (Q1) or 27-node (Q2) hexahedra",
@@ -93,7 +90,7 @@ std::vector<std::size_t> read_cells(int order) {
   if (types.size() > 1)
     throw MeshFileError(Subject::Element, "", "the mesh mixes 8-node and 27-node hexahedra",
                         "use one element order throughout");
-  const int file_order = types.front() == gmsh_hexa8 ? 1 : 2;
+  const int file_order = types.front() == gmsh_reading::hexa8 ? 1 : 2;
   if (file_order != order)
     throw MeshFileError(
         Subject::Element, "",
@@ -148,7 +145,7 @@ int lexicographic_of_gmsh_hex_node(int order, int gmsh_node) {
 Mesh<3> solid_mesh_from_gmsh_model(const GmshSession& session,
                                    const std::vector<PhysicalBoundary>& boundaries, int order) {
   return session.call([&] {
-    const std::vector<std::size_t> cell_tags = read_cells(order);
+    const std::vector<std::size_t> cell_tags = read_solid_cells(order);
     Mesh<3> mesh;
     mesh.order = order;
     const Index per_cell = (order + 1) * (order + 1) * (order + 1);
@@ -187,7 +184,8 @@ void add_solid_mesh_to_gmsh_model(const GmshSession& session, const Mesh<3>& mes
       for (const int local : map)
         element_nodes.push_back(static_cast<std::size_t>(mesh.cells(local, cell)) + 1);
     }
-    gmsh::model::mesh::addElementsByType(volume, order == 1 ? gmsh_hexa8 : gmsh_hexa27,
+    gmsh::model::mesh::addElementsByType(volume,
+                                         order == 1 ? gmsh_reading::hexa8 : gmsh_reading::hexa27,
                                          element_tags, element_nodes);
     gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {volume}), "domain");
 
@@ -208,8 +206,8 @@ void add_solid_mesh_to_gmsh_model(const GmshSession& session, const Mesh<3>& mes
       }
       if (face_tags.empty()) continue;
       const int surface = gmsh::model::addDiscreteEntity(2);
-      gmsh::model::mesh::addElementsByType(surface, order == 1 ? gmsh_quad4 : gmsh_quad9, face_tags,
-                                           face_nodes);
+      gmsh::model::mesh::addElementsByType(
+          surface, order == 1 ? gmsh_reading::quad4 : gmsh_reading::quad9, face_tags, face_nodes);
       gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}),
                                    std::string(label_name(label)));
     }

@@ -13,7 +13,7 @@ namespace formflow::io::plot {
 
 namespace {
 
-const Rgb pressure_colour{0.12, 0.31, 0.61};
+const Rgb contact_pressure_colour{0.12, 0.31, 0.61};
 const Rgb friction_colour{0.85, 0.37, 0.01};
 const Rgb stick_colour{0.55, 0.75, 0.55};
 
@@ -95,7 +95,7 @@ void label_off_scale(const Canvas& canvas, const Axes& axes,
     const double x = axes.px(sample.arc_length);
     if (value <= axes.y_axis().hi || x - last_x < 40.0) continue;
     canvas.text({x, axes.area().y - 3}, fmt::format("▲ {:.3g}", value),
-                Font{11.5, true, pressure_colour}, HAlign::Centre, VAlign::Bottom);
+                Font{11.5, true, contact_pressure_colour}, HAlign::Centre, VAlign::Bottom);
     last_x = x;
   }
 }
@@ -146,11 +146,11 @@ void draw_contact(const Canvas& canvas, const PictureData& data) {
     canvas.text({x - 8, area.y + 8}, "◀ container wall", font, HAlign::Right, VAlign::Top);
     canvas.text({x + 8, area.y + 8}, "die face ▶", font, HAlign::Left, VAlign::Top);
   }
-  canvas.polyline(curve(axes, contact, false), {2.2, pressure_colour});
+  canvas.polyline(curve(axes, contact, false), {2.2, contact_pressure_colour});
   canvas.polyline(curve(axes, contact, true), {2.2, friction_colour});
   canvas.unclip();
   label_off_scale(canvas, axes, contact);
-  std::vector<LegendEntry> legend = {{"contact pressure −σ_{N}", {2.2, pressure_colour}},
+  std::vector<LegendEntry> legend = {{"contact pressure −σ_{N}", {2.2, contact_pressure_colour}},
                                      {"friction stress |σ_{T}|", {2.2, friction_colour}}};
   if (std::any_of(contact.begin(), contact.end(), [](const auto& s) { return s.sticking; }))
     legend.push_back({"sticking (u_{T} ≈ 0)", {12.0, stick_colour, 0.35}});

@@ -13,7 +13,7 @@ namespace formflow::io::plot {
 namespace {
 
 const Rgb change_colour{0.12, 0.31, 0.61};
-const Rgb pressure_colour{0.85, 0.37, 0.01};
+const Rgb ram_pressure_colour{0.85, 0.37, 0.01};
 const Rgb tolerance_colour{0.75, 0.1, 0.1};
 
 /// Whole iterations only: a fractional tick on an iteration axis is noise.
@@ -74,7 +74,7 @@ void draw_convergence(const Canvas& canvas, const PictureData& data) {
   const Axes change(graph_area(), x, change_axis(history, tolerance));
   const Axes pressure(graph_area(), x, pressure_axis(history));
   change.draw(canvas, true);
-  pressure.draw_right(canvas, pressure_colour);
+  pressure.draw_right(canvas, ram_pressure_colour);
   const Rect& area = change.area();
 
   canvas.clip(area);
@@ -88,8 +88,8 @@ void draw_convergence(const Canvas& canvas, const PictureData& data) {
     change_points.push_back(change.at(record.iteration, value));
     pressure_points.push_back(pressure.at(record.iteration, record.pressure));
   }
-  canvas.polyline(pressure_points, {1.8, pressure_colour});
-  draw_markers(canvas, pressure_points, pressure_colour);
+  canvas.polyline(pressure_points, {1.8, ram_pressure_colour});
+  draw_markers(canvas, pressure_points, ram_pressure_colour);
   canvas.polyline(change_points, {2.0, change_colour});
   draw_markers(canvas, change_points, change_colour);
   canvas.unclip();
@@ -97,7 +97,7 @@ void draw_convergence(const Canvas& canvas, const PictureData& data) {
   const std::vector<LegendEntry> legend = {
       {"relative change (left axis)", {2.0, change_colour}},
       {fmt::format("tolerance δ = {:g}", tolerance), {1.6, tolerance_colour, 1.0, 9.0}},
-      {"pressure (right axis)", {1.8, pressure_colour}}};
+      {"pressure (right axis)", {1.8, ram_pressure_colour}}};
   draw_legend(canvas, {area.right() - 10, area.y + 10}, legend);
 }
 
