@@ -100,8 +100,8 @@ TEST_F(MeshFile, MappedGroupAbsentFromTheFile) {
 
 TEST_F(MeshFile, MappedGroupOfAnotherDimension) {
   // "domain" is the file's physical surface: a plane mesh's boundary parts are curves.
-  const int code = run_with(testing::two_squares(), "Q1", full_map + "die = \"domain\"\n");
-  expect_input_error(code, 11, "mesh.boundaries.die",
+  const int code = run_with(testing::two_squares(), "Q1", full_map + "domain = \"die\"\n");
+  expect_input_error(code, 11, "mesh.boundaries.domain",
                      "physical group \"domain\" is of dimension 2, not a curve");
   EXPECT_TRUE(has_text(error_, "physical curves in the mesh: axis, front, ram, wall"));
 }
