@@ -157,6 +157,14 @@ const DistributedCase round_mixed{
     {{"mesh.size", "0.5"}, {"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}},
     1e-7};
 
+/// Exact Coulomb friction (the augmented Lagrangian, its multipliers updated after every
+/// Newton step from the replicated velocity).
+const DistributedCase paper_exact_friction{
+    "paper_exact_friction",
+    "",
+    {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}, {"friction.regularization", "none"}},
+    1e-7};
+
 /// The paper's case on 4 ranks (oversubscribed) as a user types it: no solver.linear.
 DistributedCase by_default(DistributedCase c) {
   c.name += "_petsc_by_default";
@@ -174,6 +182,7 @@ DistributedCase by_secant(DistributedCase c) {
 INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
                          ::testing::Values(std::pair(paper_penalty, 2), std::pair(paper_mixed, 2),
                                            std::pair(round_penalty, 2), std::pair(round_mixed, 2),
+                                           std::pair(paper_exact_friction, 2),
                                            std::pair(by_default(paper_penalty), 4),
                                            std::pair(by_secant(paper_penalty), 2)),
                          [](const auto& info) {
@@ -206,10 +215,11 @@ TEST(DistributedRun, ASerialOnlySolverIsRefusedNamingTheKey) {
                       "solver.linear: on 2 MPI ranks", scratch);
 }
 
-TEST(DistributedRun, ExactFrictionIsRefusedNamingTheKey) {
+TEST(DistributedRun, ExactStickIsRefusedNamingTheKey) {
   testing::ScratchDirectory scratch("formflow-mpi");
-  expect_refused_once(run_mpi(paper_penalty, 2, scratch, "--set friction.regularization=none"),
-                      "friction.regularization: on 2 MPI ranks", scratch);
+  expect_refused_once(run_mpi(paper_exact_friction, 2, scratch,
+                              "--set contact.normals=nodes --set friction.stick=exact"),
+                      "friction.stick: on 2 MPI ranks", scratch);
 }
 
 } // namespace

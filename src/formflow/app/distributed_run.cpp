@@ -60,12 +60,15 @@ void check_distributed(const io::Case& case_) {
     refuse("solver.load_error", "has no error estimate yet",
            "set solver.load_error = \"none\", or run as one process");
   const SolvePlan plan = make_solve_plan(case_);
-  if (plan.loop == solvers::LoopKind::Secant || plan.loop == solvers::LoopKind::Newton) return;
-  if (plan.loop == solvers::LoopKind::AugmentedSecant ||
+  // Exact friction's multipliers are updated per Γ3 point from the replicated velocity,
+  // alike on every rank; its exact stick condenses T, which a rank holds a share of.
+  if (plan.shape.exact_stick)
+    refuse("friction.stick", "imposes no exact stick yet (it condenses the whole tangent)",
+           "set friction.stick = \"augmented\", or run as one process");
+  if (plan.loop == solvers::LoopKind::Secant || plan.loop == solvers::LoopKind::Newton ||
+      plan.loop == solvers::LoopKind::AugmentedSecant ||
       plan.loop == solvers::LoopKind::AugmentedNewton)
-    refuse("friction.regularization", "serves the regularised friction only",
-           "set friction.regularization to the d_T regularisation (the paper's), or run as one "
-           "process");
+    return;
   if (plan.loop == solvers::LoopKind::SaddlePointSecant)
     refuse("formulation.pressure", "condenses the pressure only (no saddle point yet)",
            "set formulation.pressure = \"P1disc\" or \"P0\", or run as one process");

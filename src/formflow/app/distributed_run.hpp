@@ -24,9 +24,10 @@ inline bool is_output_rank() {
 void stop_if_signalled();
 
 /// On more than one rank, refuses (InputError naming the key, before the solve) what the
-/// distributed slice does not serve: a linear solver other than PETSc, any loop but the
-/// plain secant iteration and Newton (penalty or condensed mixed with d > 0, regularised
-/// friction), hot forming, the load's error estimate, the manufactured solutions.
+/// distributed slice does not serve: a linear solver other than PETSc, any loop but
+/// secant and Newton (penalty or condensed mixed with d > 0; regularised or exact
+/// friction, without exact stick), hot forming, the load's error estimate, the
+/// manufactured solutions.
 void check_distributed(const io::Case& case_);
 
 /// `case_` loaded from `path` with `overrides`, and on more than one rank with PETSc as
