@@ -97,7 +97,7 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
   // Exact constraints on the step (exact friction's stuck nodes): δ = g + z, z = P z,
   // solved on the condensed tangent (solvers/exact_stick.hpp). One rank only: the
   // condensation of a rank's share of T is not its share of the condensed matrix (exact
-  // friction is refused on several ranks, app/distributed_run.cpp).
+  // stick is refused on several ranks, app/distributed_run.cpp).
   std::vector<StepConstraint> constraints = work.problem.step_constraints(velocity);
   const bool constrained = !constraints.empty();
   std::optional<StepCondensation> condensation;
