@@ -2,8 +2,9 @@
 // Distributed runs (issue 20, docs/petsc.md): `mpirun -np N formflow run` with each
 // rank assembling its own slab of cells into one MPIAIJ matrix gives the serial
 // CHOLMOD ram reaction, for the paper's 2D case and a 3D round quarter, penalty and
-// condensed mixed, with friction; rank 0 alone writes and speaks; bad input is one
-// message and exit 2 on every rank.
+// condensed mixed, with friction, by Newton (the default method: its coarse levels,
+// tangent shares and GMRES on every rank) and by the secant iteration; rank 0 alone
+// writes and speaks; bad input is one message and exit 2 on every rank.
 #include "formflow/app/simulation.hpp"
 #include "formflow/io/case.hpp"
 #include "support/approx.hpp"
@@ -33,6 +34,10 @@ struct DistributedCase {
   std::string case_path;
   std::vector<io::Override> edits;
   Real delta; ///< solver.tolerance
+  /// solver.method; empty: the default (Newton, with its coarse levels).
+  std::string method = {};
+  /// Leave solver.linear unset on the mpirun command line: PETSc is the default on N > 1 ranks.
+  bool petsc_by_default = false;
 };
 
 /// gtest's name of a parameter (its bytes otherwise).
@@ -42,8 +47,7 @@ void PrintTo(const DistributedCase& c, std::ostream* out) {
 
 std::vector<io::Override> all_edits(const DistributedCase& c) {
   std::vector<io::Override> edits = c.edits;
-  // The distributed slice runs the paper's secant iteration (docs/petsc.md).
-  edits.emplace_back("solver.method", "secant");
+  if (!c.method.empty()) edits.emplace_back("solver.method", c.method);
   edits.emplace_back("solver.tolerance", fmt::format("{}", c.delta));
   return edits;
 }
@@ -71,8 +75,8 @@ MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirect
   if (!c.case_path.empty())
     command += " " + quoted(std::string(FORMFLOW_SOURCE_DIR) + "/" + c.case_path);
   for (const auto& [key, value] : all_edits(c)) command += " --set " + quoted(key + "=" + value);
-  command += " --set solver.linear=petsc " + extra + " > " +
-             quoted((scratch / "out.txt").string()) + " 2> " +
+  if (!c.petsc_by_default) command += " --set solver.linear=petsc";
+  command += " " + extra + " > " + quoted((scratch / "out.txt").string()) + " 2> " +
              quoted((scratch / "err.txt").string());
   const int status = std::system(command.c_str());
   MpiRun run;
@@ -120,6 +124,8 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
             << std::abs(reaction - reference) / std::abs(reference) << "\n";
   EXPECT_TRUE(testing::approx(reaction, reference, tolerance));
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
+  // Direct MUMPS, also when solver.linear was left unset (the default on N > 1 ranks).
+  EXPECT_EQ(run.summary.at("linear_algebra").at("solver"), "petsc-preonly-cholesky");
   // The fields once as fields.vtu, and as fields.pvtu with one piece per rank.
   const auto results = scratch / "results";
   EXPECT_TRUE(std::filesystem::exists(results / "fields.vtu"));
@@ -151,10 +157,34 @@ const DistributedCase round_mixed{
     {{"mesh.size", "0.5"}, {"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}},
     1e-7};
 
+/// Exact Coulomb friction (the augmented Lagrangian, its multipliers updated after every
+/// Newton step from the replicated velocity).
+const DistributedCase paper_exact_friction{
+    "paper_exact_friction",
+    "",
+    {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}, {"friction.regularization", "none"}},
+    1e-7};
+
+/// The paper's case on 4 ranks (oversubscribed) as a user types it: no solver.linear.
+DistributedCase by_default(DistributedCase c) {
+  c.name += "_petsc_by_default";
+  c.petsc_by_default = true;
+  return c;
+}
+
+/// The paper's secant iteration (the first slice's loop).
+DistributedCase by_secant(DistributedCase c) {
+  c.name += "_secant";
+  c.method = "secant";
+  return c;
+}
+
 INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
                          ::testing::Values(std::pair(paper_penalty, 2), std::pair(paper_mixed, 2),
                                            std::pair(round_penalty, 2), std::pair(round_mixed, 2),
-                                           std::pair(paper_penalty, 4)),
+                                           std::pair(paper_exact_friction, 2),
+                                           std::pair(by_default(paper_penalty), 4),
+                                           std::pair(by_secant(paper_penalty), 2)),
                          [](const auto& info) {
                            return info.param.first.name + "_np" + std::to_string(info.param.second);
                          });
@@ -185,10 +215,11 @@ TEST(DistributedRun, ASerialOnlySolverIsRefusedNamingTheKey) {
                       "solver.linear: on 2 MPI ranks", scratch);
 }
 
-TEST(DistributedRun, NewtonIsRefusedNamingTheKey) {
+TEST(DistributedRun, ExactStickIsRefusedNamingTheKey) {
   testing::ScratchDirectory scratch("formflow-mpi");
-  expect_refused_once(run_mpi(paper_penalty, 2, scratch, "--set solver.method=newton"),
-                      "solver.method: on 2 MPI ranks", scratch);
+  expect_refused_once(run_mpi(paper_exact_friction, 2, scratch,
+                              "--set contact.normals=nodes --set friction.stick=exact"),
+                      "friction.stick: on 2 MPI ranks", scratch);
 }
 
 } // namespace

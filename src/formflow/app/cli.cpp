@@ -79,7 +79,8 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc, char**
 }
 
 int run_case(const Options& options) {
-  const io::Case case_ = io::load_case(options.case_path, parse_assignments(options.assignments));
+  // On several MPI ranks solver.linear defaults to PETSc (app/distributed_run.hpp).
+  const io::Case case_ = load_run_case(options.case_path, parse_assignments(options.assignments));
   print_warnings(case_);
   check_distributed(case_); // several MPI ranks: what they cannot serve yet, before any output
   // Before the solve: a -o that cannot take the results costs nothing (exit 2).

@@ -60,19 +60,30 @@ void check_distributed(const io::Case& case_) {
     refuse("solver.load_error", "has no error estimate yet",
            "set solver.load_error = \"none\", or run as one process");
   const SolvePlan plan = make_solve_plan(case_);
-  if (plan.loop == solvers::LoopKind::Secant) return;
-  if (case_.solver.method == solvers::NonlinearMethod::Newton)
-    refuse("solver.method", "runs the secant iteration only (no Newton tangent yet)",
-           "set solver.method = \"secant\"");
-  if (plan.loop == solvers::LoopKind::AugmentedSecant)
-    refuse("friction.regularization", "serves the regularised friction only",
-           "set friction.regularization to the d_T regularisation (the paper's), or run as one "
-           "process");
+  // Exact friction's multipliers are updated per Γ3 point from the replicated velocity,
+  // alike on every rank; its exact stick condenses T, which a rank holds a share of.
+  if (plan.shape.exact_stick)
+    refuse("friction.stick", "imposes no exact stick yet (it condenses the whole tangent)",
+           "set friction.stick = \"augmented\", or run as one process");
+  if (plan.loop == solvers::LoopKind::Secant || plan.loop == solvers::LoopKind::Newton ||
+      plan.loop == solvers::LoopKind::AugmentedSecant ||
+      plan.loop == solvers::LoopKind::AugmentedNewton)
+    return;
   if (plan.loop == solvers::LoopKind::SaddlePointSecant)
     refuse("formulation.pressure", "condenses the pressure only (no saddle point yet)",
            "set formulation.pressure = \"P1disc\" or \"P0\", or run as one process");
   refuse("penalty.d", "serves penalised constraints only (d > 0, d_N > 0: no Uzawa steps yet)",
          "give penalty.d and penalty.dN positive values, or run as one process");
+}
+
+io::Case load_run_case(const std::string& path, std::vector<io::Override> overrides) {
+  io::Case case_ = io::load_case(path, overrides);
+  if (!distribution().distributed() || case_.key_locations.count("solver.linear") != 0 ||
+      case_.solver.linear == solvers::LinearSolverKind::Petsc)
+    return case_;
+  // Left at its default (CHOLMOD, serial only): PETSc, as if given last on the command line.
+  overrides.emplace_back("solver.linear", "petsc");
+  return io::load_case(path, overrides);
 }
 
 } // namespace formflow::app

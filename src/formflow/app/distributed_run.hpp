@@ -24,9 +24,16 @@ inline bool is_output_rank() {
 void stop_if_signalled();
 
 /// On more than one rank, refuses (InputError naming the key, before the solve) what the
-/// distributed slice does not serve: a linear solver other than PETSc, any loop but the
-/// plain secant iteration (penalty or condensed mixed with d > 0, regularised friction),
-/// hot forming, the load's error estimate, the manufactured solutions.
+/// distributed slice does not serve: a linear solver other than PETSc, any loop but
+/// secant and Newton (penalty or condensed mixed with d > 0; regularised or exact
+/// friction, without exact stick), hot forming, the load's error estimate, the
+/// manufactured solutions.
 void check_distributed(const io::Case& case_);
+
+/// `case_` loaded from `path` with `overrides`, and on more than one rank with PETSc as
+/// the default of solver.linear (the one distributed back-end: `mpirun -np 2 formflow
+/// run case.toml` runs): a case that sets solver.linear keeps its choice (and
+/// check_distributed refuses any but PETSc, naming the key).
+io::Case load_run_case(const std::string& path, std::vector<io::Override> overrides);
 
 } // namespace formflow::app

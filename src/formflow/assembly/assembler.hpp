@@ -28,6 +28,10 @@ template <int dim> struct AssemblyRequest {
   std::span<const ContactPoint<dim>> contact;
   const NewtonDuals<dim>* duals = nullptr;     ///< Tangent: null or empty is the primal choice
   UnsymmetricTangent<dim>* coupling = nullptr; ///< Tangent: the unsymmetric rest, if wanted
+  /// A distributed run's Secant, Force and Tangent passes visit the rank's own cells
+  /// only (the caller adds the ranks' results up); true: every cell, as on one rank
+  /// (a per-cell quantity wanted whole on every rank).
+  bool every_cell = false;
 };
 
 template <int dim> class Assembler {

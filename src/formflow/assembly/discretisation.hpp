@@ -14,6 +14,7 @@
 #include "formflow/physics/friction.hpp"
 #include "formflow/physics/process.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <span>
 #include <vector>
@@ -46,6 +47,11 @@ public:
   /// The cells whose matrices and loads this rank assembles (ascending): all cells, or
   /// in a distributed run its slab (mesh/cell_partition.hpp).
   const std::vector<Index>& assembled_cells() const { return assembled_cells_; }
+  /// Whether `cell` is one of assembled_cells() (always, on one rank).
+  bool assembles(Index cell) const {
+    return !settings_.distribution.distributed() ||
+           std::binary_search(assembled_cells_.begin(), assembled_cells_.end(), cell);
+  }
   const Distribution& distribution() const { return settings_.distribution; }
   const DirichletConstraints& constraints() const { return constraints_; }
   Index n_dofs() const { return mesh_.n_nodes() * dim; }

@@ -14,7 +14,8 @@ namespace formflow::assembly {
 struct Distribution {
   int rank = 0;
   int size = 1;
-  /// Replaces every entry by its sum over the ranks (MPI_Allreduce); collective.
+  /// Replaces every entry by its sum over the ranks; collective, and the result is the
+  /// same bits on every rank (their decisions are taken from it).
   std::function<void(std::span<Real>)> sum_over_ranks;
   bool distributed() const { return size > 1; }
 };

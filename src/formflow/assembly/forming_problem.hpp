@@ -56,6 +56,8 @@ public:
   /// full-ε̇ term and dτ_f; empty for the deviatoric form without friction).
   /// Without `tangent` no matrix is built: a residual costs one pass over the
   /// quadrature points (the line search). The exact residual has thresholds = τ_f(u).
+  /// A distributed run assembles its own cells: `tangent` and `coupling` are its shares,
+  /// the internal force is summed over the ranks (whole, the same on every rank).
   /// Exact friction: the traction proj(λ̂ + r u_T) with `friction_multipliers` λ̂
   /// frozen (null: 0); its semismooth derivative at fixed τ_f goes into `tangent`
   /// (r P at stick, s r (P − t̂ t̂ᵀ) at slip), its τ_f derivative t̂ dτ_f into `coupling`.
@@ -64,7 +66,8 @@ public:
                        LinearSystem* tangent = nullptr, UnsymmetricTangent<dim>* coupling = nullptr,
                        const FrictionMultipliers<dim>* friction_multipliers = nullptr) const;
 
-  /// y_f += N x_f for the coupling N of assemble_newton (free dof vectors).
+  /// y_f += N x_f for the coupling N of assemble_newton (free dof vectors). A distributed
+  /// run's coupling is its own cells' share, and so is the product (the ranks' add up).
   void apply_coupling(const UnsymmetricTangent<dim>& coupling, const VectorX& x_free,
                       VectorX& y_free) const;
 

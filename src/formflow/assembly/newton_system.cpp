@@ -61,6 +61,12 @@ void FormingProblem<dim>::assemble_newton(
   request.coupling = coupling;
   ScatterSink<dim> sink(mesh_, plan(), constraints().values, tangent, &internal_force);
   assembler_->run(request, &sink);
+  // A distributed run (issue 20): the tangent and the coupling stay this rank's shares
+  // (its own cells), the force is wanted whole on every rank (the line search, the stop
+  // rule and the reaction read it): the ranks' forces add up.
+  if (const Distribution& distribution = discretisation_->distribution();
+      distribution.distributed())
+    distribution.sum_over_ranks(std::span<Real>(internal_force.data(), internal_force.size()));
 }
 
 template <int dim>
@@ -99,6 +105,8 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
   const int n_face_q = facet_rule().size();
   for (std::size_t position = 0; position < discretisation_->contact_facets().size(); ++position) {
     const mesh::BoundaryFacet& facet = mesh_.facets[discretisation_->contact_facets()[position]];
+    // A distributed run's share: the faces of its own cells (the cell part above is too).
+    if (!discretisation_->assembles(facet.cell)) continue;
     gather(facet.cell, nullptr, coordinates, unused);
     reinit_contact(facet_values, coordinates, static_cast<Index>(position));
     for (int q = 0; q < n_face_q; ++q) {
@@ -142,6 +150,8 @@ void FormingProblem<dim>::apply_coupling_transpose(const UnsymmetricTangent<dim>
   // (A the mollifier, the normals fixed), S the per-point (∂τ_f/∂σ̄_N) ĝ, B the
   // tractions' nodal forces ∫ φ_a · dΓ. So N_fᵀ x = Mᵀ Sᵀ Bᵀ x, in two face loops.
   FF_ASSERT(multipliers_ == nullptr, "the friction coupling's transpose is the penalty contact's");
+  FF_ASSERT(!discretisation_->distribution().distributed(),
+            "the adjoint (the load's error estimate) runs on one rank");
   fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
   typename fem::CellValues<dim>::Gradients coordinates, unused;
   const int n_face_q = facet_rule().size();
@@ -214,6 +224,7 @@ VectorX FormingProblem<dim>::weighted_cell_forces(const VectorX& u,
   request.velocity = &u;
   if (!physics::friction_vanishes(settings_.friction)) request.contact = state;
   request.duals = &primal;
+  request.every_cell = true; // each cell's own value, on every rank
   VectorX per_cell = VectorX::Zero(mesh_.n_cells());
   WeightedForceSink<dim> sink(mesh_, weight, per_cell);
   assembler_->run(request, &sink);

@@ -36,8 +36,9 @@ public:
     IsRowMajor = false
   };
 
-  JacobianOperator(const assembly::SparseMatrix& lower, const CouplingProduct& coupling)
-      : lower_(lower), coupling_(coupling) {}
+  JacobianOperator(const assembly::SparseMatrix& lower, const CouplingProduct& coupling,
+                   const ShareSum& add_up_shares)
+      : lower_(lower), coupling_(coupling), add_up_shares_(add_up_shares) {}
   Eigen::Index rows() const { return lower_.rows(); }
   Eigen::Index cols() const { return lower_.cols(); }
 
@@ -50,11 +51,13 @@ public:
   void apply(const VectorX& x, VectorX& y) const {
     y.noalias() = lower_.selfadjointView<Eigen::Lower>() * x;
     coupling_(x, y);
+    if (add_up_shares_) add_up_shares_(y); // a distributed run's shares of J x
   }
 
 private:
   const assembly::SparseMatrix& lower_;
   const CouplingProduct& coupling_;
+  const ShareSum& add_up_shares_;
 };
 
 /// T⁻¹ from the factorisation held by a LinearSolver (already computed).
@@ -66,7 +69,7 @@ public:
   template <typename Matrix> FactorPreconditioner& compute(const Matrix&) { return *this; }
   template <typename Rhs> VectorX solve(const Rhs& b) const {
     VectorX x;
-    if (!factorized_->solve(VectorX(b), x))
+    if (!factorized_->solve_whole(VectorX(b), x))
       x.setConstant(b.size(), std::numeric_limits<Real>::quiet_NaN());
     return x;
   }
@@ -107,9 +110,9 @@ constexpr int krylov_basis = 8;
 KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
                                     const CouplingProduct& coupling, LinearSolver& factorized,
                                     const VectorX& rhs, VectorX& delta, Real tolerance,
-                                    int max_iterations) {
+                                    int max_iterations, const ShareSum& add_up_shares) {
   KrylovOutcome outcome;
-  const JacobianOperator jacobian(tangent_lower, coupling);
+  const JacobianOperator jacobian(tangent_lower, coupling, add_up_shares);
   Eigen::GMRES<JacobianOperator, FactorPreconditioner> gmres;
   gmres.preconditioner().attach(&factorized);
   gmres.setTolerance(tolerance);

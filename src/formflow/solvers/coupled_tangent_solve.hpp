@@ -12,6 +12,9 @@ namespace formflow::solvers {
 
 /// y += N x on free dof vectors.
 using CouplingProduct = std::function<void(const VectorX& x, VectorX& y)>;
+/// A distributed run's sum of the ranks' shares of a vector, in place (collective;
+/// NonlinearProblem::add_up_shares). Empty on one rank.
+using ShareSum = std::function<void(VectorX& values)>;
 
 struct KrylovOutcome {
   bool converged = false;
@@ -25,9 +28,13 @@ struct KrylovOutcome {
 /// tolerance·‖T⁻¹b‖; its first iterate is a multiple of the symmetric step T⁻¹b,
 /// so with N = 0 one iteration solves it. `delta` holds the last iterate even
 /// when GMRES did not reach `tolerance` within `max_iterations`.
+/// Distributed (issue 20): T and N are this rank's shares, `add_up_shares` sums each
+/// product T x + N x over the ranks, `rhs` and every Krylov vector are whole and alike
+/// on every rank (the preconditioner is `factorized`'s solve_whole), so every rank runs
+/// the same GMRES iterations to the same δ.
 KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
                                     const CouplingProduct& coupling, LinearSolver& factorized,
                                     const VectorX& rhs, VectorX& delta, Real tolerance,
-                                    int max_iterations);
+                                    int max_iterations, const ShareSum& add_up_shares = {});
 
 } // namespace formflow::solvers

@@ -45,6 +45,19 @@ void FormingNonlinearProblem<dim>::assemble_newton(const VectorX& u, const DualS
                                                    assembly::LinearSystem* tangent) {
   problem_.assemble_newton(u, problem_.friction_thresholds(u), duals_of<dim>(duals), internal_force,
                            tangent, tangent ? &coupling_ : nullptr, friction_);
+  if (!tangent) return;
+  // A distributed run: a rank whose own cells hold no coupling (a rigid slab) still joins
+  // the others' GMRES, whose every product is collective.
+  VectorX coupled(1);
+  coupled[0] = coupling_.empty() ? 0.0 : 1.0;
+  add_up_shares(coupled);
+  coupled_ = coupled[0] > 0;
+}
+
+template <int dim> void FormingNonlinearProblem<dim>::add_up_shares(VectorX& values) const {
+  const assembly::Distribution& distribution = problem_.discretisation().distribution();
+  if (distribution.distributed())
+    distribution.sum_over_ranks(std::span<Real>(values.data(), values.size()));
 }
 
 template <int dim>

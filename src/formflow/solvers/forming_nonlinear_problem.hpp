@@ -57,10 +57,11 @@ public:
   /// τ_f is evaluated at `u` (the exact residual the Jacobian differentiates).
   void assemble_newton(const VectorX& u, const DualState& duals, VectorX& internal_force,
                        assembly::LinearSystem* tangent) override;
-  bool has_coupling() const override { return !coupling_.empty(); }
+  bool has_coupling() const override { return coupled_; }
   void apply_coupling(const VectorX& x_free, VectorX& y_free) const override {
     problem_.apply_coupling(coupling_, x_free, y_free);
   }
+  void add_up_shares(VectorX& values) const override;
   void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
                     DualState& duals) const override;
   void secant_duals(const VectorX* previous, const VectorX& next, DualState& duals) const override;
@@ -106,6 +107,8 @@ private:
   /// Per constraint of the last step_constraints: its node and tangent.
   mutable std::vector<std::pair<std::size_t, Point<dim>>> constrained_;
   assembly::UnsymmetricTangent<dim> coupling_;
+  /// coupling_ is not empty on some rank: every rank then takes the GMRES path.
+  bool coupled_ = false;
   Hook hook_;
   bool hook_changes_ = false;
 };

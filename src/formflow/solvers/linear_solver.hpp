@@ -33,8 +33,13 @@ public:
   virtual bool analyze(const assembly::SparseMatrix& lower) = 0;
   /// Numeric factorisation; same pattern as analysed. False if not positive definite.
   virtual bool factorize(const assembly::SparseMatrix& lower) = 0;
-  /// Solves with the last factorisation. False on failure.
+  /// Solves with the last factorisation. False on failure. In a distributed run (issue
+  /// 20, the PETSc back-end) `rhs` is this rank's share, its own cells' loads (the
+  /// ranks' add up); `solution` is whole on every rank.
   virtual bool solve(const VectorX& rhs, VectorX& solution) = 0;
+  /// solve() for a right-hand side that every rank holds whole and alike (Newton's
+  /// residual, the GMRES vectors): each rank gives its own rows. One process: solve().
+  virtual bool solve_whole(const VectorX& rhs, VectorX& solution) { return solve(rhs, solution); }
   virtual std::string name() const = 0;
   /// Krylov iterations of all solves so far (iterative back-ends), or −1 when the
   /// back-end is a direct factorisation with no such count.

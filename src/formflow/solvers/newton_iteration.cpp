@@ -95,7 +95,9 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
   work.tangent_ready = false;
   const VectorX gradient = free_part(plan, work.force);
   // Exact constraints on the step (exact friction's stuck nodes): δ = g + z, z = P z,
-  // solved on the condensed tangent (solvers/exact_stick.hpp).
+  // solved on the condensed tangent (solvers/exact_stick.hpp). One rank only: the
+  // condensation of a rank's share of T is not its share of the condensed matrix (exact
+  // stick is refused on several ranks, app/distributed_run.cpp).
   std::vector<StepConstraint> constraints = work.problem.step_constraints(velocity);
   const bool constrained = !constraints.empty();
   std::optional<StepCondensation> condensation;
@@ -112,8 +114,10 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
   }
   if (work.linear.factorize(*matrix)) return std::nullopt;
   VectorX free_step;
+  // The right-hand side is whole on every rank of a distributed run (the internal force
+  // is summed over the ranks; the tangent is each rank's share of the matrix).
   if (!work.problem.has_coupling()) {
-    if (work.linear.solve(rhs, free_step)) return std::nullopt;
+    if (work.linear.solve_whole(rhs, free_step)) return std::nullopt;
   } else {
     // The full-ε̇ form: J = T + N, N unsymmetric; T's factor preconditions GMRES.
     ScopedTimer timer(work.linear.times(), "krylov");
@@ -123,9 +127,10 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
       work.problem.apply_coupling(condensation->project(x), projected);
       y += condensation->project(projected);
     };
+    const ShareSum add_up_shares = [&](VectorX& values) { work.problem.add_up_shares(values); };
     const KrylovOutcome krylov =
         solve_coupled_tangent(*matrix, coupling, work.linear.solver(), rhs, free_step, work.forcing,
-                              max_krylov_iterations);
+                              max_krylov_iterations, add_up_shares);
     work.linear.times().count("krylov iterations", krylov.iterations);
     if (!free_step.allFinite()) return std::nullopt;
   }

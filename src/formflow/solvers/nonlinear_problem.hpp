@@ -97,10 +97,14 @@ public:
   /// `duals` and the unsymmetric rest N, kept for apply_coupling.
   virtual void assemble_newton(const VectorX& u, const DualState& duals, VectorX& internal_force,
                                assembly::LinearSystem* tangent) = 0;
-  /// N of the last assemble_newton with a tangent is not zero.
+  /// N of the last assemble_newton with a tangent is not zero (on any rank).
   virtual bool has_coupling() const = 0;
-  /// y += N x on free dof vectors.
+  /// y += N x on free dof vectors (a distributed run: this rank's share of N x).
   virtual void apply_coupling(const VectorX& x_free, VectorX& y_free) const = 0;
+  /// A distributed run (issue 20) assembles each rank's own cells: the tangent, the
+  /// coupling and their products are the rank's shares. Replaces `values` by the sum of
+  /// the ranks' (collective; the same result on every rank). One rank: nothing to do.
+  virtual void add_up_shares(VectorX& values) const { static_cast<void>(values); }
   /// The duals after the Newton step `step` from `u` to `next` (the dual Newton update).
   virtual void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
                             DualState& duals) const = 0;

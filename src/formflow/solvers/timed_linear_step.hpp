@@ -38,12 +38,11 @@ public:
 
   /// Solve with the last factorisation; `solution` must come out finite.
   std::optional<StopReason> solve(const VectorX& rhs, VectorX& solution) {
-    {
-      ScopedTimer timer(times_, "solve");
-      if (!solver_.solve(rhs, solution)) return StopReason::SolverFailed;
-    }
-    if (!solution.allFinite()) return StopReason::NonFinite;
-    return std::nullopt;
+    return timed_solve(rhs, solution, false);
+  }
+  /// The same for a right-hand side every rank holds whole (LinearSolver::solve_whole).
+  std::optional<StopReason> solve_whole(const VectorX& rhs, VectorX& solution) {
+    return timed_solve(rhs, solution, true);
   }
 
   /// Factorise `matrix`, then solve for `rhs`: the whole step.
@@ -57,6 +56,16 @@ public:
   PhaseTimes& times() { return times_; }
 
 private:
+  std::optional<StopReason> timed_solve(const VectorX& rhs, VectorX& solution, bool whole) {
+    {
+      ScopedTimer timer(times_, "solve");
+      if (!(whole ? solver_.solve_whole(rhs, solution) : solver_.solve(rhs, solution)))
+        return StopReason::SolverFailed;
+    }
+    if (!solution.allFinite()) return StopReason::NonFinite;
+    return std::nullopt;
+  }
+
   LinearSolver& solver_;
   PhaseTimes& times_;
   bool analysed_ = false;

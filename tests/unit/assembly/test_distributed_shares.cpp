@@ -2,7 +2,8 @@
 // A distributed run's assembly without MPI (issue 20, docs/petsc.md): the ranks'
 // shares of the secant system (each rank's own cells, volume and Γ3 friction terms)
 // add up to the serial system, each share holds only its cells' entries, and the
-// slab partition gives every cell to exactly one rank.
+// slab partition gives every cell to exactly one rank; so do Newton's tangent, internal
+// force and coupling product.
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/fem/dof_map.hpp"
 #include "formflow/mesh/cell_partition.hpp"
@@ -132,6 +133,78 @@ TEST(DistributedShares, AddUpToTheSerialSystemAndHoldOnlyTheirCells) {
     const Real serial_force = serial.driven_force(whole, w);
     EXPECT_NEAR(force, serial_force,
                 2 * static_cast<Real>(force_terms) * epsilon * force_magnitude);
+  }
+}
+
+/// What one rank's Newton assembly at `w` gives: its tangent share, its internal force
+/// (its own cells' forces: the sum over ranks is a no-op here) and its share of N x.
+struct NewtonShare {
+  MatrixX tangent;
+  VectorX force, product;
+};
+
+NewtonShare newton_share(const mesh::Mesh<2>& mesh, const Distribution& distribution,
+                         const VectorX& w, const VectorX& x) {
+  const FormingProblem<2> problem(mesh, settings(distribution));
+  LinearSystem tangent = problem.plan().make_system();
+  UnsymmetricTangent<2> coupling;
+  NewtonShare share;
+  problem.assemble_newton(w, problem.friction_thresholds(w), NewtonDuals<2>{}, share.force,
+                          &tangent, &coupling);
+  share.tangent = MatrixX(tangent.matrix);
+  share.product = VectorX::Zero(x.size());
+  problem.apply_coupling(coupling, x, share.product);
+  return share;
+}
+
+TEST(DistributedShares, NewtonTangentForceAndCouplingAddUpToTheSerialOnes) {
+  const mesh::Mesh<2> mesh = channel();
+  const VectorX w = lagged_velocity(mesh);
+  const FormingProblem<2> serial_problem(mesh, settings());
+  VectorX x(serial_problem.plan().n_free()); // a free vector to multiply N by
+  for (Index i = 0; i < x.size(); ++i) x[i] = std::cos(0.7 * static_cast<Real>(i));
+  const NewtonShare serial = newton_share(mesh, {}, w, x);
+  ASSERT_GT(serial.product.cwiseAbs().maxCoeff(), 0) << "no coupling to share";
+  // The cells' own parts: one cell per rank (the slab partition of n_cells parts).
+  const int n_cells = static_cast<int>(mesh.n_cells());
+  MatrixX tangent_parts = MatrixX::Zero(serial.tangent.rows(), serial.tangent.cols());
+  VectorX force_parts = VectorX::Zero(serial.force.size());
+  VectorX product_parts = VectorX::Zero(serial.product.size());
+  for (int cell = 0; cell < n_cells; ++cell) {
+    const NewtonShare part = newton_share(mesh, {cell, n_cells, [](std::span<Real>) {}}, w, x);
+    tangent_parts += part.tangent.cwiseAbs();
+    force_parts += part.force.cwiseAbs();
+    product_parts += part.product.cwiseAbs();
+  }
+  // A cell's part is computed alike whether its rank holds it alone, with others or all
+  // cells; an entry of T or f is then a sum of at most m = 4 cells' parts (2D
+  // quadrilaterals at a node) taken in two orders, each within (m − 1) ε Σ|parts| of the
+  // exact sum: 6 ε Σ|parts| apart. N x adds point by point: m ≤ 36 point terms (4 cells ×
+  // 9 Q2 points; a Γ3 node has 2 cells and 2 × 3 face points), 70 ε Σ|terms| apart, with
+  // Σ|terms| taken as the largest Σ|cell parts| (up to the cancellation inside a cell).
+  constexpr Real epsilon = std::numeric_limits<Real>::epsilon();
+  constexpr Real tiny = std::numeric_limits<Real>::min();
+  for (int ranks : {2, 3}) {
+    MatrixX tangent = MatrixX::Zero(serial.tangent.rows(), serial.tangent.cols());
+    VectorX force = VectorX::Zero(serial.force.size());
+    VectorX product = VectorX::Zero(serial.product.size());
+    for (int rank = 0; rank < ranks; ++rank) {
+      const NewtonShare share = newton_share(mesh, {rank, ranks, [](std::span<Real>) {}}, w, x);
+      tangent += share.tangent;
+      force += share.force;
+      product += share.product;
+    }
+    EXPECT_TRUE(((tangent - serial.tangent).cwiseAbs().array() <=
+                 6 * epsilon * tangent_parts.array() + tiny)
+                    .all())
+        << ranks << " ranks";
+    EXPECT_TRUE(
+        ((force - serial.force).cwiseAbs().array() <= 6 * epsilon * force_parts.array() + tiny)
+            .all())
+        << ranks << " ranks";
+    const Real max_product = product_parts.cwiseAbs().maxCoeff();
+    EXPECT_LE((product - serial.product).cwiseAbs().maxCoeff(), 70 * epsilon * max_product)
+        << ranks << " ranks";
   }
 }
 

@@ -51,7 +51,8 @@ std::vector<CaseKey> solver_keys() {
                "symmetric positive definite velocity systems), umfpack (LU; also the "
                "indefinite Taylor–Hood saddle point) or petsc (PETSc KSP/PC configured by "
                "solver.petsc_options; by default a direct MUMPS Cholesky, or LU for the "
-               "saddle point; docs/petsc.md)"),
+               "saddle point; docs/petsc.md). Run by mpirun on several ranks, a case that "
+               "leaves this key unset takes petsc, the one distributed back-end"),
       petsc_options_key()
           .constraint("only with solver.linear = \"petsc\"; names start with '-', values follow "
                       "their name; an option no PETSc object reads is refused before the first "

@@ -105,8 +105,18 @@ int rank() {
 
 void sum_over_ranks(std::span<double> values) {
   ensure_initialized();
-  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
-                PETSC_COMM_WORLD);
+  // Summed on rank 0 and sent from there, not MPI_Allreduce: MPI promises each rank a
+  // sum, not the same rounding of it on every rank, and a distributed run's ranks take
+  // their decisions (line search, stop rule) from these sums: a last-bit difference
+  // would send them down different branches, each waiting for the others.
+  const auto count = static_cast<int>(values.size());
+  PetscMPIInt rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  if (rank == 0)
+    MPI_Reduce(MPI_IN_PLACE, values.data(), count, MPI_DOUBLE, MPI_SUM, 0, PETSC_COMM_WORLD);
+  else
+    MPI_Reduce(values.data(), nullptr, count, MPI_DOUBLE, MPI_SUM, 0, PETSC_COMM_WORLD);
+  MPI_Bcast(values.data(), count, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
 }
 
 int max_over_ranks(int value) {

@@ -48,7 +48,8 @@ void set_distributed_systems(bool distributed);
 bool distributed_systems();
 /// This process's rank in PETSC_COMM_WORLD.
 int rank();
-/// Every entry of `values` replaced by its sum over the ranks (collective).
+/// Every entry of `values` replaced by its sum over the ranks (collective; the same
+/// bits on every rank: rank 0 sums and sends).
 void sum_over_ranks(std::span<double> values);
 /// The largest of `value` over the ranks (collective): the exit code they agree on.
 int max_over_ranks(int value);

@@ -72,10 +72,21 @@ public:
   }
 
   bool solve(const VectorX& rhs, VectorX& solution) override {
+    return solve_loaded(rhs, solution, false);
+  }
+
+  bool solve_whole(const VectorX& rhs, VectorX& solution) override {
+    return solve_loaded(rhs, solution, true);
+  }
+
+  /// solve() (`whole` false: a distributed rhs is the rank's share) or solve_whole().
+  bool solve_loaded(const VectorX& rhs, VectorX& solution, bool whole) {
     if (!ksp_) return false;
     petsc::ErrorCapture capture;
     const auto n = static_cast<PetscInt>(rhs.size());
-    if (distributed_) {
+    if (distributed_ && whole) {
+      load_whole_rhs(rhs);
+    } else if (distributed_) {
       // The rank's rhs is its own cells' loads: PETSc's stash sends each entry to the
       // rank that owns its row, where they add up.
       VecSet(rhs_, 0.0);
@@ -338,6 +349,19 @@ private:
     std::vector<PetscScalar> values(coo_source_.size());
     for (std::size_t s = 0; s < values.size(); ++s) values[s] = matrix.valuePtr()[coo_source_[s]];
     if (MatSetValuesCOO(matrix_, values.data(), INSERT_VALUES) != 0) MatDestroy(&matrix_);
+  }
+
+  /// Distributed: a right-hand side that every rank holds whole (Newton's residual, the
+  /// GMRES vectors): each rank writes its own rows, no message sent.
+  void load_whole_rhs(const VectorX& rhs) {
+    PetscInt low = 0, high = 0;
+    VecGetOwnershipRange(rhs_, &low, &high);
+    PetscScalar* values = nullptr;
+    VecGetArray(rhs_, &values);
+    for (Index i = 0; i < rhs.size(); ++i)
+      if (const PetscInt row = petsc_index_[i]; row >= low && row < high)
+        values[row - low] = rhs[i];
+    VecRestoreArray(rhs_, &values);
   }
 
   /// Options that nothing read by the first factorisation: the case's blamed on
