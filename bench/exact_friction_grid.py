@@ -8,9 +8,13 @@ threshold) for {sliding, sticking ram} x mesh.size x mu x {Q2 2x2, Q1 1x1} x
 also with the paper's d_T = 1e-6, and prints one Markdown row per case: Newton
 iterations (coarse levels + fine), stop reason, ram reaction (and the regularised
 one), the Coulomb residual, the stick lengths and the wall time of each run.
+The exact runs take the exact law's default (since session 9 the semismooth Newton on
+nodal contact points); --set friction.stick='"augmented"' runs the augmented loop on
+face points, and with --regularised, --set contact.normals='"nodes"' puts the
+regularised runs on the exact runs' points.
 Usage: python3 bench/exact_friction_grid.py [--binary build-test/formflow]
            [--out /tmp/ff-grid] [--sizes 1 0.5] [--mus 0.1 0.2 0.3] [--elements Q2 Q1]
-           [--symmetries plane axisymmetric] [--tolerance 1e-4] [--regularised]
+           [--symmetries plane axisymmetric] [--tolerance 1e-4] [--regularised] [--counts]
            [--set KEY=VALUE ...]   (extra case keys for every run, e.g. contact.normals='"nodes"';
                                     friction.stick is passed to the exact runs only)
 Columns besides those: the total power / (u0 H) (equals the reaction in balance) and
@@ -45,10 +49,14 @@ def main():
     parser.add_argument("--rams", nargs="+", default=["sliding", "sticking"])
     parser.add_argument("--tolerance", default="1e-4")
     parser.add_argument("--regularised", action="store_true")
+    parser.add_argument("--counts", action="store_true",
+                        help="after the rows, one row per symmetry, element, ram and h with "
+                             "the iterations (coarse + fine) of each mu")
     parser.add_argument("--set", nargs="*", default=[], dest="extra",
                         help="KEY=VALUE case settings added to every run")
     args = parser.parse_args()
     extra = dict(item.split("=", 1) for item in args.extra)
+    counts = {}  # (symmetry, element, ram, h) -> {mu: "n" or "n stop_reason"}
     print("| ram | h | μ | element | symmetry | iterations (coarse + fine) | stop | reaction |"
           " total power | regularised reaction | Coulomb residual | residual's power |"
           " stick container | stick die | s exact | s regularised |")
@@ -68,6 +76,10 @@ def main():
                         exact, s_exact = run(args.binary, args.out, name + "-exact",
                                              {**settings, "friction.regularization": '"none"'})
                         coarse = sum(exact.get("coarse_iterations", []) or [])
+                        total = coarse + exact["iterations"]
+                        stop = exact["stop_reason"]
+                        counts.setdefault((symmetry, element, ram, size), {})[mu] = (
+                            f"{total}" if stop == "converged" else f"**{total} {stop}**")
                         contact = exact["contact"]
                         regularised_reaction, s_reg = "—", "—"
                         if args.regularised:
@@ -86,6 +98,15 @@ def main():
                               f'{contact["container"]["stick_length"]:.3f} | '
                               f'{contact["die"]["stick_length"]:.3f} | {s_exact:.2f} | {s_reg} |',
                               flush=True)
+
+    if args.counts:
+        print()
+        print("| symmetry | element | ram | h | " + " | ".join(f"μ = {mu}" for mu in args.mus) +
+              " |")
+        print("|---|---|---|---|" + "---|" * len(args.mus))
+        for (symmetry, element, ram, size), row in counts.items():
+            print(f"| {symmetry} | {element} | {ram} | {size} | " +
+                  " | ".join(row[mu] for mu in args.mus) + " |")
 
 
 if __name__ == "__main__":

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Exact Coulomb friction by Newton over a subset of issue 16's grid (the full grid,
+// Exact Coulomb friction by Newton, its default path (the semismooth Newton on nodal
+// contact points, the regularised referee on nodal points too), over a subset of issue
+// 16's grid (the full grid,
 // with h = 0.25, μ up to 0.5 and δ = 1e-8, is tests/long/test_exact_friction_grid.cpp):
 // every case converges to δ = 1e-4 within 25 iterations, coarse levels included, its
 // Coulomb residual below δ, and its load agrees with the regularised law's at
 // d_T = 1e-6 within the bound derived in support/exact_friction_grid.hpp.
-// Measured iteration counts: docs/friction.md "The grid".
+// Measured iteration counts: docs/friction.md "Session 8" and "Session 9".
 #include "support/exact_friction_grid.hpp"
 
 #include <gtest/gtest.h>
@@ -22,6 +24,7 @@ class ExactFrictionGrid
 TEST_P(ExactFrictionGrid, ConvergesInBoundedIterationsToTheRegularisedLimit) {
   const auto [ram, size, mu] = GetParam();
   FrictionGridCase c;
+  c.exact_stick = true; // the exact law's default path
   c.ram = ram;
   c.size = size;
   c.mu = mu;
@@ -37,6 +40,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(ExactFrictionGridOthers, AxisymmetricQ2) {
   FrictionGridCase c;
+  c.exact_stick = true; // the exact law's default path
   c.size = 0.5;
   c.mu = 0.3;
   c.symmetry = physics::Symmetry::Axisymmetric;
@@ -49,6 +53,7 @@ TEST(ExactFrictionGridOthers, AxisymmetricQ2) {
 // balance while the velocity had settled (docs/friction.md "Reaction and total power").
 TEST(ExactFrictionGridOthers, AxisymmetricStickZoneUpToTheRam) {
   FrictionGridCase c;
+  c.exact_stick = true; // the exact law's default path
   c.size = 1.0;
   c.mu = 0.5;
   c.symmetry = physics::Symmetry::Axisymmetric;
@@ -57,6 +62,7 @@ TEST(ExactFrictionGridOthers, AxisymmetricStickZoneUpToTheRam) {
 
 TEST(ExactFrictionGridOthers, Q1WithTheOnePointRule) {
   FrictionGridCase c;
+  c.exact_stick = true; // the exact law's default path
   c.ram = RamCondition::Sticking;
   c.size = 0.5;
   c.mu = 0.2;

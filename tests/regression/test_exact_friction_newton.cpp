@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Exact Coulomb friction solved by Newton (solvers/augmented_newton.hpp) against the
+// Exact Coulomb friction solved by Newton's augmented loop on face Gauss points
+// (friction.stick = "augmented", the default before session 9; the default now is the
+// semismooth Newton on nodal points, tests/regression/test_exact_stick_grid.cpp) against
+// the
 // paper's augmented-Lagrangian-around-secant loop on the paper's case (mesh II, Q2,
 // 2×2 rule, friction on container and die): the same solution, in far fewer
 // iterations, with the stick zone of the converged solution already at δ = 1e-4;
@@ -24,6 +27,7 @@ post::Results solve_exact(const Variant& variant, solvers::NonlinearMethod metho
     c.friction.mu = mu;
     c.friction.radius = radius;
     c.friction.regularization = physics::FrictionRegularization::None;
+    c.friction_stick = io::StickEnforcement::Augmented; // face points, the old path
     c.solver.method = method;
     c.solver.tolerance = tolerance;
     c.solver.max_iterations = 2000;
@@ -91,6 +95,7 @@ TEST(ExactFrictionNewton, CoarseStartSolvesTheCoulombLawWithZeroMultipliersOnCoa
       c.mesh.size = 0.5;
       c.friction.mu = 0.1; // μ = 0.2 is alike but takes twice as long (46 iterations)
       c.friction.regularization = physics::FrictionRegularization::None;
+      c.friction_stick = io::StickEnforcement::Augmented; // face points, the old path
       c.solver.coarse_levels = coarse_levels;
     });
   };
@@ -122,6 +127,7 @@ TEST(ExactFrictionNewton, MixedCondensedPressureAgreesWithTheSecantLoop) {
       c.formulation.type = assembly::FormulationType::Mixed;
       c.friction.mu = 0.2;
       c.friction.regularization = physics::FrictionRegularization::None;
+      c.friction_stick = io::StickEnforcement::Augmented; // face points, the old path
       c.solver.method = method;
       c.solver.tolerance = tolerance;
       c.solver.max_iterations = 2000;

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
-// The semismooth Newton of exact friction (friction.stick = "exact", nodal contact points;
-// solvers/exact_stick.hpp) on cases of issue 16's grid: it converges within the issue's
-// 25 iterations at δ = 1e-4 and at δ = 1e-8, its stuck nodes hold u_T = 0 exactly, and
-// its load agrees with the regularised law's at d_T = 1e-6 on the same (nodal)
-// discretisation, within the bound of support/exact_friction_grid.hpp. Measured counts
-// for the whole grid: docs/friction.md "Session 8".
+// The semismooth Newton of exact friction (solvers/exact_stick.hpp), the exact law's
+// default under Newton since session 9 (friction.stick = "auto" resolves to "exact" on
+// nodal contact points; the runs below give neither key), on cases of issue 16's grid:
+// it converges within the issue's 25 iterations at δ = 1e-4 and at δ = 1e-8, its stuck
+// nodes hold u_T = 0 exactly, and its load agrees with the regularised law's at
+// d_T = 1e-6 on the same (nodal) discretisation, within the bound of
+// support/exact_friction_grid.hpp. Measured counts for the whole grid: docs/friction.md
+// "Session 8" and "Session 9".
 #include "support/exact_friction_grid.hpp"
 
 #include <gtest/gtest.h>

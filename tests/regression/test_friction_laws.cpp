@@ -141,6 +141,11 @@ TEST_P(ThresholdTimesEnforcement, NewtonAndSecantAgree) {
                                            {"friction.regularization", regularization},
                                            {"mesh.size", "2.5"}};
   std::vector<io::Override> newton = edits, secant = edits;
+  // Both on nodal contact points: the exact law's Newton default is the semismooth
+  // Newton there (friction.stick = "auto"), and the secant loop's referee must see the
+  // same discretisation of the contact terms.
+  if (std::string(regularization) == "none")
+    for (auto* run : {&newton, &secant}) run->emplace_back("contact.normals", "nodes");
   newton.emplace_back("solver.method", "newton");
   secant.emplace_back("solver.method", "secant");
   const post::Results by_newton = solve(newton), by_secant = solve(secant);

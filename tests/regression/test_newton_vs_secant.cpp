@@ -141,7 +141,16 @@ TEST(MethodReported, NamesTheLoopThatRan) {
     c.friction.mu = 0.1;
     c.friction.regularization = physics::FrictionRegularization::None;
   });
+  // The exact law's default under Newton: the semismooth Newton (friction.stick = "auto").
   EXPECT_EQ(exact_friction.method,
+            "semismooth newton friction (exact stick at the nodes) from coarse meshes");
+  const post::Results exact_augmented = testing::solve_benchmark([](io::Case& c) {
+    c.mesh.size = 2.5;
+    c.friction.mu = 0.1;
+    c.friction.regularization = physics::FrictionRegularization::None;
+    c.friction_stick = io::StickEnforcement::Augmented;
+  });
+  EXPECT_EQ(exact_augmented.method,
             "augmented-lagrangian friction around newton from coarse meshes");
   const post::Results exact_secant = testing::solve_benchmark([](io::Case& c) {
     c.mesh.size = 2.5;

@@ -24,8 +24,10 @@ struct FrictionGridCase {
   fem::ElementKind element = fem::ElementKind::Q2;
   int volumetric_points = 2; ///< Q2 2×2 or Q1 1×1
   physics::Symmetry symmetry = physics::Symmetry::Plane;
-  /// The semismooth Newton: nodal contact points (for both laws, so that the loads
-  /// compare on one discretisation) and friction.stick = "exact" for the exact law.
+  /// The semismooth Newton, the exact law's default (friction.stick = "auto": exact stick
+  /// on nodal contact points; the regularised law on nodal points too, so that the loads
+  /// compare on one discretisation). false: the augmented loop on face Gauss points
+  /// (friction.stick = "augmented", the path before session 9).
   bool exact_stick = false;
 };
 
@@ -52,10 +54,9 @@ inline io::Case grid_case(const FrictionGridCase& c, bool exact, double toleranc
       exact ? physics::FrictionRegularization::None : physics::FrictionRegularization::Regularized;
   case_.solver.tolerance = tolerance;
   case_.solver.max_iterations = 200; // the setting: a stall or a tail shows as > 25
-  if (c.exact_stick) {
-    case_.contact.normals = assembly::ContactNormals::Nodes;
-    if (exact) case_.friction_stick = io::StickEnforcement::Exact;
-  }
+  // The exact law's default resolves to exact stick on nodes (io/problem_shape.hpp).
+  if (c.exact_stick && !exact) case_.contact.normals = assembly::ContactNormals::Nodes;
+  if (!c.exact_stick) case_.friction_stick = io::StickEnforcement::Augmented;
   return case_;
 }
 
@@ -69,6 +70,25 @@ inline int total_iterations(const post::Results& results) {
 /// The bound: every case of the grid converges within 25 iterations.
 inline constexpr int max_grid_iterations = 25;
 
+/// How far the regularised law's load (d_T = 1e-6) may lie from the exact law's `exact`
+/// (both solved to `tolerance`): the regularised friction functional exceeds the exact
+/// one by at most d_T ∫τ_f dΓ ≤ d_T μ max σ_N |Γ3| (√(s² + d_T²) − s ≤ d_T), so for a
+/// fixed τ_f the minimal powers, hence u⁰ H p, differ by at most that (for the nonlocal
+/// law an estimate, the same at τ_f of the solution); plus 20 δ p per solve.
+inline double regularisation_bound(const FrictionGridCase& c, const post::Results& exact,
+                                   double tolerance) {
+  double max_pressure = 0.0;
+  for (const post::ContactSample& sample : exact.contact)
+    max_pressure = std::max(max_pressure, sample.contact_pressure);
+  const double contact_length = exact.container_zones.length + exact.die_zones.length;
+  const io::Case reference = grid_case(c, false, tolerance);
+  // H = the ram height R. Axisymmetric, Γ3's measure carries the radius (r dΓ), and so
+  // does the true driven measure ∫_Γ1 r dr = ½ R² ≥ R: dividing by R over-estimates.
+  return reference.friction.d_t * c.mu * max_pressure * contact_length /
+             (reference.process.speed * reference.mesh.geometry.entry_half_height) +
+         2 * 20 * tolerance * exact.pressure.ram_reaction;
+}
+
 /// Checks one case: the exact law converges to `tolerance` (within the bound of 25
 /// iterations when `bounded`), its Coulomb residual is below it, and (with
 /// `compare_regularised`) its load agrees with the regularised law's at d_T = 1e-6.
@@ -78,10 +98,7 @@ inline constexpr int max_grid_iterations = 25;
 /// axisymmetric Q2 h = 0.25, μ = 0.5: 2.7 δ for the exact law, 1.1 δ regularised).
 ///
 /// Load bound against the regularised law, both solved to δ_ref = 1e-8 so that the
-/// comparison is not iteration error: the regularised friction functional exceeds the
-/// exact one by at most d_T ∫τ_f dΓ ≤ d_T μ max σ_N |Γ3| (√(s² + d_T²) − s ≤ d_T), so
-/// for a fixed τ_f the minimal powers, hence u⁰ H p, differ by at most that (for the
-/// nonlocal law an estimate, the same at τ_f of the solution); plus 20 δ_ref p per solve.
+/// comparison is not iteration error: regularisation_bound.
 inline void check_grid_case(const FrictionGridCase& c, double tolerance, bool compare_regularised,
                             bool bounded = true) {
   SCOPED_TRACE(grid_case_name(c));
@@ -91,6 +108,8 @@ inline void check_grid_case(const FrictionGridCase& c, double tolerance, bool co
   if (bounded) {
     EXPECT_LE(total_iterations(exact), max_grid_iterations);
   }
+  // The default path is the semismooth Newton; exact_stick = false asks the old one.
+  EXPECT_EQ(exact.method.find("semismooth newton") == 0, c.exact_stick) << exact.method;
   EXPECT_LT(exact.augmentation.friction_residual, tolerance);
   EXPECT_LT(exact.augmentation.power_residual, tolerance);
   const double p = exact.pressure.ram_reaction;
@@ -107,17 +126,8 @@ inline void check_grid_case(const FrictionGridCase& c, double tolerance, bool co
   ASSERT_TRUE(regularised.converged());
   const double p_tight = tight.pressure.ram_reaction;
   EXPECT_NEAR(p, p_tight, 20 * tolerance * p_tight);
-  double max_pressure = 0.0;
-  for (const post::ContactSample& sample : tight.contact)
-    max_pressure = std::max(max_pressure, sample.contact_pressure);
-  const double contact_length = tight.container_zones.length + tight.die_zones.length;
-  const io::Case reference = grid_case(c, false, reference_tolerance);
-  // H = the ram height R. Axisymmetric, Γ3's measure carries the radius (r dΓ), and so
-  // does the true driven measure ∫_Γ1 r dr = ½ R² ≥ R: dividing by R over-estimates.
-  const double bound = reference.friction.d_t * c.mu * max_pressure * contact_length /
-                           (reference.process.speed * reference.mesh.geometry.entry_half_height) +
-                       2 * 20 * reference_tolerance * p_tight;
-  EXPECT_NEAR(regularised.pressure.ram_reaction, p_tight, bound);
+  EXPECT_NEAR(regularised.pressure.ram_reaction, p_tight,
+              regularisation_bound(c, tight, reference_tolerance));
 }
 
 } // namespace formflow::testing

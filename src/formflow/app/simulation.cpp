@@ -10,6 +10,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/io/mesh_input.hpp"
+#include "formflow/io/problem_shape.hpp"
 #include "formflow/post/post_process.hpp"
 #include "formflow/solvers/augmented_lagrangian.hpp"
 #include "formflow/solvers/augmented_newton.hpp"
@@ -48,7 +49,8 @@ assembly::ProblemSettings problem_settings(const io::Case& case_) {
   settings.volumetric_points = case_.volumetric_points;
   settings.initial_rate = case_.solver.initial_rate;
   settings.symmetry = case_.symmetry;
-  settings.contact = case_.contact;
+  // Nodal points where exact stick runs, though contact.normals was not given.
+  settings.contact = io::contact_settings(case_);
   settings.distribution = distribution(); // one rank's own cells in a distributed run
   return settings;
 }
@@ -154,7 +156,7 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
     // Exact Coulomb friction by Newton, multipliers updated between its steps
     // (solvers/augmented_newton.hpp); with friction.stick = "exact" every step holds
     // the stuck nodes' u_T = 0 exactly (solvers/exact_stick.hpp).
-    if (case_.friction_stick == io::StickEnforcement::Exact) nonlinear.enable_exact_stick();
+    if (plan.shape.exact_stick) nonlinear.enable_exact_stick();
     take_augmented(solvers::augmented_newton(nonlinear, solver, case_.solver, on_iteration,
                                              results.timing, start_velocity));
     return outcome;

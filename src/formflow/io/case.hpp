@@ -24,11 +24,13 @@ namespace formflow::io {
 /// (io/case_file.cpp), which checks every key against io/case_keys.cpp; the
 /// defaults here are the paper's benchmark (SPEC §4): Q2, 2×2 volumetric
 /// rule, mesh II, μ = 0, d = 1e-3, d_N = 1e-6, d_T = 1e-6, δ = 1e-4.
-/// How exact friction's Newton loop holds stuck points (friction.stick): the stick
-/// penalty r with a multiplier update per iteration (the default), or u_T = 0 imposed
+/// How exact friction's Newton loop holds stuck points (friction.stick): u_T = 0 imposed
 /// exactly in every Newton step at the stuck Γ3 nodes, their traction the constraint's
-/// reaction (a semismooth Newton, issue 16; needs contact.normals = "nodes").
-enum class StickEnforcement { Augmented, Exact };
+/// reaction (a semismooth Newton, issue 16; on nodal contact points), or the stick
+/// penalty r with a multiplier update per iteration (augmented). Auto (the default) is
+/// Exact wherever the semismooth Newton serves the case and Augmented elsewhere
+/// (io/problem_shape.hpp stick_choice says which).
+enum class StickEnforcement { Auto, Augmented, Exact };
 
 struct Case {
   physics::Process process;
@@ -43,8 +45,9 @@ struct Case {
   physics::ViscousStrain viscous_strain = physics::ViscousStrain::Full;
   assembly::Formulation formulation; ///< penalty or mixed; exact-constraint (Uzawa) settings
   physics::Friction friction;
-  StickEnforcement friction_stick = StickEnforcement::Augmented; ///< friction.stick
-  assembly::ContactSettings contact;                             ///< face or nodal contact normals
+  StickEnforcement friction_stick = StickEnforcement::Auto; ///< friction.stick, as given
+  /// Face or nodal contact points, as given: stick_choice says which the run uses.
+  assembly::ContactSettings contact;
   physics::Penalty penalty;
   solvers::IterationControl solver;
   post::AdaptSettings adapt; ///< adaptive refinement by the load's error indicators

@@ -88,6 +88,8 @@ public:
       throw InputError(file, line, name, problem->message, problem->hint);
     key.set(case_, *converted);
     origins_[name] = Origin{file, line, ++n_set_};
+    // Now, not at finish(): the checks read which keys were given (io/problem_shape.hpp).
+    case_.key_locations[name] = Case::KeyLocation{file, line};
     if (value.is_table()) // entries of a table key, so later errors can name their line
       for (const auto& [entry, entry_value] : value.as_table())
         origins_[name + "." + entry] =
@@ -119,6 +121,7 @@ public:
     // Laws of an absolute temperature read the case's temperatures in its unit.
     case_.material.parameters_of<physics::SellarsTegart>().absolute_offset =
         physics::absolute_offset(case_.thermal.unit);
+    if (auto note = face_points_note(case_)) case_.warnings.push_back(std::move(*note));
     const bool q1 = case_.element == fem::ElementKind::Q1;
     if (origin("integration.volumetric").order == 0) {
       case_.volumetric_points = q1 ? 1 : 2;
@@ -251,8 +254,7 @@ private:
             "set formulation.type = \"mixed\" (e.g. with formulation.pressure = \"P1disc\"), "
             "or use penalty.d > 0");
     // The combinations no loop serves, from the capability table the run plan reads.
-    solvers::ProblemShape shape = problem_shape(case_);
-    shape.linear_given = origins_.count("solver.linear") > 0; // key_locations come at finish()
+    const solvers::ProblemShape shape = problem_shape(case_);
     const auto loop = solvers::choose_loop(shape);
     if (const auto* refused = std::get_if<solvers::Refusal>(&loop))
       blame(std::vector<std::string>(refused->keys.begin(), refused->keys.end()), refused->message,

@@ -3,6 +3,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_json.hpp"
 #include "formflow/io/case_keys.hpp"
+#include "formflow/io/problem_shape.hpp"
 #include "formflow/io/results_writer.hpp"
 #include "formflow/post/load_error_estimate.hpp"
 
@@ -84,13 +85,26 @@ json contact_json(const Case& case_, const post::Results& results) {
   const bool exact = case_.friction.regularization == physics::FrictionRegularization::None;
   json out = json::object();
   out["regularization"] = exact ? "none" : "regularized";
-  const bool newton = results.method.find("around newton") != std::string::npos;
+  // The loop that ran and how it held stuck points (friction.stick "auto" resolved).
+  const solvers::ProblemShape shape = problem_shape(case_);
+  const auto loop = solvers::choose_loop(shape);
+  const bool newton = std::holds_alternative<solvers::LoopKind>(loop) &&
+                      std::get<solvers::LoopKind>(loop) == solvers::LoopKind::AugmentedNewton;
   out["stick_criterion"] = !exact   ? "|sigma_T| < 0.99 tau_f, i.e. |u_T| < 7.02 d_T"
                            : newton ? "|u_T| <= solver.tolerance * process.speed"
                                     : "|lambda_T + r u_T| <= tau_f (Alart-Curnier active set)";
+  // Where Γ3's points were (the nodes also where exact stick put them there unasked).
+  out["points"] =
+      stick_choice(case_).normals == assembly::ContactNormals::Nodes ? "nodes" : "faces";
   out["container"] = zones_json(results.container_zones);
   out["die"] = zones_json(results.die_zones);
   if (exact) {
+    const StickChoice choice = stick_choice(case_);
+    // Which method held the stuck points, and whether the user chose it or the default did.
+    out["stick"] = !newton                                   ? "augmented (secant loop)"
+                   : choice.stick == StickEnforcement::Exact ? "exact"
+                                                             : "augmented";
+    out["stick_given"] = choice.stick_given;
     out["augmented_lagrangian"] = {{"outer_iterations", results.augmentation.outer_iterations},
                                    {"multiplier_change", results.augmentation.multiplier_change}};
     // The Coulomb conditions' residual at the last update, at the problem's scale
@@ -179,10 +193,14 @@ json timing_json(const PhaseTimes& timing) {
   return out;
 }
 
-/// The case, in the key table's order.
+/// The case, in the key table's order, with the contact points the run used (exact
+/// stick puts them on the nodes when contact.normals was not given): run again from
+/// this block, the case runs the same way.
 json case_json(const Case& case_) {
   json resolved = case_to_json(case_);
   require_finite(resolved, "case");
+  if (stick_choice(case_).normals == assembly::ContactNormals::Nodes)
+    resolved["contact"]["normals"] = "nodes";
   return resolved;
 }
 

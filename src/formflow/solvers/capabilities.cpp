@@ -80,6 +80,15 @@ std::variant<LoopKind, Refusal> choose_loop(const ProblemShape& shape) {
   return loop;
 }
 
+bool exact_stick_serves(ProblemShape shape) {
+  if (!shape.exact_friction) return false;
+  shape.exact_stick = true;
+  shape.nodal_contact = true;
+  const auto loop = choose_loop(shape);
+  return std::holds_alternative<LoopKind>(loop) &&
+         std::get<LoopKind>(loop) == LoopKind::AugmentedNewton;
+}
+
 MatrixStorage loop_storage(LoopKind loop) {
   return loop == LoopKind::SaddlePointSecant ? MatrixStorage::Full : MatrixStorage::SymmetricLower;
 }

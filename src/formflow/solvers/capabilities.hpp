@@ -53,6 +53,11 @@ struct Refusal {
 /// loop of the formulation runs and its name says so.
 std::variant<LoopKind, Refusal> choose_loop(const ProblemShape& shape);
 
+/// Whether the semismooth Newton of exact friction (exact stick on nodal contact points)
+/// serves `shape` (its exact_stick and nodal_contact ignored): the exact law under the
+/// Newton loop. The default friction.stick = "auto" resolves to it there.
+bool exact_stick_serves(ProblemShape shape);
+
 /// The matrices the loop hands to the linear solver.
 MatrixStorage loop_storage(LoopKind loop);
 

@@ -117,10 +117,11 @@ FormingNonlinearProblem<dim>::exact_stick_nodes() const {
   for (const auto& [node, points] : points_at) {
     StickNode entry{node, points, {}, 0.0};
     for (std::size_t k : points) entry.weight += state[k].weight;
-    bool eligible = true;
-    for (int i = 0; i < dim && eligible; ++i) {
+    // A prescribed dof (a symmetry face in 3D) leaves the tangents along the free ones.
+    bool eligible = false;
+    for (int i = 0; i < dim; ++i) {
       entry.rows[i] = problem_.plan().free_index(fem::dof_of<dim>(node, i));
-      eligible = entry.rows[i] >= 0;
+      eligible = eligible || entry.rows[i] >= 0;
     }
     for (std::size_t k : points)
       eligible = eligible && state[k].normal.dot(state[points.front()].normal) > 1.0 - 1e-12;
@@ -153,18 +154,48 @@ std::vector<StepConstraint> FormingNonlinearProblem<dim>::step_constraints(const
       tangents.push_back(first);
       tangents.push_back(normal.cross(first));
     }
-    for (const Point<dim>& tangent : tangents) {
+    for (const auto& [direction, target] : free_tangents(node, normal, tangents, slip)) {
       StepConstraint c;
       for (int i = 0; i < dim; ++i) {
+        if (node.rows[i] < 0) continue;
         c.rows.push_back(node.rows[i]);
-        c.coefficients.push_back(tangent[i]);
+        c.coefficients.push_back(direction[i]);
       }
-      c.target = -slip.dot(tangent); // u_T + δ_T = 0
+      c.target = target; // (u + δ)·e = 0
       constraints.push_back(std::move(c));
-      constrained_.emplace_back(n, tangent);
+      constrained_.emplace_back(n, direction);
     }
   }
   return constraints;
+}
+
+template <int dim>
+std::vector<std::pair<Point<dim>, Real>>
+FormingNonlinearProblem<dim>::free_tangents(const StickNode& node, const Point<dim>& normal,
+                                            const std::vector<Point<dim>>& tangents,
+                                            const Point<dim>& slip) {
+  // The step moves the free dofs only: tangent t is held by (Π_F t)·δ = −u·t. Gram–Schmidt
+  // keeps the node's constraints orthonormal (what the condensation needs); a direction
+  // with no free part (the slip along it is prescribed) is dropped, and so is one that
+  // leaves the tangent plane (a prescribed dof oblique to the normal: the reaction along
+  // it would not be a friction traction; the stick penalty holds it as before).
+  constexpr Real tiny = 1e-8;
+  std::vector<std::pair<Point<dim>, Real>> kept;
+  for (const Point<dim>& tangent : tangents) {
+    Point<dim> direction = tangent;
+    for (int i = 0; i < dim; ++i)
+      if (node.rows[i] < 0) direction[i] = 0.0;
+    Real target = -slip.dot(tangent);
+    for (const auto& [previous, previous_target] : kept) {
+      const Real along = direction.dot(previous);
+      direction -= along * previous;
+      target -= along * previous_target;
+    }
+    const Real length = direction.norm();
+    if (length < tiny || std::abs(direction.dot(normal)) > tiny * length) continue;
+    kept.emplace_back(direction / length, target / length);
+  }
+  return kept;
 }
 
 template <int dim>

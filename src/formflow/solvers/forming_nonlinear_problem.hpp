@@ -91,16 +91,22 @@ public:
 private:
   const assembly::FormingProblem<dim>& problem_;
   /// A Γ3 node whose stick is imposed exactly: its points (all with one normal) and
-  /// free rows.
+  /// rows (−1 for a prescribed dof).
   struct StickNode {
     Index node = 0;
     std::vector<std::size_t> points;
     std::array<Index, dim> rows{};
     Real weight = 0.0; ///< Σ JxW of its points: λ̂ loads the node by weight × λ̂
   };
-  /// The nodes eligible for exact stick: nodal contact points, every dof of the node
-  /// free, one normal at all its points (not a dead-metal corner).
+  /// The nodes eligible for exact stick: nodal contact points, a free dof at the node,
+  /// one normal at all its points (not a dead-metal corner).
   std::vector<StickNode> exact_stick_nodes() const;
+  /// The directions a stuck node's step constraints hold, orthonormal on its free dofs,
+  /// with their targets (solvers/exact_stick.hpp): the tangents restricted to the free
+  /// dofs (unchanged where all are free).
+  static std::vector<std::pair<Point<dim>, Real>>
+  free_tangents(const StickNode& node, const Point<dim>& normal,
+                const std::vector<Point<dim>>& tangents, const Point<dim>& slip);
 
   assembly::FrictionMultipliers<dim>* friction_ = nullptr;
   std::vector<StickNode> stick_nodes_;

@@ -4,6 +4,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/io/case_json.hpp"
+#include "formflow/io/problem_shape.hpp"
 
 #include <gtest/gtest.h>
 
@@ -111,13 +112,15 @@ TEST(FormulationKeys, ExactStickNeedsExactFrictionNodalPointsAndNewton) {
                                        {"contact.normals", "nodes"},
                                        {"friction.stick", "exact"}});
   EXPECT_EQ(accepted.friction_stick, StickEnforcement::Exact);
-  EXPECT_EQ(load_case("", {}).friction_stick, StickEnforcement::Augmented);
+  EXPECT_EQ(load_case("", {}).friction_stick, StickEnforcement::Auto);
   const InputError regularised =
       refusal("", {{"contact.normals", "nodes"}, {"friction.stick", "exact"}});
   EXPECT_EQ(regularised.key, "friction.stick");
   EXPECT_TRUE(has_text(regularised.hint, "friction.regularization = \"none\""));
-  const InputError faces =
-      refusal("", {{"friction.regularization", "none"}, {"friction.stick", "exact"}});
+  // An explicit pair that conflicts is refused, never overridden.
+  const InputError faces = refusal("", {{"friction.regularization", "none"},
+                                        {"contact.normals", "faces"},
+                                        {"friction.stick", "exact"}});
   EXPECT_EQ(faces.key, "friction.stick");
   EXPECT_TRUE(has_text(faces.hint, "contact.normals = \"nodes\""));
   const InputError secant = refusal("", {{"friction.regularization", "none"},
@@ -137,6 +140,47 @@ TEST(FormulationKeys, RefusalInAFileNamesItsLine) {
   fs::remove(path);
   EXPECT_EQ(error.key, "penalty.d");
   EXPECT_EQ(error.line, 5);
+}
+
+// friction.stick = "auto" (the default): the semismooth Newton on nodal points for the
+// exact law under Newton; what the user gave is honoured; elsewhere today's paths.
+TEST(FormulationKeys, TheExactLawUnderNewtonGetsExactStickOnNodesByDefault) {
+  using assembly::ContactNormals;
+  const StickChoice exact = stick_choice(load_case("", {{"friction.regularization", "none"}}));
+  EXPECT_EQ(exact.stick, StickEnforcement::Exact);
+  EXPECT_EQ(exact.normals, ContactNormals::Nodes);
+  EXPECT_FALSE(exact.stick_given);
+  EXPECT_FALSE(exact.normals_given);
+  const Case explicit_exact =
+      load_case("", {{"friction.regularization", "none"}, {"friction.stick", "exact"}});
+  EXPECT_EQ(stick_choice(explicit_exact).normals, ContactNormals::Nodes);
+  EXPECT_TRUE(problem_shape(explicit_exact).nodal_contact);
+
+  // Given faces are honoured: the augmented loop on face points, with a warning.
+  const Case faces =
+      load_case("", {{"friction.regularization", "none"}, {"contact.normals", "faces"}});
+  EXPECT_EQ(stick_choice(faces).stick, StickEnforcement::Augmented);
+  EXPECT_EQ(stick_choice(faces).normals, ContactNormals::Faces);
+  ASSERT_EQ(faces.warnings.size(), 1u);
+  EXPECT_TRUE(has_text(faces.warnings[0], "--set: contact.normals = \"faces\""));
+  // The old path by key: augmented stick keeps the face points.
+  const StickChoice augmented = stick_choice(
+      load_case("", {{"friction.regularization", "none"}, {"friction.stick", "augmented"}}));
+  EXPECT_EQ(augmented.stick, StickEnforcement::Augmented);
+  EXPECT_EQ(augmented.normals, ContactNormals::Faces);
+  EXPECT_TRUE(load_case("", {{"friction.regularization", "none"}, {"friction.stick", "augmented"}})
+                  .warnings.empty());
+
+  // Where exact stick is not available: the secant loop, the regularised law.
+  const StickChoice secant = stick_choice(
+      load_case("", {{"friction.regularization", "none"}, {"solver.method", "secant"}}));
+  EXPECT_EQ(secant.stick, StickEnforcement::Augmented);
+  EXPECT_EQ(secant.normals, ContactNormals::Faces);
+  const StickChoice regularised = stick_choice(load_case("", {}));
+  EXPECT_EQ(regularised.stick, StickEnforcement::Augmented);
+  EXPECT_EQ(regularised.normals, ContactNormals::Faces);
+  EXPECT_EQ(stick_choice(load_case("", {{"contact.normals", "nodes"}})).normals,
+            ContactNormals::Nodes);
 }
 
 } // namespace

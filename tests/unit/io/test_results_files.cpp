@@ -276,6 +276,7 @@ TEST_F(ResultsFiles, SummaryReportsStickAndSlipPerContactPart) {
   EXPECT_EQ(contact.at("die").at("stick_fraction"), 0.4);
   EXPECT_EQ(contact.at("container").at("stick_fraction"), 0.0);
   EXPECT_FALSE(contact.contains("augmented_lagrangian")); // only for exact friction
+  EXPECT_EQ(contact.at("points"), "faces");
 
   case_.friction.regularization = physics::FrictionRegularization::None;
   results_.augmentation = {12, 3e-5, 4e-6, 2e-7};
@@ -285,6 +286,26 @@ TEST_F(ResultsFiles, SummaryReportsStickAndSlipPerContactPart) {
   EXPECT_EQ(contact.at("augmented_lagrangian").at("multiplier_change"), 3e-5);
   EXPECT_EQ(contact.at("friction_residual"), 4e-6);
   EXPECT_EQ(contact.at("power_residual"), 2e-7);
+  // The exact law's default under Newton: the semismooth Newton on nodal points, stick
+  // read off the slip speed; the old path by key; the secant loop's active set.
+  EXPECT_EQ(contact.at("stick"), "exact");
+  EXPECT_EQ(contact.at("stick_given"), false);
+  EXPECT_EQ(contact.at("points"), "nodes");
+  EXPECT_EQ(contact.at("stick_criterion"), "|u_T| <= solver.tolerance * process.speed");
+  // The case block names the points that ran, so that it reruns the same way.
+  const auto block = nlohmann::json::parse(io::summary_json(case_, results_)).at("case");
+  EXPECT_EQ(block.at("contact").at("normals"), "nodes");
+  EXPECT_EQ(block.at("friction").at("stick"), "auto");
+  case_.friction_stick = io::StickEnforcement::Augmented;
+  contact = nlohmann::json::parse(io::summary_json(case_, results_)).at("contact");
+  EXPECT_EQ(contact.at("stick"), "augmented");
+  EXPECT_EQ(contact.at("stick_given"), true);
+  EXPECT_EQ(contact.at("points"), "faces");
+  EXPECT_EQ(contact.at("stick_criterion"), "|u_T| <= solver.tolerance * process.speed");
+  case_.solver.method = solvers::NonlinearMethod::Secant;
+  contact = nlohmann::json::parse(io::summary_json(case_, results_)).at("contact");
+  EXPECT_EQ(contact.at("stick"), "augmented (secant loop)");
+  EXPECT_TRUE(contact.at("stick_criterion").get<std::string>().find("Alart") != std::string::npos);
 }
 
 TEST_F(ResultsFiles, SummaryOfAnUnconvergedDrawingRun) {

@@ -13,7 +13,9 @@ std::vector<CaseKey> contact_keys() {
           [](auto& c) -> auto& { return c.contact.normals; })
           .doc("normal of the Γ3 penalty and friction: faces = each face's own normal at its "
                "Gauss points (the paper); nodes = one length-weighted mean normal per node, "
-               "penalty and friction lumped on the nodes (docs/validation.md, contact normals)"),
+               "penalty and friction lumped on the nodes (docs/validation.md, contact normals). "
+               "Not given, exact friction's semismooth Newton (friction.stick) puts the points "
+               "on the nodes; given, it is honoured"),
       real_key(
           "contact.corner_angle", 60.0, [](auto& c) -> auto& { return c.contact.corner_angle; })
           .above(0)

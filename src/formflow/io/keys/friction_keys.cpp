@@ -95,14 +95,19 @@ std::vector<CaseKey> friction_keys() {
                "penalty, and a stiffer one settles the multipliers in fewer updates "
                "(docs/friction.md)"),
       enum_key(
-          "friction.stick", "augmented",
-          {{"augmented", StickEnforcement::Augmented}, {"exact", StickEnforcement::Exact}},
+          "friction.stick", "auto",
+          {{"auto", StickEnforcement::Auto},
+           {"augmented", StickEnforcement::Augmented},
+           {"exact", StickEnforcement::Exact}},
           [](auto& c) -> auto& { return c.friction_stick; })
-          .doc("exact friction solved by Newton: augmented = stuck points held by the stick "
-               "penalty r and a multiplier update per iteration; exact = a semismooth Newton "
-               "with u_T = 0 imposed in every step at the stuck Γ3 nodes (needs "
-               "contact.normals = \"nodes\"; r then only predicts the active set and is "
-               "1/d_N unless friction.newton_augmentation is given; docs/friction.md)"),
+          .doc("how exact friction's Newton loop holds stuck points: exact = a semismooth "
+               "Newton with u_T = 0 imposed in every step at the stuck Γ3 nodes (on nodal "
+               "contact points: contact.normals not given becomes \"nodes\"; r then only "
+               "predicts the active set and is 1/d_N unless friction.newton_augmentation is "
+               "given); augmented = the stick penalty r and a multiplier update per iteration "
+               "(on face points unless contact.normals = \"nodes\"); auto = exact for the exact "
+               "law under Newton unless contact.normals = \"faces\" is given, augmented "
+               "otherwise (summary.json contact.stick says which ran; docs/friction.md)"),
   };
 }
 
