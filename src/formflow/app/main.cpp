@@ -7,12 +7,14 @@
 #if FORMFLOW_WITH_PETSC
 #include "formflow/solvers/petsc/petsc_session.hpp"
 
-#include <cstdio>
-#include <cstdlib>
-#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
+#endif
+
+#include <cstdio>
+#include <cstdlib>
+#include <initializer_list>
 
 namespace {
 
@@ -25,7 +27,6 @@ int launcher_value(std::initializer_list<const char*> names, int fallback) {
 }
 
 } // namespace
-#endif
 
 int main(int argc, char** argv) {
   formflow::app::install_stop_handlers();
@@ -62,6 +63,18 @@ int main(int argc, char** argv) {
   }
   return formflow::app::run_cli(static_cast<int>(rest.size()) - 1, rest.data());
 #else
+  // Without MPI each rank would run the whole case into the same directory: refuse,
+  // once (rank 0 says why), before anything is read or written.
+  if (const int ranks = launcher_value({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}, 1); ranks > 1) {
+    if (launcher_value({"OMPI_COMM_WORLD_RANK", "PMI_RANK"}, 0) == 0)
+      std::fprintf(stderr,
+                   "error: started by an MPI launcher on %d ranks, but this formflow was built "
+                   "without PETSc/MPI (FORMFLOW_WITH_PETSC=OFF)\n"
+                   "  hint: run it as one process, or build with -DFORMFLOW_WITH_PETSC=ON "
+                   "(./run and ./test do)\n",
+                   ranks);
+    return 2;
+  }
   return formflow::app::run_cli(argc, argv);
 #endif
 }
