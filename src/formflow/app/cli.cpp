@@ -171,10 +171,10 @@ int run_case(const Options& options) {
     // One line per adaptive cycle ([adapt]), then why they stopped.
     for (std::size_t k = 0; k < results.adapt.cycles.size(); ++k) {
       const post::AdaptCycle& cycle = results.adapt.cycles[k];
-      fmt::print("adapt cycle {}: {} cells, {} dofs, p = {:.5f}{}, {:.1f} s\n", k, cycle.cells,
+      fmt::print("adapt cycle {}: {} cells, {} dofs, p = {:.5f}{}, {:.1f} s{}\n", k, cycle.cells,
                  cycle.dofs, cycle.load,
                  cycle.estimate ? fmt::format(" ± {:.5f}", *cycle.estimate) : std::string(),
-                 cycle.seconds);
+                 cycle.seconds, cycle.refined_mesh ? " (the previous mesh split)" : "");
     }
     fmt::print("adapt: {} ({} cycles; target {:g} of the load)\n", results.adapt.stop,
                results.adapt.cycles.size(), case_.adapt.target_error);
