@@ -139,10 +139,10 @@ TEST(LoadErrorEstimate, CoulombFrictionIndicatorsSumToTheRefinedRunsChange) {
 }
 
 TEST(LoadErrorEstimate, TailRatioIsTheSlowerOfFirstOrderAndTheObserved) {
-  EXPECT_EQ(post::tail_ratio(std::nullopt), 0.5); // no third level: r = 1
-  EXPECT_EQ(post::tail_ratio(0.3), 0.5);          // faster than first order observed
-  EXPECT_EQ(post::tail_ratio(0.6), 0.6);          // slower: the observed ratio
-  EXPECT_FALSE(post::tail_ratio(1.2).has_value()); // no contraction: no tail
+  EXPECT_EQ(post::tail_ratio(std::nullopt), 0.5);   // no third level: r = 1
+  EXPECT_EQ(post::tail_ratio(0.3), 0.5);            // faster than first order observed
+  EXPECT_EQ(post::tail_ratio(0.6), 0.6);            // slower: the observed ratio
+  EXPECT_FALSE(post::tail_ratio(1.2).has_value());  // no contraction: no tail
   EXPECT_FALSE(post::tail_ratio(-0.4).has_value()); // oscillating levels
   // |Δ|/(1 − q) + |penalty|: q = 0.6, Δ = −0.04, penalty +0.003 → 0.1 + 0.003.
   EXPECT_DOUBLE_EQ(post::load_error_bound(-0.04, 0.6, 0.003), 0.103);

@@ -152,9 +152,8 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     }
     // The estimate's refined mesh, whose settled solution is at hand, may already be
     // accurate enough: solve there to δ and end on it, its load as the result.
-    if (std::optional<Simulation> last = end_on_refined_mesh(run, simulation, cycle == 0,
-                                                             cycle_start, entry, record,
-                                                             on_iteration)) {
+    if (std::optional<Simulation> last = end_on_refined_mesh(
+            run, simulation, cycle == 0, cycle_start, entry, record, on_iteration)) {
       simulation = std::move(*last);
       break;
     }

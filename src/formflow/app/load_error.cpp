@@ -37,8 +37,7 @@ post::LoadErrorEstimate unavailable(std::string why) {
 
 /// The load Q(u)/height of `problem` at `u` (the driven rows of the Newton assembly's
 /// internal force, as the estimate's weighted residuals count it).
-template <int dim>
-Real load_at(const assembly::FormingProblem<dim>& problem, const VectorX& u) {
+template <int dim> Real load_at(const assembly::FormingProblem<dim>& problem, const VectorX& u) {
   VectorX force;
   problem.assemble_newton(u, problem.friction_thresholds(u), assembly::NewtonDuals<dim>{}, force,
                           nullptr, nullptr);
@@ -139,7 +138,8 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
     return;
   }
   estimate.penalty_change = *doubled - load;
-  estimate.error = post::load_error_bound(estimate.enriched_change, *ratio, *estimate.penalty_change);
+  estimate.error =
+      post::load_error_bound(estimate.enriched_change, *ratio, *estimate.penalty_change);
 }
 
 } // namespace

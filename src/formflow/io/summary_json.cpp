@@ -64,8 +64,8 @@ json pressure_json(const Case& case_, const post::Results& results) {
       {"observed_ratio", estimate.observed_ratio ? json(*estimate.observed_ratio) : json(nullptr)},
       {"tail_ratio", estimate.error ? json(estimate.ratio) : json(nullptr)},
       {"discretisation", estimate.error ? json(estimate.discretisation_error) : json(nullptr)},
-      {"penalty_change", estimate.error && estimate.penalty_change ? json(*estimate.penalty_change)
-                                                                   : json(nullptr)},
+      {"penalty_change",
+       estimate.error && estimate.penalty_change ? json(*estimate.penalty_change) : json(nullptr)},
       {"of_refined_mesh", estimate.of_refined_mesh},
       {"penalty_newton_iterations", estimate.penalty_newton_iterations},
       {"assumed_order", post::assumed_load_error_order}};
