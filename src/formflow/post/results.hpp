@@ -139,10 +139,11 @@ struct LoadErrorEstimate {
   Real ratio = 0.5;
   /// |p_{h/2} − p_h| / (1 − q): the discretisation part of `error`.
   Real discretisation_error = 0.0;
-  /// p_h(2ε) − p_h(ε), every constraint penalty (d, d_N, d_T) doubled on the same
-  /// mesh: by the first-order expansion in ε, the estimate of p(ε) − p(0); its
-  /// magnitude is the model part of `error`. std::nullopt when skipped: an adaptive
-  /// cycle whose discretisation part alone is above the target (the stop needs no more).
+  /// p_h(2ε) − p_h(ε), every regularisation (d, d_N, d_T and the paper's power law's
+  /// α) doubled on the same mesh: by the first-order expansion in ε, the estimate of
+  /// p(ε) − p(0); its magnitude is the model part of `error`. std::nullopt when
+  /// skipped: an adaptive cycle whose tail beyond its refined mesh alone is above the
+  /// target (the stop needs no more).
   std::optional<Real> penalty_change;
   Index penalty_newton_iterations = 0;
   /// The settled solution on the refined mesh ("refined" only; empty otherwise): an
