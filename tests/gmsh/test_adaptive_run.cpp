@@ -64,6 +64,41 @@ TEST(AdaptiveRun, CyclesAreRecordedAndTheRefinedMeshIsBetter) {
   EXPECT_TRUE(document["mesh"]["adapted"].get<bool>());
 }
 
+TEST(AdaptiveRun, EndsOnTheEstimatesRefinedMeshWhenItsOwnErrorIsWithinTarget) {
+  // The benchmark in the rate-insensitive setting (α = 1e-4, d = 1e-4) at h = 1: the
+  // first estimate is ≈ 9 % of the load (2 |p_{1/2} − p_1| + penalties), the refined
+  // mesh's own ≈ 5 % (|p_{1/2} − p_1| + penalties); a 6 % target is met on the
+  // refined mesh only, so the run ends there (no remesh, no second estimate).
+  io::Case case_;
+  case_.process.ram = physics::RamCondition::Sticking;
+  case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
+  case_.penalty.d = 1e-4;
+  case_.mesh.size = 1.0;
+  case_.adapt.target_error = 0.06;
+  const post::Results results = app::simulate(case_).results;
+  ASSERT_TRUE(results.converged());
+  const post::AdaptRecord& record = results.adapt;
+  ASSERT_EQ(record.cycles.size(), 2u);
+  EXPECT_EQ(record.stop, "target reached on the refined mesh");
+  EXPECT_TRUE(record.reached_target);
+  EXPECT_FALSE(record.cycles[0].refined_mesh);
+  EXPECT_TRUE(record.cycles[1].refined_mesh);
+  ASSERT_TRUE(record.cycles[0].estimate && record.cycles[1].estimate);
+  EXPECT_GT(*record.cycles[0].estimate, case_.adapt.target_error * record.cycles[0].load);
+  // The result is the run on the mesh the first estimate refined to.
+  EXPECT_EQ(results.n_dofs, results.load_error.enriched_dofs);
+  EXPECT_TRUE(results.load_error.of_refined_mesh);
+  EXPECT_EQ(results.fields.cell_load_error.size(), results.n_cells);
+  const double exact = 1.0 + std::numbers::pi / 2.0;
+  ASSERT_TRUE(results.load_error.error.has_value());
+  EXPECT_LE(*results.load_error.error, case_.adapt.target_error * results.pressure.ram_reaction);
+  EXPECT_LE(std::abs(results.pressure.ram_reaction - exact), *results.load_error.error)
+      << "p_{h/2} ± its estimate holds the exact load";
+  EXPECT_LT(std::abs(results.pressure.ram_reaction - results.pressure.total_power) /
+                results.pressure.ram_reaction,
+            20 * case_.solver.tolerance);
+}
+
 TEST(AdaptiveRun, WithoutAdaptTheSummaryHasNoAdaptBlock) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;

@@ -17,12 +17,16 @@ constexpr double degree = std::numbers::pi / 180.0;
 /// The band of tests/regression/test_load_error_estimate.cpp (derived there).
 constexpr double min_effectivity = 0.5, max_effectivity = 3.0;
 
-double effectivity(const io::Case& case_, double exact) {
+/// `contained`: also assert p_h ± estimate ∋ exact (the ram's rungs; on the wedges it
+/// fails where docs/error-estimation.md's table says "no": their limit's offset).
+double effectivity(const io::Case& case_, double exact, bool contained) {
   const post::Results results = app::simulate(case_).results;
   EXPECT_TRUE(results.converged());
   EXPECT_TRUE(results.load_error.error.has_value()) << results.load_error.unavailable;
   const double error = std::abs(results.pressure.ram_reaction - exact);
   const double index = results.load_error.error.value_or(0.0) / error;
+  if (contained)
+    EXPECT_LE(error, results.load_error.error.value_or(0.0)) << "p_h ± estimate holds p";
   std::printf("h = %g: p_h = %.5f, estimate %.5f, error %.5f, effectivity %.3f\n", case_.mesh.size,
               results.pressure.ram_reaction, results.load_error.error.value_or(0.0), error, index);
   return index;
@@ -36,7 +40,7 @@ TEST(LoadErrorLadder, StickingRam) {
     case_.penalty.d = 1e-4;
     case_.mesh.size = size;
     case_.solver.load_error = solvers::LoadErrorMethod::Refined;
-    const double index = effectivity(case_, 1.0 + std::numbers::pi / 2.0);
+    const double index = effectivity(case_, 1.0 + std::numbers::pi / 2.0, true);
     EXPECT_GE(index, min_effectivity) << "h = " << size;
     EXPECT_LE(index, max_effectivity) << "h = " << size;
   }
@@ -54,7 +58,7 @@ TEST(LoadErrorLadder, HillWedgeDrawing) {
       case_.mesh.size = size;
       case_.material.parameters_of<physics::PiecewisePower>().alpha = 1e-4;
       case_.solver.load_error = solvers::LoadErrorMethod::Refined;
-      const double index = effectivity(case_, hill_wedge_stress(degrees * degree));
+      const double index = effectivity(case_, hill_wedge_stress(degrees * degree), false);
       EXPECT_GE(index, min_effectivity) << degrees << "°, h = " << size;
       EXPECT_LE(index, max_effectivity) << degrees << "°, h = " << size;
     }

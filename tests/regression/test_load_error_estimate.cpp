@@ -5,9 +5,11 @@
 #include "support/forming_references.hpp"
 
 #include "formflow/io/results_writer.hpp"
+#include "formflow/post/load_error_estimate.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,13 +18,15 @@ namespace {
 
 constexpr double degree = std::numbers::pi / 180.0;
 
-/// The effectivity band. The estimate is |p_{h/2} − p_h| / (1 − 2^{−r}) with r = 1;
-/// if the load converges at an observed order r′, its effectivity is
-/// 2 (1 − 2^{−r′}) (1 + ε), ε the relative error of the refined change (the
-/// refined Newton solve stops at 1e-3 and the adjoint linearises the rest). For
-/// any r′ ≥ 1/2 and |ε| ≤ 15 % that is in [2 (1 − 2^{−1/2}) 0.85, 2 · 1.15] =
-/// [0.498, 2.3] ⊂ [0.5, 3] up to the third digit; the observed orders of these
-/// loads are 0.99–1.02 (docs/validation.md, tests/regression/test_slip_line_limit.cpp).
+/// The effectivity band: the issue's [0.5, 3]. What the estimate's construction
+/// gives (docs/error-estimation.md): |p_{h/2} − p_h| / (1 − q) with q ≥ ½ the larger
+/// of first order and the observed contraction, plus the penalties' offset. For a
+/// load converging at order r′ ∈ [½, 1] with the observed q its own, the tail part
+/// alone is the true discretisation error times (1 + ε), ε the relative error of
+/// the refined change (the refined Newton stops at 1e-3; the independent check
+/// below holds it within 15 %); the penalty part adds at most the offset it
+/// estimates, itself part of the true error. So the index lies in [0.85, 1.15 + 1]
+/// ⊂ [0.5, 3]; the band asserted is the issue's, wider than that.
 constexpr double min_effectivity = 0.5, max_effectivity = 3.0;
 
 io::Case sticking_ram(double size) {
@@ -63,6 +67,7 @@ double effectivity(const post::Results& results, double exact) {
   EXPECT_EQ(estimate.cell_indicators.size(), results.n_cells);
   EXPECT_NEAR(estimate.cell_indicators.sum(), estimate.enriched_change,
               1e-12 * estimate.cell_indicators.cwiseAbs().sum());
+  EXPECT_TRUE(estimate.penalty_change.has_value());
   return *estimate.error / std::abs(results.pressure.ram_reaction - exact);
 }
 
@@ -73,12 +78,26 @@ TEST(LoadErrorEstimate, StickingRamCoarseRungIsEffective) {
   const double index = effectivity(results, exact);
   EXPECT_GE(index, min_effectivity);
   EXPECT_LE(index, max_effectivity);
+  // Reliability: the interval p_h ± estimate holds the exact load. Here the tail
+  // (2 |p_{1/2} − p_1|, first order) is the error to 1e-4 and the regularisations'
+  // offset (α, d: −3.9e-4) is what covers the rest (docs/error-estimation.md).
+  ASSERT_TRUE(results.load_error.error.has_value());
+  EXPECT_LE(std::abs(results.pressure.ram_reaction - exact), *results.load_error.error)
+      << "p_h = " << results.pressure.ram_reaction << ", exact " << exact;
 }
 
 TEST(LoadErrorEstimate, HillWedgeDrawingCoarseRungsAreEffective) {
-  // Hill's slip-line drawing stress 2k(1 + α) r (docs/validation.md), 4 rows.
+  // Hill's slip-line drawing stress 2k(1 + α) r (docs/validation.md), 4 rows. The
+  // channel admits 2h = 1/2: the ratio is the observed one where it is above ½.
+  // Containment is not asserted: it fails here by 2 % of the error, the discrete
+  // loads' limit lying 0.3–0.4 % above Hill's value for a reason the estimate does not
+  // see (not the penalties nor α: their doubling moves the load by 1e-4;
+  // docs/error-estimation.md).
   for (double degrees : {15.0, 30.0}) {
     const post::Results results = app::simulate(hill_drawing(degrees, 0.25)).results;
+    const post::LoadErrorEstimate& estimate = results.load_error;
+    ASSERT_TRUE(estimate.observed_ratio.has_value()) << degrees << "°";
+    EXPECT_EQ(estimate.ratio, std::max(0.5, *estimate.observed_ratio));
     const double index = effectivity(results, hill_wedge_stress(degrees * degree));
     EXPECT_GE(index, min_effectivity) << degrees << "°";
     EXPECT_LE(index, max_effectivity) << degrees << "°";
@@ -117,6 +136,16 @@ TEST(LoadErrorEstimate, CoulombFrictionIndicatorsSumToTheRefinedRunsChange) {
   io::Case case_ = sticking_ram(1.0);
   case_.friction.mu = 0.1;
   expect_indicators_sum_to_the_refined_runs_change(case_);
+}
+
+TEST(LoadErrorEstimate, TailRatioIsTheSlowerOfFirstOrderAndTheObserved) {
+  EXPECT_EQ(post::tail_ratio(std::nullopt), 0.5);   // no third level: r = 1
+  EXPECT_EQ(post::tail_ratio(0.3), 0.5);            // faster than first order observed
+  EXPECT_EQ(post::tail_ratio(0.6), 0.6);            // slower: the observed ratio
+  EXPECT_FALSE(post::tail_ratio(1.2).has_value());  // no contraction: no tail
+  EXPECT_FALSE(post::tail_ratio(-0.4).has_value()); // oscillating levels
+  // |Δ|/(1 − q) + |penalty|: q = 0.6, Δ = −0.04, penalty +0.003 → 0.1 + 0.003.
+  EXPECT_DOUBLE_EQ(post::load_error_bound(-0.04, 0.6, 0.003), 0.103);
 }
 
 TEST(LoadErrorEstimate, WithoutEstimateSummarySaysNull) {

@@ -161,9 +161,10 @@ int run_case(const Options& options) {
     const char* load =
         case_.process.type == physics::ProcessType::Drawing ? "drawing stress" : "ram pressure";
     if (results.load_error.error)
-      fmt::print("load: {} p = {:.4f} ± {:.4f} (estimated discretisation error, "
-                 "docs/error-estimation.md)\n",
-                 load, results.pressure.ram_reaction, *results.load_error.error);
+      fmt::print(
+          "load: {} p = {:.4f} ± {:.4f} (estimated error: discretisation and regularisations, "
+          "docs/error-estimation.md)\n",
+          load, results.pressure.ram_reaction, *results.load_error.error);
     else
       fmt::print("load: {} p = {:.4f} (no error estimate: {})\n", load,
                  results.pressure.ram_reaction, results.load_error.unavailable);
@@ -172,10 +173,10 @@ int run_case(const Options& options) {
     // One line per adaptive cycle ([adapt]), then why they stopped.
     for (std::size_t k = 0; k < results.adapt.cycles.size(); ++k) {
       const post::AdaptCycle& cycle = results.adapt.cycles[k];
-      fmt::print("adapt cycle {}: {} cells, {} dofs, p = {:.5f}{}, {:.1f} s\n", k, cycle.cells,
+      fmt::print("adapt cycle {}: {} cells, {} dofs, p = {:.5f}{}, {:.1f} s{}\n", k, cycle.cells,
                  cycle.dofs, cycle.load,
                  cycle.estimate ? fmt::format(" ± {:.5f}", *cycle.estimate) : std::string(),
-                 cycle.seconds);
+                 cycle.seconds, cycle.refined_mesh ? " (the previous mesh split)" : "");
     }
     fmt::print("adapt: {} ({} cycles; target {:g} of the load)\n", results.adapt.stop,
                results.adapt.cycles.size(), case_.adapt.target_error);

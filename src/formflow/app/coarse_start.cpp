@@ -38,13 +38,12 @@ bool structured_size_fits(const mesh::ChannelGeometry& g, Real size) {
   return mesh::cells_along(g.exit_half_height, size) < mesh::cells_along(g.entry_half_height, size);
 }
 
-/// The same for the mesh of `spec`, plane or solid (the rectangle's widths too).
+} // namespace
+
 bool size_fits(const mesh::MeshSpec& spec, Real size) {
   return spec.dimension == 3 ? mesh::solid_lengths_fit(spec.geometry, spec.solid, size)
                              : structured_size_fits(spec.geometry, size);
 }
-
-} // namespace
 
 template <int dim>
 std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<dim>& fine,

@@ -20,6 +20,11 @@ struct CoarseStart {
   bool converged = true;        ///< every coarse level reached δ
 };
 
+/// Whether the structured mesh of `spec` (plane or solid) can be made at `size`:
+/// every length the generator divides is a multiple of it and the exit keeps fewer
+/// cells than the entry (the levels of mesh sequencing and of the load's estimate).
+bool size_fits(const mesh::MeshSpec& spec, Real size);
+
 /// Nested iteration (solver.coarse_levels = L > 0): solves `case_` with Newton on
 /// the meshes of size 2^L h, ..., 2h (h = mesh.size; a structured channel mesh and
 /// its refinement by 2 nest exactly), the coarsest from the constant-viscosity

@@ -5,9 +5,17 @@
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/core/timer.hpp"
 #include "formflow/io/case.hpp"
+#include "formflow/mesh/uniform_refinement.hpp"
 #include "formflow/post/results.hpp"
 
 namespace formflow::app {
+
+/// The refined mesh of the estimate and each of its cells' parent in `mesh`: the
+/// structured channel at half the size when the case's structured mesh ran
+/// (`mesh_from_case`), else `mesh` split uniformly.
+template <int dim>
+mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim>& mesh,
+                                     bool mesh_from_case);
 
 /// post::estimate_load_error for `case_` solved on `problem` with velocity `u`:
 /// makes the mesh refined once (case_.mesh with half the size; the structured
@@ -16,7 +24,9 @@ namespace formflow::app {
 /// fine cell. Says why not (LoadErrorEstimate::unavailable) when solver.load_error
 /// = "none", the mesh came from a file or not from the case, the run did not
 /// converge, or the problem has no Newton tangent (exact friction, d = 0 or
-/// d_N = 0, Taylor–Hood).
+/// d_N = 0, Taylor–Hood). The estimate is completed into a bound (post::load_error_bound):
+/// a solve with the penalties doubled on the same mesh and, when the structured
+/// channel admits 2h, a solve there for the observed ratio (docs/error-estimation.md).
 template <int dim>
 post::LoadErrorEstimate
 load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,

@@ -54,12 +54,21 @@ json pressure_json(const Case& case_, const post::Results& results) {
     out["drawing_stress_error"] = error;
   }
   out["error_estimate"] = {
-      {"method", "adjoint of the reaction on the mesh refined once (dual-weighted residual)"},
+      {"method", "adjoint of the reaction on the mesh refined once (dual-weighted residual), "
+                 "its geometric tail, plus the doubled penalties' offset"},
       {"computed", estimate.error.has_value()},
       {"unavailable", estimate.error ? json(nullptr) : json(estimate.unavailable)},
       {"refined_dofs", estimate.enriched_dofs},
       {"refined_newton_iterations", estimate.settle_iterations},
       {"refined_change", estimate.error ? json(estimate.enriched_change) : json(nullptr)},
+      {"coarser_change", estimate.coarser_change ? json(*estimate.coarser_change) : json(nullptr)},
+      {"observed_ratio", estimate.observed_ratio ? json(*estimate.observed_ratio) : json(nullptr)},
+      {"tail_ratio", estimate.error ? json(estimate.ratio) : json(nullptr)},
+      {"discretisation", estimate.error ? json(estimate.discretisation_error) : json(nullptr)},
+      {"penalty_change",
+       estimate.error && estimate.penalty_change ? json(*estimate.penalty_change) : json(nullptr)},
+      {"of_refined_mesh", estimate.of_refined_mesh},
+      {"penalty_newton_iterations", estimate.penalty_newton_iterations},
       {"assumed_order", post::assumed_load_error_order}};
   return out;
 }
@@ -176,6 +185,7 @@ json adapt_json(const Case& case_, const post::AdaptRecord& record) {
                                                 : json(nullptr)},
                       {"newton_iterations", cycle.newton_iterations},
                       {"marked_cells", cycle.marked},
+                      {"refined_mesh", cycle.refined_mesh},
                       {"time_s", cycle.seconds}});
   }
   return {{"target_error", case_.adapt.target_error},

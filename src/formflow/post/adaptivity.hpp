@@ -19,6 +19,9 @@ struct AdaptSettings {
   int max_cycles = 8;      ///< solves, the first (on the case's mesh) included
   Index max_dofs = 400000; ///< no cycle on a mesh expected to have more dofs
   Real fraction = 0.5;     ///< Dörfler's θ: refine the cells holding this share of Σ|η_K|
+  /// Not a key: inside an adaptive run, the target its cycles' estimates are held to
+  /// (the estimate skips its penalty run while its discretisation part alone exceeds it).
+  Real cycle_target = 0.0;
   bool enabled() const { return target_error > 0; }
 };
 
@@ -30,6 +33,9 @@ struct AdaptCycle {
   int newton_iterations = 0;
   Index marked = 0;   ///< cells marked for refinement after this cycle (0 for the last)
   Real seconds = 0.0; ///< wall time of the cycle: solve, estimate, marking, remeshing
+  /// The previous cycle's mesh split uniformly (the estimate's refined mesh), solved
+  /// from the estimate's settled solution: the run ended on it.
+  bool refined_mesh = false;
 };
 
 /// The record of an adaptive run: empty `cycles` when there was none.

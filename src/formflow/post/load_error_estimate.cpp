@@ -71,6 +71,7 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
   // 1b. Settle the nonlinearity on the fine mesh (a loose Newton solve from ũ): the
   // near rate-insensitive law makes the one-step linearisation miss most of the change.
   Index settle_iterations = 0;
+  VectorX refined_velocity; // the settled field, kept for an adaptive run's last step
   if (settle) {
     PhaseTimes inner;
     auto settle_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
@@ -79,6 +80,7 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
         solvers::newton_iteration(nonlinear, *settle_solver, *settle, {}, inner, &prolonged);
     settle_iterations = static_cast<Index>(outcome.history.size());
     if (outcome.velocity.allFinite()) prolonged = outcome.velocity;
+    refined_velocity = prolonged;
   }
   const std::vector<Real> thresholds = fine.friction_thresholds(prolonged);
 
@@ -134,12 +136,27 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
   estimate.enriched_change = estimate.cell_indicators.sum();
   estimate.enriched_dofs = fine.n_dofs();
   estimate.settle_iterations = static_cast<int>(settle_iterations);
+  estimate.refined_velocity = std::move(refined_velocity);
   if (!std::isfinite(estimate.enriched_change) || !estimate.cell_indicators.allFinite())
     return unavailable("the weighted residual is not finite");
-  // 4. From the two-level change to the error of p_h (assumed_load_error_order).
-  estimate.error =
-      std::abs(estimate.enriched_change) / (1.0 - std::pow(2.0, -assumed_load_error_order));
+  // 4. From the two-level change to the error of p_h (assumed_load_error_order); the
+  // caller may observe the ratio on a third level and adds the penalties' part.
+  estimate.ratio = std::pow(2.0, -assumed_load_error_order);
+  estimate.discretisation_error = std::abs(estimate.enriched_change) / (1.0 - estimate.ratio);
+  estimate.error = estimate.discretisation_error;
   return estimate;
+}
+
+std::optional<Real> tail_ratio(std::optional<Real> observed_ratio) {
+  const Real fastest = std::pow(2.0, -assumed_load_error_order);
+  if (!observed_ratio) return fastest;
+  if (!(*observed_ratio > 0.0 && *observed_ratio < 1.0)) return std::nullopt;
+  return std::max(fastest, *observed_ratio);
+}
+
+Real load_error_bound(Real refined_change, Real ratio, Real penalty_change) {
+  FF_ASSERT(ratio >= 0.0 && ratio < 1.0, "a contracting tail");
+  return std::abs(refined_change) / (1.0 - ratio) + std::abs(penalty_change);
 }
 
 template <int dim>

@@ -23,6 +23,22 @@ namespace formflow::post {
 /// the estimate pessimistic by at most 2 (1 − 2^{-r}) < 2, a slower one optimistic.
 inline constexpr Real assumed_load_error_order = 1.0;
 
+/// The ratio q of successive load differences (p_{h/4} − p_{h/2}) / (p_{h/2} − p_h)
+/// taken for the tail p − p_{h/2} = (p_{h/2} − p_h)(q + q² + …) of the geometric
+/// series: the larger of 2^{-r} (r = assumed_load_error_order, the fastest the
+/// die corner allows) and the ratio observed on the three levels 2h, h, h/2, so that
+/// a load converging more slowly than first order on these levels is not
+/// extrapolated at first order. std::nullopt when the observed ratio is not in
+/// (0, 1): the levels do not contract monotonically (pre-asymptotic), and no tail
+/// can be summed.
+std::optional<Real> tail_ratio(std::optional<Real> observed_ratio);
+
+/// The estimate of |p_h − p|: |p_{h/2} − p_h| / (1 − q) (the discretisation error,
+/// the whole geometric tail from p_h) plus |p_h(2ε) − p_h(ε)| (the penalties'
+/// first-order offset p(ε) − p(0), estimated on the same mesh). Both added in
+/// magnitude: their signs are not assumed to cancel.
+Real load_error_bound(Real refined_change, Real ratio, Real penalty_change);
+
 /// The DWR estimate for the driven-end reaction Q(u) = Σ_driven f_i(u) (the ram
 /// reaction, the drawing force). `fine` is the same discrete problem on the mesh
 /// refined once (nested in `coarse`'s); `u` the solution on `coarse`.
@@ -37,7 +53,9 @@ inline constexpr Real assumed_load_error_order = 1.0;
 ///     a lifting for the coarse reaction, and per coarse cell K
 ///     η_K = Σ_{children k} W_k·f_k(ũ) − W_h,K·f_K(u) (Galerkin orthogonality on
 ///     the coarse space is what the subtraction removes).
-///  4. error = |Σ η_K| / (1 − 2^{-r}) / height, r = assumed_load_error_order.
+///  4. discretisation_error = |Σ η_K| / (1 − 2^{-r}) / height, r =
+///     assumed_load_error_order (the caller may replace the ratio from a third
+///     level and add the penalties' part: app/load_error.cpp).
 /// `parent` maps each fine cell to its coarse cell. Timed as "error estimate".
 template <int dim>
 LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,

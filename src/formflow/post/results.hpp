@@ -120,14 +120,38 @@ struct LinearAlgebra {
 /// The goal-oriented estimate of the load's discretisation error
 /// (post/load_error_estimate.hpp; pressure units: force / driven height).
 struct LoadErrorEstimate {
-  /// Estimate of |p_h − p| for p the load of the continuous penalised problem;
-  /// std::nullopt when it was not computed (`unavailable` says why).
+  /// Estimate of |p_h − p| for p the load of the continuous problem with the
+  /// constraint penalties removed (d, d_N, d_T → 0): discretisation_error +
+  /// |penalty_change| (post::load_error_bound); std::nullopt when it was not
+  /// computed (`unavailable` says why).
   std::optional<Real> error;
   std::string unavailable;
   /// p_{h/2} − p_h linearised at the prolonged solution (signed): the DWR sum.
   Real enriched_change = 0.0;
   Index enriched_dofs = 0;
   int settle_iterations = 0; ///< Newton iterations on the refined mesh before the adjoint
+  /// p_h − p_{2h} from a solve on the mesh coarsened once (structured channels whose
+  /// lengths admit 2h), and the contraction ratio (p_{h/2} − p_h)/(p_h − p_{2h}) it
+  /// gives; std::nullopt without that level.
+  std::optional<Real> coarser_change;
+  std::optional<Real> observed_ratio;
+  /// The ratio q used for the tail: max(2^{-r_max}, observed ratio) (post::tail_ratio).
+  Real ratio = 0.5;
+  /// |p_{h/2} − p_h| / (1 − q): the discretisation part of `error`.
+  Real discretisation_error = 0.0;
+  /// p_h(2ε) − p_h(ε), every regularisation (d, d_N, d_T and the paper's power law's
+  /// α) doubled on the same mesh: by the first-order expansion in ε, the estimate of
+  /// p(ε) − p(0); its magnitude is the model part of `error`. std::nullopt when
+  /// skipped: an adaptive cycle whose tail beyond its refined mesh alone is above the
+  /// target (the stop needs no more).
+  std::optional<Real> penalty_change;
+  Index penalty_newton_iterations = 0;
+  /// The settled solution on the refined mesh ("refined" only; empty otherwise): an
+  /// adaptive run's last step starts there (app/adaptive_run.cpp).
+  VectorX refined_velocity;
+  /// True when this estimate is of the refined mesh's load p_{h/2} (an adaptive run
+  /// that ended on it): error = |p_{h/2} − p_h| q/(1 − q) + |penalty_change|.
+  bool of_refined_mesh = false;
   /// Per cell of the mesh that ran, its share of `enriched_change` (signed; the
   /// entries sum to it): the local error indicator. Empty when not computed.
   VectorX cell_indicators;

@@ -89,9 +89,11 @@ std::vector<CaseKey> solver_keys() {
            {"none", solvers::LoadErrorMethod::None}},
           [](auto& c) -> auto& { return c.solver.load_error; })
           .doc("estimate of |p_h − p| for the load (summary.json pressure.ram_reaction_error, "
-               "drawing_stress_error; docs/error-estimation.md): refined = Newton on the mesh "
-               "refined once from the solution, to relative change 1e-3, then the reaction's "
-               "adjoint there (effectivity 0.9–1.0; costs 4–8 times the run); linearized = the "
+               "drawing_stress_error; docs/error-estimation.md): |p_{h/2} − p_h|/(1 − q) with "
+               "q the slower of first order and the ratio observed on 2h, h, h/2, plus the "
+               "load's change when d, d_N, d_T and the power law's α are doubled; refined = "
+               "p_{h/2} from Newton on the mesh refined once, to δ, and the reaction's adjoint "
+               "there (effectivity 0.98–1.14; costs 4–8 times the run); linearized = the "
                "adjoint at the prolonged solution only (one factorisation; underestimates "
                "nearly rate-insensitive loads by ≈ 2.6×); none = no estimate (the default while "
                "the estimate costs more than the run)"),
