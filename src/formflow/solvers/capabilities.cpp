@@ -42,8 +42,9 @@ std::optional<Refusal> refusal(const ProblemShape& shape) {
                    "use formulation.type = \"penalty\" for axisymmetric runs"};
   if (shape.global_pressure && shape.exact_friction)
     return Refusal{{pressure_key(shape), "friction.regularization"},
-                   "exact friction (its augmented-Lagrangian loop runs the CHOLMOD secant solve) "
-                   "is not wired to the saddle-point solve",
+                   fmt::format("exact friction (its augmented-Lagrangian loop runs the CHOLMOD "
+                               "secant solve) is not wired to the {} saddle-point solve",
+                               shape.discontinuous_saddle_point ? "mixed" : "Taylor–Hood"),
                    shape.discontinuous_saddle_point
                        ? "use friction.regularization = \"regularized\", or "
                          "formulation.discontinuous_pressure = \"condensed\""
