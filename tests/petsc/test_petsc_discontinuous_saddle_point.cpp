@@ -56,20 +56,18 @@ TEST(DiscontinuousSaddlePoint, GivesTheCondensedLoadByUmfpackAndByPetsc) {
   const app::Simulation by_umfpack =
       run({{"mesh.size", "2.5"}, {"formulation.discontinuous_pressure", "saddle_point"}},
           /*estimate_condition=*/true);
-  const app::Simulation by_petsc =
-      run({{"mesh.size", "2.5"},
-           {"formulation.discontinuous_pressure", "saddle_point"},
-           {"solver.linear", "petsc"},
-           {"solver.petsc_options", "-ksp_rtol 1e-12"}});
+  const app::Simulation by_petsc = run({{"mesh.size", "2.5"},
+                                        {"formulation.discontinuous_pressure", "saddle_point"},
+                                        {"solver.linear", "petsc"},
+                                        {"solver.petsc_options", "-ksp_rtol 1e-12"}});
   ASSERT_TRUE(condensed.reciprocal_condition && by_umfpack.reciprocal_condition);
   const Real r_condensed = *condensed.reciprocal_condition;
   const Real r_saddle = *by_umfpack.reciprocal_condition;
   const Real direct = agreement(epsilon / r_condensed + epsilon / r_saddle);
   const Real iterative = agreement(epsilon / r_condensed + krylov_tolerance / r_saddle);
   std::cout << "rcond condensed " << r_condensed << " saddle " << r_saddle << "; UMFPACK "
-            << relative_difference(by_umfpack, condensed) << " (tolerance " << direct
-            << "), PETSc " << relative_difference(by_petsc, condensed) << " (tolerance "
-            << iterative << ")\n";
+            << relative_difference(by_umfpack, condensed) << " (tolerance " << direct << "), PETSc "
+            << relative_difference(by_petsc, condensed) << " (tolerance " << iterative << ")\n";
   EXPECT_LE(relative_difference(by_umfpack, condensed), direct);
   EXPECT_LE(relative_difference(by_petsc, condensed), iterative);
   EXPECT_EQ(by_umfpack.results.method, "saddle point (umfpack) around secant");
@@ -83,11 +81,10 @@ TEST(DiscontinuousSaddlePoint, GivesTheCondensedLoadByUmfpackAndByPetsc) {
 /// The largest Krylov count of the secant steps of a default PETSc saddle-point run.
 long largest_krylov_count(const std::string& size) {
   // δ = 1e-4: the counts are the solves', not the loop's (the later override wins).
-  const app::Simulation simulation =
-      run({{"mesh.size", size},
-           {"formulation.discontinuous_pressure", "saddle_point"},
-           {"solver.linear", "petsc"},
-           {"solver.tolerance", "1e-4"}});
+  const app::Simulation simulation = run({{"mesh.size", size},
+                                          {"formulation.discontinuous_pressure", "saddle_point"},
+                                          {"solver.linear", "petsc"},
+                                          {"solver.tolerance", "1e-4"}});
   long largest = 0;
   for (const auto& record : simulation.results.history)
     largest = std::max<long>(largest, record.linear_iterations);
