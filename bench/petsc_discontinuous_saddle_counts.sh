@@ -6,8 +6,8 @@
 # complement; docs/petsc.md), over three refinements: the 2D paper case, the 3D slab
 # (cases/slab-extrusion-3d.toml) and the 3D round quarter (cases/round-rod-3d.toml),
 # each with its own default friction, d = 1e-3 (default) and d = 0, δ = 1e-4.
-# Velocity block: the default (one GAMG V-cycle with the rigid-body near-null space)
-# and one BoomerAMG V-cycle. Counts only: they do not depend on the machine's load.
+# Velocity block: one GAMG V-cycle with the rigid-body near-null space, or one
+# BoomerAMG V-cycle (the default). Counts only: they do not depend on the machine's load.
 # Usage: bench/petsc_discontinuous_saddle_counts.sh [BUILD_DIR] [VARIANTS] [d values]
 #   (defaults: build, "gamg hypre", "1e-3 0"); ROUND_SIZES (default "0.5 0.25 0.125")
 #   sets the round quarter's mesh sizes, "" leaves it out.
@@ -19,8 +19,8 @@ penalties=${3:-1e-3 0}
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 declare -A options=(
-  [gamg]=""
-  [hypre]="-fieldsplit_u_pc_type hypre"
+  [gamg]="-fieldsplit_u_pc_type gamg"
+  [hypre]=""
 )
 saddle=(--set formulation.type=mixed --set formulation.pressure=P1disc
         --set formulation.discontinuous_pressure=saddle_point --set solver.linear=petsc

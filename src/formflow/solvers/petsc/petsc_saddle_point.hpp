@@ -36,8 +36,8 @@ private:
 /// inner solves are inexact; PCFIELDSPLIT Schur with the upper block-triangular
 /// factorisation and the user's matrix (the viscosity-scaled pressure mass) for the
 /// Schur complement, inverted exactly by point-block Jacobi on the cell blocks; one
-/// GAMG V-cycle on the velocity block, whose near-null space (the rigid-body modes)
-/// the split's IS carries.
+/// BoomerAMG V-cycle on the velocity block (`-fieldsplit_u_pc_type gamg` uses the
+/// rigid-body modes that the split's IS carries as its near-null space).
 void set_saddle_point_defaults(KSP ksp, DefaultOptions& defaults);
 
 /// `matrix` (square, both triangles, column-major Eigen) as a sequential AIJ matrix with
