@@ -94,7 +94,7 @@ long largest_krylov_count(const std::string& size) {
 }
 
 /// The preconditioner's blocks are spectrally equivalent to the velocity block (one
-/// AMG V-cycle with the rigid-body modes) and to the Schur complement (the
+/// BoomerAMG V-cycle, the default) and to the Schur complement (the
 /// viscosity-scaled mass, whose constants are the inf-sup constant's, bounded in h:
 /// docs/mixed.md), so the FGMRES count to a fixed rtol is bounded independently of
 /// h. The target for that is "within 2× over refinements": one halving of h
