@@ -69,9 +69,14 @@ void check_distributed(const io::Case& case_) {
       plan.loop == solvers::LoopKind::AugmentedSecant ||
       plan.loop == solvers::LoopKind::AugmentedNewton)
     return;
-  if (plan.loop == solvers::LoopKind::SaddlePointSecant)
+  if (plan.loop == solvers::LoopKind::SaddlePointSecant) {
+    if (case_.formulation.discontinuous == assembly::DiscontinuousPressure::SaddlePoint)
+      refuse("formulation.discontinuous_pressure",
+             "condenses the pressure only (no saddle point yet)",
+             "set formulation.discontinuous_pressure = \"condensed\", or run as one process");
     refuse("formulation.pressure", "condenses the pressure only (no saddle point yet)",
            "set formulation.pressure = \"P1disc\" or \"P0\", or run as one process");
+  }
   refuse("penalty.d", "serves penalised constraints only (d > 0, d_N > 0: no Uzawa steps yet)",
          "give penalty.d and penalty.dN positive values, or run as one process");
 }

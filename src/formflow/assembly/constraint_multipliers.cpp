@@ -23,7 +23,12 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
   contact_weight_.assign(n_contact_points, 0.0);
   if (!has_pressure_space()) return;
   n_pressure_ = fem::pressure_functions_per_cell<dim>(formulation.pressure);
-  if (has_global_pressure()) number_vertices();
+  if (has_global_pressure()) {
+    if (fem::is_discontinuous(formulation.pressure))
+      number_cells();
+    else
+      number_vertices();
+  }
   const int n_local = mesh.nodes_per_cell() * dim;
   fem::CellValues<dim> values(mesh.order, full_rule);
   typename fem::CellValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
@@ -52,6 +57,38 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
   }
   multiplier_.assign(mesh.n_cells(), VectorX::Zero(n_pressure_));
   augmentation_.assign(mesh.n_cells(), 0.0);
+  if (has_global_pressure()) {
+    basis_at_points_ = std::move(basis);
+    viscous_mass_ = mass_; // ν = 2η = 1 until the first assembly
+  }
+}
+
+template <int dim> void ConstraintMultipliers<dim>::number_cells() {
+  n_pressure_dofs_ = mesh_.n_cells() * n_pressure_;
+  pressure_dofs_.resize(static_cast<std::size_t>(n_pressure_dofs_));
+  std::iota(pressure_dofs_.begin(), pressure_dofs_.end(), Index{0});
+  pressure_ = VectorX::Zero(n_pressure_dofs_);
+}
+
+template <int dim> VectorX ConstraintMultipliers<dim>::constant_pressure() const {
+  if (!fem::is_discontinuous(formulation_.pressure)) return VectorX::Ones(n_pressure_dofs_);
+  // The discontinuous bases are monomials whose first is 1 (fem/pressure_space.cpp).
+  VectorX constant = VectorX::Zero(n_pressure_dofs_);
+  for (Index cell = 0; cell < mesh_.n_cells(); ++cell) constant[cell * n_pressure_] = 1.0;
+  return constant;
+}
+
+template <int dim>
+void ConstraintMultipliers<dim>::record_viscous_mass(Index cell, const fem::CellValues<dim>& full,
+                                                     std::span<const Real> viscosity) {
+  FF_ASSERT(viscosity.size() == basis_at_points_.size() &&
+                full.n_points() == static_cast<int>(viscosity.size()),
+            "the viscosities are at the full-rule points the pressure basis was tabulated at");
+  MatrixX& mass = viscous_mass_[cell];
+  mass.setZero();
+  for (int q = 0; q < full.n_points(); ++q)
+    mass.noalias() += (full.JxW(q) * 1.5 / viscosity[q]) * basis_at_points_[q] *
+                      basis_at_points_[q].transpose(); // 1/(2η) = 3/(2ν)
 }
 
 template <int dim> void ConstraintMultipliers<dim>::number_vertices() {

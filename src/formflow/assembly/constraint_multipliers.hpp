@@ -16,6 +16,11 @@ namespace formflow::assembly {
 
 enum class FormulationType { Penalty, Mixed };
 
+/// How a discontinuous pressure (P0, P1disc) is solved: eliminated cell by cell
+/// (velocity-only SPD systems), or kept as global unknowns of a saddle point (its
+/// dofs numbered cell·n_p + k), which an iterative block preconditioner needs.
+enum class DiscontinuousPressure { Condensed, SaddlePoint };
+
 /// Which problem is discretised (SPEC §2): the penalty problem (3.9) with σ_H
 /// at the volumetric points, or the perturbed mixed problem (3.7) with σ_H in
 /// `pressure`. penalty.d = 0 (mixed only) and penalty.dN = 0 select the exact
@@ -23,6 +28,8 @@ enum class FormulationType { Penalty, Mixed };
 struct Formulation {
   FormulationType type = FormulationType::Penalty;
   fem::PressureSpace pressure = fem::PressureSpace::P1disc;
+  /// formulation.discontinuous_pressure (read for P0 and P1disc only).
+  DiscontinuousPressure discontinuous = DiscontinuousPressure::Condensed;
   /// ρ of the augmented-Lagrangian term when d = 0: per cell r_e = ρ ν̄_e with ν̄_e
   /// the cell's mean secant viscosity, so that every cell's constraint converges
   /// at the rate ≈ 1/(1 + ρ β_h²) whatever its viscosity.
@@ -54,11 +61,15 @@ public:
                         Index n_contact_points);
 
   bool has_pressure_space() const { return formulation_.type == FormulationType::Mixed; }
-  /// Continuous pressure (Taylor–Hood Q2–Q1): global pressure dofs on the cell
-  /// vertices, solved together with the velocity (assembly/saddle_point_system.*),
-  /// never condensed; its d = 0 needs no Uzawa steps.
+  /// Global pressure dofs solved together with the velocity
+  /// (assembly/saddle_point_system.*), never condensed; d = 0 then needs no Uzawa
+  /// steps. A continuous pressure (Taylor–Hood Q2–Q1) always has them (on the cell
+  /// vertices); a discontinuous one when formulation.discontinuous_pressure says
+  /// "saddle_point" (cell·n_p + k).
   bool has_global_pressure() const {
-    return has_pressure_space() && !fem::is_discontinuous(formulation_.pressure);
+    return has_pressure_space() &&
+           (!fem::is_discontinuous(formulation_.pressure) ||
+            formulation_.discontinuous == DiscontinuousPressure::SaddlePoint);
   }
   bool is_exact_pressure() const { return has_pressure_space() && penalty_.d == 0; }
   bool is_exact_contact() const { return penalty_.d_n == 0; }
@@ -118,8 +129,19 @@ public:
     return {pressure_dofs_.data() + static_cast<std::size_t>(cell) * size, size};
   }
   Index n_pressure_dofs() const { return n_pressure_dofs_; }
-  /// Vertex values of σ_H (length n_pressure_dofs).
+  /// The global pressure's coefficients (length n_pressure_dofs): vertex values of
+  /// σ_H (Q1), or each cell's coefficients of its monomials (P0, P1disc).
   const VectorX& global_pressure() const { return pressure_; }
+  /// The coefficients of σ_H ≡ 1 in the global pressure: all ones for the vertex
+  /// functions (a partition of unity), the constant monomial of each cell otherwise.
+  VectorX constant_pressure() const;
+  /// The Schur-complement preconditioner's cell block ∫ ψ_i ψ_j / (2η) dx, 2η = ⅔ ν the
+  /// secant viscosity at each full-rule point of the last assembly (η the Stokes
+  /// viscosity of a(w; u, v) = ∫ ⅔ ν ε̇:ε̇: σ = 2η ε̇); recorded by the global pressure
+  /// term, read by SaddlePointSystem::schur_preconditioner.
+  void record_viscous_mass(Index cell, const fem::CellValues<dim>& full,
+                           std::span<const Real> viscosity);
+  const MatrixX& cell_viscous_mass(Index cell) const { return viscous_mass_[cell]; }
   void set_global_pressure(VectorX pressure) { pressure_ = std::move(pressure); }
   /// B = ∫ ψ_i div φ_a dx (n_pressure × n_local) and M = ∫ ψ_i ψ_j dx of `cell`.
   const MatrixX& cell_divergence(Index cell) const { return divergence_[cell]; }
@@ -131,6 +153,8 @@ private:
   VectorX cell_velocity(Index cell, const VectorX& u) const;
   /// Global pressure: numbers the cell vertices (on first sight) into pressure_dofs_.
   void number_vertices();
+  /// Global discontinuous pressure: cell·n_p + k.
+  void number_cells();
 
   const mesh::Mesh<dim>& mesh_;
   physics::Penalty penalty_;
@@ -145,7 +169,9 @@ private:
   std::vector<Real> contact_weight_; ///< JxW per Γ3 point, filled by the augmented contact term
   std::vector<Index> pressure_dofs_; ///< global pressure: n_pressure per cell, cell-major
   Index n_pressure_dofs_ = 0;
-  VectorX pressure_; ///< global pressure: vertex values of σ_H
+  VectorX pressure_;                     ///< global pressure: vertex values of σ_H
+  std::vector<VectorX> basis_at_points_; ///< ψ at the full-rule points (global pressure)
+  std::vector<MatrixX> viscous_mass_;    ///< ∫ ψψ/(2η) per cell (global pressure)
 };
 
 } // namespace formflow::assembly

@@ -26,7 +26,7 @@ template <int dim>
 SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
                                           const ConstraintMultipliers<dim>& multipliers,
                                           const LinearSystem& pattern)
-    : problem_(problem), n_velocity_(problem.plan().n_free()),
+    : problem_(problem), multipliers_(multipliers), n_velocity_(problem.plan().n_free()),
       n_pressure_(multipliers.n_pressure_dofs()), d_(multipliers.penalty().d) {
   FF_ASSERT(multipliers.has_global_pressure(), "the saddle-point system is for a global pressure");
   FF_ASSERT(pattern.matrix.isCompressed(), "slots are offsets into a compressed matrix");
@@ -54,10 +54,11 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
   divergence_free_ = from_triplets(n_pressure_, n_velocity_, free_entries);
   divergence_prescribed_ = from_triplets(n_pressure_, problem.n_dofs(), prescribed_entries);
   mass_ = from_triplets(n_pressure_, n_pressure_, mass_entries);
-  pressure_weights_ = mass_ * VectorX::Ones(n_pressure_); // Σ_j ψ_j = 1
+  constant_ = multipliers.constant_pressure();
+  pressure_weights_ = mass_ * constant_; // ∫ ψ_i · 1 dx
 
   // The constant pressure is a null mode iff Bᵀ 1 = 0 on the free dofs (d = 0 only).
-  const VectorX constant_work = divergence_free_.transpose() * VectorX::Ones(n_pressure_);
+  const VectorX constant_work = divergence_free_.transpose() * constant_;
   const Real largest =
       Eigen::Map<const VectorX>(divergence_free_.valuePtr(), divergence_free_.nonZeros())
           .lpNorm<Eigen::Infinity>();
@@ -142,7 +143,26 @@ void SaddlePointSystem<dim>::add_pressure_load(const VectorX& increment,
 
 template <int dim> void SaddlePointSystem<dim>::fix_pressure_level(VectorX& pressure) const {
   if (!pinned_) return;
-  pressure.array() -= pressure_weights_.dot(pressure) / pressure_weights_.sum();
+  pressure -= (pressure_weights_.dot(pressure) / pressure_weights_.dot(constant_)) * constant_;
+}
+
+template <int dim> Index SaddlePointSystem<dim>::pressure_block_size() const {
+  if (!fem::is_discontinuous(multipliers_.pressure_space())) return 0;
+  return static_cast<Index>(multipliers_.cell_pressure_dofs(0).size());
+}
+
+template <int dim> SparseMatrix SaddlePointSystem<dim>::schur_preconditioner() const {
+  Triplets entries;
+  for (Index cell = 0; cell < problem_.mesh().n_cells(); ++cell) {
+    const MatrixX block = multipliers_.cell_viscous_mass(cell) + d_ * multipliers_.cell_mass(cell);
+    const auto dofs = multipliers_.cell_pressure_dofs(cell);
+    for (Index i = 0; i < block.rows(); ++i)
+      for (Index j = 0; j < block.cols(); ++j)
+        if (!pinned_ || (dofs[i] != 0 && dofs[j] != 0))
+          entries.emplace_back(dofs[i], dofs[j], -block(i, j));
+  }
+  if (pinned_) entries.emplace_back(0, 0, 1.0);
+  return from_triplets(n_pressure_, n_pressure_, entries);
 }
 
 template class SaddlePointSystem<2>;

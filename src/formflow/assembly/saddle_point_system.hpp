@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The global saddle-point system of the mixed problem (3.7) with a continuous
-// pressure (Taylor–Hood Q2–Q1): velocity and pressure solved together (issue 5).
+// The global saddle-point system of the mixed problem (3.7) with a global pressure
+// (Taylor–Hood Q2–Q1, issue 5; or a discontinuous pressure kept as a saddle point,
+// issue 20): velocity and pressure solved together.
 #pragma once
 
 #include "formflow/assembly/constraint_multipliers.hpp"
@@ -20,9 +21,10 @@ namespace formflow::assembly {
 /// slots per iteration.
 ///
 /// Null mode: with d = 0 the constant pressure is in the kernel of Bᵀ when every
-/// boundary velocity is prescribed (Σ_i B_ia = ∫ div φ_a = ∮ φ_a·n vanishes for
-/// every free dof). Then the first pressure dof is pinned (row and column replaced
-/// by the identity) and every solution is shifted to zero mean, ∫ p dx = 0.
+/// boundary velocity is prescribed (∫ div φ_a = ∮ φ_a·n vanishes for every free
+/// dof). Then the first pressure dof (a vertex value, or cell 0's constant
+/// coefficient) is pinned (row and column replaced by the identity) and every
+/// solution is shifted to zero mean, ∫ p dx = 0.
 /// The benchmark has free surfaces and Γ3 is not prescribed: no pin there.
 template <int dim> class SaddlePointSystem {
 public:
@@ -40,6 +42,16 @@ public:
   void add_pressure_load(const VectorX& increment, LinearSystem& velocity) const;
   /// Shifts `pressure` to zero mean when the constant is a null mode; else unchanged.
   void fix_pressure_level(VectorX& pressure) const;
+  /// The Schur-complement preconditioner of this step, −(M_η + d M) with M_η =
+  /// ∫ ψ_i ψ_j/(2η) dx at the last assembly's secant viscosities: spectrally equivalent
+  /// to S = −(d M + B A⁻¹ Bᵀ) with constants that depend on the inf-sup constant and
+  /// not on the viscosity contrast or h (both parts of S scale with 1/η and d cell
+  /// by cell). n_p × n_p; for a discontinuous pressure block diagonal in cell blocks
+  /// of pressure_block_size(). A pinned dof has a 1 on its diagonal, as in the matrix.
+  SparseMatrix schur_preconditioner() const;
+  /// The cell block size of schur_preconditioner() (n_p per cell) for a discontinuous
+  /// pressure; 0 for a continuous one (vertex dofs couple neighbouring cells).
+  Index pressure_block_size() const;
 
   const SparseMatrix& matrix() const { return matrix_; }
   Index n_velocity() const { return n_velocity_; }
@@ -50,6 +62,7 @@ private:
   Index slot(Index row, Index column) const;
 
   const FormingProblem<dim>& problem_;
+  const ConstraintMultipliers<dim>& multipliers_;
   Index n_velocity_ = 0, n_pressure_ = 0;
   Real d_ = 0.0;
   bool pinned_ = false;
@@ -57,6 +70,7 @@ private:
   SparseMatrix
       divergence_prescribed_; ///< B on the prescribed dofs, n_p × n_dofs (other columns empty)
   SparseMatrix mass_;         ///< M, n_p × n_p
+  VectorX constant_;          ///< the coefficients of p ≡ 1
   VectorX pressure_weights_;  ///< ∫ ψ_i dx
   SparseMatrix matrix_;       ///< the full saddle-point matrix
   std::vector<Real> static_values_;            ///< B, Bᵀ, −dM (and the pin) in matrix_'s slots

@@ -253,6 +253,17 @@ private:
             "would lock (complete rule) or leave σ_H undefined",
             "set formulation.type = \"mixed\" (e.g. with formulation.pressure = \"P1disc\"), "
             "or use penalty.d > 0");
+    if (case_.formulation.discontinuous == assembly::DiscontinuousPressure::SaddlePoint &&
+        (!mixed || !fem::is_discontinuous(pressure)))
+      blame({"formulation.discontinuous_pressure",
+             mixed ? "formulation.pressure" : "formulation.type"},
+            mixed ? "the Q1 pressure is continuous: it is always solved as a saddle point, so "
+                    "\"saddle_point\" here would be set in vain"
+                  : "the penalty formulation has no pressure space to keep as a saddle point",
+            mixed ? "remove formulation.discontinuous_pressure, or use formulation.pressure = "
+                    "\"P1disc\" or \"P0\""
+                  : "set formulation.type = \"mixed\" (with formulation.pressure = \"P1disc\" "
+                    "or \"P0\"), or remove formulation.discontinuous_pressure");
     // The combinations no loop serves, from the capability table the run plan reads.
     const solvers::ProblemShape shape = problem_shape(case_);
     const auto loop = solvers::choose_loop(shape);

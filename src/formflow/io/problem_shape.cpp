@@ -13,7 +13,11 @@ namespace {
 solvers::ProblemShape base_shape(const Case& case_) {
   solvers::ProblemShape shape;
   shape.mixed = case_.formulation.type == assembly::FormulationType::Mixed;
-  shape.global_pressure = shape.mixed && !fem::is_discontinuous(case_.formulation.pressure);
+  shape.discontinuous_saddle_point =
+      shape.mixed && fem::is_discontinuous(case_.formulation.pressure) &&
+      case_.formulation.discontinuous == assembly::DiscontinuousPressure::SaddlePoint;
+  shape.global_pressure = shape.mixed && (!fem::is_discontinuous(case_.formulation.pressure) ||
+                                          shape.discontinuous_saddle_point);
   shape.exact_incompressibility = case_.penalty.d == 0;
   shape.exact_contact = case_.penalty.d_n == 0;
   shape.exact_friction = case_.friction.regularization == physics::FrictionRegularization::None;

@@ -12,6 +12,12 @@ namespace formflow::solvers {
 
 namespace {
 
+/// The key that made the problem a saddle point.
+std::string_view pressure_key(const ProblemShape& shape) {
+  return shape.discontinuous_saddle_point ? "formulation.discontinuous_pressure"
+                                          : "formulation.pressure";
+}
+
 /// The combinations that no loop serves yet, each with its reason.
 std::optional<Refusal> refusal(const ProblemShape& shape) {
   if (shape.exact_friction && (shape.exact_incompressibility || shape.exact_contact))
@@ -35,11 +41,15 @@ std::optional<Refusal> refusal(const ProblemShape& shape) {
                    "the mixed formulation is plane only: its pressure term has no hoop part u_r/r",
                    "use formulation.type = \"penalty\" for axisymmetric runs"};
   if (shape.global_pressure && shape.exact_friction)
-    return Refusal{{"formulation.pressure", "friction.regularization"},
-                   "exact friction (its augmented-Lagrangian loop runs the CHOLMOD secant solve) "
-                   "is not wired to the Taylor–Hood saddle-point solve",
-                   "use friction.regularization = \"regularized\", or formulation.pressure = "
-                   "\"P1disc\""};
+    return Refusal{{pressure_key(shape), "friction.regularization"},
+                   fmt::format("exact friction (its augmented-Lagrangian loop runs the CHOLMOD "
+                               "secant solve) is not wired to the {} saddle-point solve",
+                               shape.discontinuous_saddle_point ? "mixed" : "Taylor–Hood"),
+                   shape.discontinuous_saddle_point
+                       ? "use friction.regularization = \"regularized\", or "
+                         "formulation.discontinuous_pressure = \"condensed\""
+                       : "use friction.regularization = \"regularized\", or "
+                         "formulation.pressure = \"P1disc\""};
   return std::nullopt;
 }
 
@@ -71,12 +81,16 @@ std::variant<LoopKind, Refusal> choose_loop(const ProblemShape& shape) {
                    "use solver.method = \"newton\" (penalty, or mixed with d > 0), or "
                    "friction.stick = \"augmented\""};
   if (shape.linear_given && !can_serve(shape.linear, loop_storage(loop)))
-    return Refusal{{"solver.linear", "formulation.pressure"},
-                   fmt::format("{} (Cholesky LLᵀ) cannot factorise the indefinite Taylor–Hood "
+    return Refusal{{"solver.linear", pressure_key(shape)},
+                   fmt::format("{} (Cholesky LLᵀ) cannot factorise the indefinite {} "
                                "saddle-point system",
-                               linear_solver_name(shape.linear)),
-                   "use solver.linear = \"umfpack\" (LU), or a discontinuous pressure "
-                   "(formulation.pressure = \"P1disc\" or \"P0\")"};
+                               linear_solver_name(shape.linear),
+                               shape.discontinuous_saddle_point ? "mixed" : "Taylor–Hood"),
+                   shape.discontinuous_saddle_point
+                       ? "use solver.linear = \"umfpack\" (LU) or \"petsc\", or "
+                         "formulation.discontinuous_pressure = \"condensed\""
+                       : "use solver.linear = \"umfpack\" (LU), or a discontinuous pressure "
+                         "(formulation.pressure = \"P1disc\" or \"P0\")"};
   return loop;
 }
 

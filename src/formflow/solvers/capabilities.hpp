@@ -16,8 +16,11 @@ namespace formflow::solvers {
 /// What decides the loop: the formulation and constraints, the friction enforcement,
 /// the symmetry and the method asked for (the case's keys, below io).
 struct ProblemShape {
-  bool mixed = false;                   ///< formulation.type = "mixed"
-  bool global_pressure = false;         ///< a continuous pressure (Taylor–Hood): a saddle point
+  bool mixed = false; ///< formulation.type = "mixed"
+  /// Global pressure unknowns, a saddle point: Taylor–Hood, or the next.
+  bool global_pressure = false;
+  /// A discontinuous pressure kept as a saddle point (formulation.discontinuous_pressure).
+  bool discontinuous_saddle_point = false;
   bool exact_incompressibility = false; ///< penalty.d = 0
   bool exact_contact = false;           ///< penalty.dN = 0
   bool exact_friction = false;          ///< friction.regularization = "none"

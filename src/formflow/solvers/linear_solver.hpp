@@ -56,6 +56,17 @@ public:
     static_cast<void>(n_first);
     static_cast<void>(near_null_space);
   }
+  /// The pressure block's preconditioning matrix for the Schur complement of the
+  /// saddle point whose fields set_fields gave (the viscosity-scaled pressure mass,
+  /// assembly::SaddlePointSystem::schur_preconditioner), new at every factorisation:
+  /// call before each factorize. `cell_block` > 0: the matrix is block diagonal in
+  /// blocks of that size (a discontinuous pressure's cells), so inverting it is cheap
+  /// and exact, and an iterative back-end may make the block preconditioner its
+  /// default. A direct back-end has no use for it.
+  virtual void set_schur_preconditioner(const assembly::SparseMatrix& matrix, Index cell_block) {
+    static_cast<void>(matrix);
+    static_cast<void>(cell_block);
+  }
 };
 
 /// The key's spelling of `kind` ("cholmod", "umfpack").

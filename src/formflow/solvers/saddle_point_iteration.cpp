@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Secant steps around a global saddle-point solve (continuous pressure).
+// Secant steps around a global saddle-point solve (continuous pressure, or a
+// discontinuous one kept as a saddle point).
 #include "formflow/solvers/saddle_point_iteration.hpp"
 
 #include "formflow/assembly/rigid_body_modes.hpp"
@@ -43,6 +44,9 @@ template <int dim> LaggedStep SaddlePointSolve<dim>::solve(const VectorX* w, Vec
     if (step == 0) {
       saddle.fill_matrix(system_);
       if (const auto stop = linear_.analyse_once(saddle.matrix())) return {stop, false};
+      // The viscosities of this step's assembly scale the Schur preconditioner.
+      linear_.solver().set_schur_preconditioner(saddle.schur_preconditioner(),
+                                                saddle.pressure_block_size());
       if (const auto stop = linear_.factorize(saddle.matrix())) return {stop, false};
     }
     const VectorX& pressure = multipliers.global_pressure();

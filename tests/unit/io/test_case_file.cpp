@@ -356,6 +356,8 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       // (its JSON is checked in test_formulation_keys.cpp)
       {"formulation.type", "\"penalty\""},
       {"formulation.pressure", "\"P0\""},
+      // "saddle_point" needs the mixed formulation, which other values here exclude.
+      {"formulation.discontinuous_pressure", "\"condensed\""},
       {"formulation.augmentation", "100.0"},
       {"formulation.contact_augmentation", "1000.0"},
       {"formulation.uzawa_tolerance", "1e-06"},

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// A continuous pressure (Taylor–Hood Q2–Q1): its vertex values p are unknowns of the
-// saddle-point system (assembly/saddle_point_system.hpp), which holds B and −dM; the
-// velocity system gets only the load −Bᵀ p of the current pressure.
+// A global pressure (Taylor–Hood Q2–Q1, or a discontinuous one kept as a saddle point):
+// its coefficients p are unknowns of the saddle-point system
+// (assembly/saddle_point_system.hpp), which holds B and −dM; the velocity system gets
+// only the load −Bᵀ p of the current pressure. The term also records the cell's
+// viscosity-scaled pressure mass for the Schur-complement preconditioner.
 #include "formflow/assembly/terms/pressure_space_term.hpp"
 #include "formflow/core/error.hpp"
 
@@ -15,6 +17,7 @@ public:
   std::string_view name() const override { return "global pressure"; }
 
   void add_secant(const CellState<dim>& cell, MatrixX&, VectorX& load) const override {
+    this->multipliers_.record_viscous_mass(cell.cell, cell.full, cell.viscosity);
     load.noalias() -= this->multipliers_.cell_divergence(cell.cell).transpose() *
                       this->multipliers_.cell_pressure(cell.cell); // −Bᵀ p
   }

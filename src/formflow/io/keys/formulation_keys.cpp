@@ -33,6 +33,16 @@ std::vector<CaseKey> formulation_keys() {
           .doc("pressure space of the mixed formulation: P0 (cell constant), P1disc (cell linear, "
                "discontinuous), both condensed cell by cell, or Q1 (continuous bilinear on the "
                "vertices, Taylor–Hood: global saddle-point solve with UMFPACK)"),
+      enum_key(
+          "formulation.discontinuous_pressure", "condensed",
+          {{"condensed", assembly::DiscontinuousPressure::Condensed},
+           {"saddle_point", assembly::DiscontinuousPressure::SaddlePoint}},
+          [](auto& c) -> auto& { return c.formulation.discontinuous; })
+          .constraint("saddle_point: mixed with P0 or P1disc; not with cholmod or exact friction")
+          .doc("how a discontinuous pressure (P0, P1disc) is solved: condensed cell by cell "
+               "(velocity-only SPD systems), or kept as global unknowns of a saddle point "
+               "(UMFPACK, or solver.linear = \"petsc\": FGMRES with a fieldsplit Schur "
+               "preconditioner by default, docs/petsc.md)"),
       real_key(
           "formulation.augmentation", 1e3,
           [](auto& c) -> auto& { return c.formulation.augmentation; })

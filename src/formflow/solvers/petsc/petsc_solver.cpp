@@ -4,6 +4,7 @@
 #include "formflow/solvers/petsc/petsc_solver.hpp"
 
 #include "formflow/core/error.hpp"
+#include "formflow/solvers/petsc/petsc_saddle_point.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
 
 #include <fmt/format.h>
@@ -30,6 +31,7 @@ public:
     for (IS& field : fields_)
       if (field) ISDestroy(&field);
     if (matrix_) MatDestroy(&matrix_);
+    if (schur_matrix_) MatDestroy(&schur_matrix_);
     if (rhs_) VecDestroy(&rhs_);
     if (solution_) VecDestroy(&solution_);
     if (to_all_) VecScatterDestroy(&to_all_);
@@ -62,6 +64,12 @@ public:
     }
     if (!checked_unused_) {
       checked_unused_ = true;
+      PC outer = nullptr;
+      KSPGetPC(ksp_, &outer);
+      const PetscErrorCode splits = petsc::set_up_splits(outer);
+      if (splits == PETSC_ERR_ARG_UNKNOWN_TYPE || splits == PETSC_ERR_ARG_WRONG)
+        refuse(capture.message(), "give a type PETSc 3.18 has for that split");
+      if (splits != 0) return false;
       refuse_unused(options_scope_.unused());
     }
     PCFailedReason failed = PC_NOERROR;
@@ -144,6 +152,13 @@ public:
     near_null_space_ = std::move(near_null_space);
   }
 
+  void set_schur_preconditioner(const assembly::SparseMatrix& matrix, Index cell_block) override {
+    if (distributed_) return; // a distributed saddle point is refused (app/distributed_run)
+    petsc::ErrorCapture capture;
+    schur_block_ = cell_block;
+    petsc::copy_schur_matrix(matrix, cell_block, &schur_matrix_);
+  }
+
 private:
   /// The KSP with formflow's defaults, then the options database over them.
   bool make_ksp(petsc::ErrorCapture& capture) {
@@ -157,6 +172,10 @@ private:
     // asked for by the options gets a relative residual well below the smallest
     // δ that makes sense for a run (1e-10), unless -ksp_rtol says otherwise.
     KSPSetTolerances(ksp_, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, 10000);
+    // A saddle point with a block-diagonal pressure preconditioner (a discontinuous
+    // pressure): the iterative block preconditioner by default (issue 20).
+    if (n_first_ > 0 && schur_block_ > 0 && schur_matrix_)
+      petsc::set_saddle_point_defaults(ksp_, defaults_);
     const PetscErrorCode configured = KSPSetFromOptions(ksp_);
     if (configured != 0)
       refuse(capture.message(), "give a value PETSc 3.18 accepts for that option, or "
@@ -203,6 +222,7 @@ private:
     }
     PCFieldSplitSetIS(preconditioner, "u", fields_[0]);
     PCFieldSplitSetIS(preconditioner, "p", fields_[1]);
+    if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
     return true;
   }
 
@@ -405,6 +425,9 @@ private:
   Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)
   std::vector<VectorX> near_null_space_; ///< the velocity block's rigid-body modes
   IS fields_[2] = {nullptr, nullptr};    ///< fieldsplit's "u" and "p"
+  Mat schur_matrix_ = nullptr;           ///< the Schur complement's preconditioning matrix
+  Index schur_block_ = 0;                ///< its cell block size (0: not block diagonal)
+  petsc::DefaultOptions defaults_;       ///< the saddle-point defaults in the database
   long iterations_ = 0;
   bool checked_unused_ = false;
 };

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Krylov iterations per secant step of the mixed Q2–P1disc problem kept as a saddle
+# point (formulation.discontinuous_pressure = "saddle_point", solver.linear = "petsc":
+# FGMRES + fieldsplit Schur, the viscosity-scaled pressure mass for the Schur
+# complement; docs/petsc.md), over three refinements: the 2D paper case, the 3D slab
+# (cases/slab-extrusion-3d.toml) and the 3D round quarter (cases/round-rod-3d.toml),
+# each with its own default friction, d = 1e-3 (default) and d = 0, δ = 1e-4.
+# Velocity block: one GAMG V-cycle with the rigid-body near-null space, or one
+# BoomerAMG V-cycle (the default). Counts only: they do not depend on the machine's load.
+# Usage: bench/petsc_discontinuous_saddle_counts.sh [BUILD_DIR] [VARIANTS] [d values]
+#   (defaults: build, "gamg hypre", "1e-3 0"); ROUND_SIZES (default "0.5 0.25 0.125")
+#   sets the round quarter's mesh sizes, "" leaves it out.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+binary=${1:-build}/formflow
+variants=${2:-gamg hypre}
+penalties=${3:-1e-3 0}
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+declare -A options=(
+  [gamg]="-fieldsplit_u_pc_type gamg"
+  [hypre]=""
+)
+saddle=(--set formulation.type=mixed --set formulation.pressure=P1disc
+        --set formulation.discontinuous_pressure=saddle_point --set solver.linear=petsc
+        --set solver.method=secant --set solver.tolerance=1e-4 --set solver.max_iterations=300)
+report() { # label, then the arguments of formflow run
+  local label=$1
+  shift
+  "$binary" run -q -o "$scratch/out" "$@" >/dev/null 2>"$scratch/err" || true
+  /usr/bin/python3 - "$label" "$scratch/out/summary.json" "$scratch/err" <<'PY'
+import json, sys
+label, path, err = sys.argv[1], sys.argv[2], sys.argv[3]
+try:
+    s = json.load(open(path))
+except OSError:
+    print(f"{label}: no summary.json: {open(err).read().strip()[:200]}"); sys.exit(0)
+steps = sorted(n for n in s["linear_algebra"]["iterations_per_step"] if n is not None)
+print(f"{label}: dofs {s['mesh']['dofs']}, {s['stop_reason']} after {len(steps)} secant steps, "
+      f"Krylov per step min {steps[0]} median {steps[len(steps)//2]} max {steps[-1]}, "
+      f"ram reaction {s['pressure']['ram_reaction']:.6f}", flush=True)
+PY
+  rm -rf "$scratch/out"
+}
+for variant in $variants; do
+  for d in $penalties; do
+    run=("${saddle[@]}" --set penalty.d=$d --set "solver.petsc_options=${options[$variant]}")
+    for size in 2.5 1.25 0.625; do
+      report "$variant d=$d 2D h=$size" "${run[@]}" --set mesh.size=$size
+    done
+    for size in 2.5 1.25 0.625; do
+      report "$variant d=$d 3D slab h=$size" cases/slab-extrusion-3d.toml "${run[@]}" \
+        --set mesh.size=$size
+    done
+    for size in ${ROUND_SIZES-0.5 0.25 0.125}; do
+      report "$variant d=$d 3D round h=$size" cases/round-rod-3d.toml "${run[@]}" \
+        --set mesh.size=$size
+    done
+  done
+done
