@@ -162,7 +162,10 @@ const DistributedCase round_mixed{
 const DistributedCase paper_exact_friction{
     "paper_exact_friction",
     "",
-    {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}, {"friction.regularization", "none"}},
+    {{"mesh.size", "2.5"},
+     {"friction.mu", "0.1"},
+     {"friction.regularization", "none"},
+     {"friction.stick", "augmented"}}, // the serial run's default is exact stick on nodes
     1e-7};
 
 /// The paper's case on 4 ranks (oversubscribed) as a user types it: no solver.linear.
@@ -220,6 +223,24 @@ TEST(DistributedRun, ExactStickIsRefusedNamingTheKey) {
   expect_refused_once(run_mpi(paper_exact_friction, 2, scratch,
                               "--set contact.normals=nodes --set friction.stick=exact"),
                       "friction.stick: on 2 MPI ranks", scratch);
+}
+
+TEST(DistributedRun, TheExactLawWithoutAStickChoiceRunsTheAugmentedMultipliers) {
+  // A serial Newton run of the exact law defaults to exact stick on nodal points, which
+  // condenses the whole tangent: on several ranks the unset key becomes "augmented"
+  // (face points), said once on stderr, and the run goes through.
+  testing::ScratchDirectory scratch("formflow-mpi");
+  DistributedCase unset = paper_exact_friction;
+  std::erase_if(unset.edits, [](const auto& edit) { return edit.first == "friction.stick"; });
+  const MpiRun run = run_mpi(unset, 2, scratch);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto& contact = run.summary.at("contact");
+  EXPECT_EQ(contact.at("stick"), "augmented");
+  EXPECT_EQ(contact.at("points"), "faces");
+  const std::string note = "note: friction.stick = \"augmented\" on 2 ranks";
+  const auto first = run.err.find(note);
+  ASSERT_NE(first, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find(note, first + 1), std::string::npos) << "said once, by rank 0";
 }
 
 } // namespace

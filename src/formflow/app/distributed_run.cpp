@@ -83,12 +83,28 @@ void check_distributed(const io::Case& case_) {
 
 io::Case load_run_case(const std::string& path, std::vector<io::Override> overrides) {
   io::Case case_ = io::load_case(path, overrides);
-  if (!distribution().distributed() || case_.key_locations.count("solver.linear") != 0 ||
-      case_.solver.linear == solvers::LinearSolverKind::Petsc)
-    return case_;
-  // Left at its default (CHOLMOD, serial only): PETSc, as if given last on the command line.
-  overrides.emplace_back("solver.linear", "petsc");
-  return io::load_case(path, overrides);
+  if (!distribution().distributed()) return case_;
+  bool reload = false;
+  if (case_.key_locations.count("solver.linear") == 0 &&
+      case_.solver.linear != solvers::LinearSolverKind::Petsc) {
+    // Left at its default (CHOLMOD, serial only): PETSc, as if given last on the command line.
+    overrides.emplace_back("solver.linear", "petsc");
+    reload = true;
+  }
+  if (reload) case_ = io::load_case(path, overrides);
+  if (case_.key_locations.count("friction.stick") == 0 &&
+      make_solve_plan(case_).shape.exact_stick) {
+    // The exact law's default under Newton (exact stick on nodal points) condenses the whole
+    // tangent, which no rank holds: the augmented multipliers on the face points instead,
+    // said once, since a serial run of the same case would take the other discretisation.
+    fmt::print(stderr,
+               "note: friction.stick = \"augmented\" on {} ranks (exact stick runs as one "
+               "process; docs/petsc.md)\n",
+               distribution().size);
+    overrides.emplace_back("friction.stick", "augmented");
+    case_ = io::load_case(path, overrides);
+  }
+  return case_;
 }
 
 } // namespace formflow::app

@@ -33,7 +33,8 @@ void check_distributed(const io::Case& case_);
 /// `case_` loaded from `path` with `overrides`, and on more than one rank with PETSc as
 /// the default of solver.linear (the one distributed back-end: `mpirun -np 2 formflow
 /// run case.toml` runs): a case that sets solver.linear keeps its choice (and
-/// check_distributed refuses any but PETSc, naming the key).
+/// check_distributed refuses any but PETSc, naming the key). Likewise friction.stick:
+/// left unset where it would resolve to exact stick (serial only), it is "augmented".
 io::Case load_run_case(const std::string& path, std::vector<io::Override> overrides);
 
 } // namespace formflow::app
