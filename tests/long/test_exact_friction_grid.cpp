@@ -56,11 +56,11 @@ INSTANTIATE_TEST_SUITE_P(
 // count. Measured (docs/friction.md "Session 9"): at δ = 1e-8 one case takes 26, Q2
 // axisymmetric, sticking ram, h = 0.25, μ = 0.05 (8 + 18): over the 25 the issue asks at
 // 1e-4, which this test does not assert at 1e-8. Run at the end of session 9: 239 of 240
-// pass; the failure was plane Q1 sticking h = 0.25 μ = 0.3 at δ = 1e-4, read then as two
-// discrete solutions: it was a false stop with one held node at |λ| = τ_f exactly and its
-// row out of balance (docs/friction.md "Session 10"). Since the loop iterates on the pair
-// (u, λ) its δ = 1e-8 load is 3.00392565 against the regularised law's 3.00392564 (this
-// test not rerun as a whole in session 10).
+// pass; the failure is plane Q1 sticking h = 0.25 μ = 0.3 at δ = 1e-4, read in session 9
+// as two discrete solutions: session 10 found a false stop instead (one held node with
+// |λ| = τ_f to ten digits, clipped by the Uzawa update and held again, its row out of
+// balance where no test of the stop rule looks; docs/friction.md "Session 10"). The load
+// check's d_T bound is right; the loop is not fixed yet.
 class ExactStickFullGrid : public ::testing::TestWithParam<GridParameters> {};
 
 TEST_P(ExactStickFullGrid, ConvergesWithin25IterationsAtThePapersTolerance) {

@@ -64,40 +64,5 @@ TEST(ExactStickGrid, StuckNodesDoNotSlip) {
   EXPECT_GT(stuck, 0);
 }
 
-// The step moves the pair (u, λ) and is checked on its merit Θ = ½‖R‖² + ½‖W C‖²; the next
-// iterate is the pair it took (solvers/newton_iteration.cpp, docs/friction.md "Session
-// 10"). A step that passed Armijo's test (IterationRecord::merit_descent) has
-// Θ(t) ≤ (1 − 2σt) Θ₀ with Θ₀ the merit of the pair it started from, which is the previous
-// record's: nothing changes λ between steps. So on those steps the recorded merit falls
-// strictly. Exact comparison: the margin 2σtΘ₀ ≥ 2e-5 Θ₀ (σ = 1e-4, t ≥ 0.1 of a step that
-// is ≤ 1) is far above the round-off of Θ's evaluation (ε times the squared forces
-// summed), unless Θ₀ itself is at round-off, which a run stopped at δ = 1e-8 on the
-// velocity change does not reach before its last step. Steps where no t passed take the
-// slope search's t and may raise Θ (the tangent is not Θ's Jacobian); the test asks that
-// most of this case's steps are Armijo steps, which a line search that ignored Θ would
-// not give by chance, and reports the others.
-TEST(ExactStickGrid, TheMeritOfThePairFallsOnEveryArmijoStep) {
-  for (const Symmetry symmetry : {Symmetry::Plane, Symmetry::Axisymmetric}) {
-    const FrictionGridCase c = stick_case(RamCondition::Sticking, 0.5, 0.2, symmetry);
-    SCOPED_TRACE(grid_case_name(c));
-    const post::Results exact = app::simulate(grid_case(c, true, 1e-8)).results;
-    ASSERT_TRUE(exact.converged());
-    int descents = 0;
-    Real previous = -1.0;
-    for (const solvers::IterationRecord& record : exact.history) {
-      ASSERT_GE(record.merit, 0.0) << "every fine-mesh iteration is a Newton step of the pair";
-      EXPECT_GT(record.step_length, 0.0) << "iteration " << record.iteration;
-      EXPECT_LE(record.step_length, 1.0) << "iteration " << record.iteration;
-      if (record.merit_descent) {
-        ++descents;
-        if (previous >= 0) EXPECT_LT(record.merit, previous) << "iteration " << record.iteration;
-      }
-      previous = record.merit;
-    }
-    EXPECT_GT(2 * descents, static_cast<int>(exact.history.size()))
-        << descents << " Armijo steps of " << exact.history.size();
-  }
-}
-
 } // namespace
 } // namespace formflow::testing

@@ -9,7 +9,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -271,18 +270,6 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["timing_calls"] = std::move(calls);
   out["history"] = std::move(history);
   out["history_pressure"] = std::move(history_pressure);
-  // Exact stick's semismooth Newton: the merit of the pair (u, λ) after each iteration
-  // and the line search's step (−1 / 0 for a secant step); only where it was measured.
-  if (std::any_of(results.history.begin(), results.history.end(),
-                  [](const solvers::IterationRecord& record) { return record.merit >= 0; })) {
-    json merit = json::array(), step = json::array();
-    for (const auto& record : results.history) {
-      merit.push_back(record.merit);
-      step.push_back(record.step_length);
-    }
-    out["history_merit"] = std::move(merit);
-    out["history_step_length"] = std::move(step);
-  }
   out["case"] = case_json(case_);
   return out;
 }

@@ -49,35 +49,6 @@ std::pair<Real, Real> multiplier_norms(const std::vector<assembly::ContactPoint<
   return {std::sqrt(difference), std::sqrt(norm)};
 }
 
-/// What update_friction_multipliers measures, for multipliers a Newton step has already
-/// set (exact stick's pair (u, λ̂), FormingNonlinearProblem::steps_multipliers): the
-/// Coulomb residual of the traction the equilibrium at `velocity` holds with, and the
-/// change of λ̂ since `previous` (the last iteration's), without updating λ̂.
-template <int dim>
-MultiplierUpdate measure_stepped_multipliers(const assembly::FormingProblem<dim>& problem,
-                                             const VectorX& velocity,
-                                             const assembly::FrictionMultipliers<dim>& multipliers,
-                                             const std::vector<Point<dim>>& previous) {
-  const auto state = problem.contact_state(velocity, &multipliers);
-  Real difference = 0.0, norm = 0.0;
-  for (std::size_t k = 0; k < state.size() && k < multipliers.traction.size(); ++k) {
-    const Point<dim> old = previous.empty() ? Point<dim>::Zero() : previous[k];
-    difference += (multipliers.traction[k] - old).squaredNorm() * state[k].weight;
-    norm += multipliers.traction[k].squaredNorm() * state[k].weight;
-  }
-  // The Coulomb conditions of the traction the equilibrium holds with, proj(λ̂ + r u_T),
-  // and of the pair's own multiplier λ̂. The first alone is blind to a held node whose λ̂
-  // left the disk: its projection is τ_f t̂ with u_T = 0, which satisfies Coulomb, while
-  // the node's tangential row is out of balance by W(|λ̂| − τ_f) — a row the velocity
-  // change (the node is held) and the residual's power (u_T = 0 times that row) cannot see
-  // either (docs/friction.md "Session 10": the grid's case 228 stopped there before).
-  auto own = state;
-  if (!multipliers.traction.empty())
-    for (std::size_t k = 0; k < own.size(); ++k) own[k].friction_traction = multipliers.traction[k];
-  return {norm > 0 ? std::sqrt(difference / norm) : 0.0,
-          std::max(friction_residual(state), friction_residual(own))};
-}
-
 } // namespace
 
 template <int dim>
@@ -105,7 +76,7 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
   int inner_solves = 1; // ConvergedIterate: the first inner solve starts with the driver
   StallWatch stall(stall_window);
   // λ̂ of the last iteration (outcome.multipliers are updated after it): see AugmentedOutcome.
-  assembly::FrictionMultipliers<dim> equilibrium, previous;
+  assembly::FrictionMultipliers<dim> equilibrium;
   bool last_updated = false;
   problem.set_friction_multipliers(&outcome.multipliers);
   problem.set_after_iteration(
@@ -115,16 +86,8 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
         if (!last_updated) return {false, std::nullopt};
         // The multipliers this iteration was assembled with, kept for the evaluation.
         equilibrium = outcome.multipliers;
-        // Exact stick: a Newton step moved the pair (u, λ̂) along its merit's line search
-        // (solvers/newton_iteration.cpp); an update here would leave the pair the merit
-        // measured. A secant step (the fallback) still gets the Uzawa update.
-        const bool stepped = problem.steps_multipliers() && state.internal_force;
         const MultiplierUpdate update =
-            stepped ? measure_stepped_multipliers(problem.forming(), *state.velocity,
-                                                  outcome.multipliers, previous.traction)
-                    : update_friction_multipliers(problem.forming(), *state.velocity,
-                                                  outcome.multipliers);
-        previous = outcome.multipliers;
+            update_friction_multipliers(problem.forming(), *state.velocity, outcome.multipliers);
         outcome.multiplier_change = update.change;
         outcome.friction_residual = update.residual;
         ++updates;

@@ -31,11 +31,6 @@
 //    stick penalty leaves slips of τ_f/r ≈ 1e-6 per update and the stick zones take
 //    several updates to form (μ = 0.2, h = 0: 55 iterations to δ = 1e-4 with the old
 //    multiplier test, 24 with 100/d_N).
-//  * Exact stick (friction.stick = "exact", the default on nodal points) is a Newton
-//    iteration on the pair (u, λ̂) instead: each step moves λ̂ with u along the line search
-//    on the pair's merit (solvers/newton_iteration.cpp, pair_line_search), and the hook
-//    only measures (FormingNonlinearProblem::steps_multipliers; docs/friction.md
-//    "Session 10"). The Uzawa update above remains for the secant fallback step.
 #include "formflow/solvers/augmented_newton.hpp"
 
 namespace formflow::solvers {

@@ -94,7 +94,6 @@ template <int dim> void FormingNonlinearProblem<dim>::enable_exact_stick() {
             "exact stick needs exact friction on nodal contact points (checked with the case)");
   stick_nodes_ = exact_stick_nodes();
   constrained_.clear();
-  exact_stick_ = true;
 }
 
 template <int dim>
@@ -211,53 +210,6 @@ void FormingNonlinearProblem<dim>::constrained_step_taken(const std::vector<Real
     const Point<dim> change = (-t * reactions[k] / node.weight) * constrained_[k].second;
     for (std::size_t p : node.points) friction_->traction[p] += change;
   }
-}
-
-template <int dim>
-void FormingNonlinearProblem<dim>::prepare_multiplier_step(const VectorX& u, const VectorX& step,
-                                                           const std::vector<Real>& reactions) {
-  FF_ASSERT(friction_ && reactions.size() == constrained_.size(), "one reaction per constraint");
-  if (friction_->traction.empty())
-    friction_->traction.assign(problem_.n_contact_points(), Point<dim>::Zero());
-  step_start_ = friction_->traction;
-  // The Alart–Curnier traction at the step's end with λ̂ frozen: slipping points take
-  // τ_f(u + δ) along their traction (τ_f's linearisation where σ̄_N stays positive: it is
-  // linear in u there), points on the stick penalty their Uzawa update.
-  const auto end = problem_.contact_state(u + step, friction_);
-  step_change_.resize(step_start_.size());
-  for (std::size_t k = 0; k < step_start_.size(); ++k)
-    step_change_[k] = end[k].friction_traction - step_start_[k];
-  // Held tangents: the reaction the constraint supplied for the full step (what
-  // constrained_step_taken adds at t = 1), not projected: a node whose reaction leaves
-  // the disk shows it in the merit (its C ≠ 0) and slips in the next step's active set.
-  for (std::size_t k = 0; k < reactions.size(); ++k) {
-    const StickNode& node = stick_nodes_[constrained_[k].first];
-    const Point<dim>& direction = constrained_[k].second;
-    for (std::size_t p : node.points) {
-      step_change_[p] -= step_change_[p].dot(direction) * direction;
-      step_change_[p] += (-reactions[k] / node.weight) * direction;
-    }
-  }
-}
-
-template <int dim> void FormingNonlinearProblem<dim>::take_multiplier_step(Real t) {
-  FF_ASSERT(friction_ && step_start_.size() == friction_->traction.size(), "a prepared step");
-  for (std::size_t k = 0; k < step_start_.size(); ++k)
-    friction_->traction[k] = step_start_[k] + t * step_change_[k];
-}
-
-template <int dim> Real FormingNonlinearProblem<dim>::multiplier_merit(const VectorX& u) const {
-  if (!friction_) return 0.0;
-  // contact_state's traction is proj_{τ_f(u)}(λ̂ + r u_T): the residual C is λ̂ minus it
-  // (λ̂ = 0 before the first step sets it).
-  const auto state = problem_.contact_state(u, friction_);
-  const bool given = !friction_->traction.empty();
-  Real merit = 0.0;
-  for (std::size_t k = 0; k < state.size(); ++k) {
-    const Point<dim> lambda = given ? friction_->traction[k] : Point<dim>::Zero();
-    merit += (state[k].weight * (lambda - state[k].friction_traction)).squaredNorm();
-  }
-  return 0.5 * merit;
 }
 
 template <int dim>

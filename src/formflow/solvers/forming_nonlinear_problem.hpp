@@ -83,18 +83,6 @@ public:
   /// traction's direction) reaches 0 along the step.
   Real slip_reversal(const VectorX& u, const VectorX& step) const override;
 
-  /// Exact stick: the Newton step moves the pair (u, λ̂) (docs/friction.md "Session 10").
-  bool steps_multipliers() const override { return exact_stick_ && friction_; }
-  /// Δλ̂ of the semismooth Newton step: at a constrained node −reaction/W along each held
-  /// tangent (unprojected), elsewhere proj_{τ_f(u+δ)}(λ̂ + r u_T(u + δ)) − λ̂ (slip points:
-  /// τ_f at the step's end along the traction's direction; the stick penalty's points:
-  /// their Uzawa update at the full step).
-  void prepare_multiplier_step(const VectorX& u, const VectorX& step,
-                               const std::vector<Real>& reactions) override;
-  void take_multiplier_step(Real t) override;
-  /// ½ Σ_k (W_k |λ̂_k − proj_{τ_f}(λ̂_k + r u_T)|)² over the Γ3 points (r the augmentation).
-  Real multiplier_merit(const VectorX& u) const override;
-
   bool changes_after_iteration() const override { return hook_ && hook_changes_; }
   AfterIteration after_iteration(const IterationState& state) override {
     return hook_ ? hook_(state) : AfterIteration{};
@@ -121,10 +109,7 @@ private:
                 const std::vector<Point<dim>>& tangents, const Point<dim>& slip);
 
   assembly::FrictionMultipliers<dim>* friction_ = nullptr;
-  bool exact_stick_ = false;
   std::vector<StickNode> stick_nodes_;
-  /// The prepared multiplier step: λ̂ at its start and its change Δλ̂ (per Γ3 point).
-  std::vector<Point<dim>> step_start_, step_change_;
   /// Per constraint of the last step_constraints: its node and tangent.
   mutable std::vector<std::pair<std::size_t, Point<dim>>> constrained_;
   assembly::UnsymmetricTangent<dim> coupling_;

@@ -59,12 +59,6 @@ struct NewtonWork {
   bool tangent_ready = false;
   /// The tangent condensed onto the step's constraints (solvers/exact_stick.hpp).
   assembly::SparseMatrix condensed = {};
-  /// Exact stick: the merit of the pair (u, λ) the last Newton step ended at, and its t.
-  Real merit = -1.0;
-  Real step_length = 0.0;
-  bool merit_descent = false; ///< that step passed Armijo's test on the merit
-  /// The relative change of the last iteration (gates the merit's line search).
-  Real last_change = std::numeric_limits<Real>::infinity();
 };
 
 /// K(w) u = F (w = nullptr: constant viscosity): returns the full velocity, or a stop reason.
@@ -89,88 +83,6 @@ Real slope_at(NewtonWork& work, const VectorX& velocity, const VectorX& step, Re
   return free_step.dot(free_part(work.problem.plan(), work.force));
 }
 
-/// Armijo's constant: a step is accepted when the merit fell by at least this fraction
-/// of what its linear model promises (2 t Θ₀, below). Small, as usual (Nocedal & Wright
-/// 3.1): the test only has to exclude steps that do not decrease Θ in proportion.
-constexpr Real armijo_fraction = 1e-4;
-/// Backtracking on the merit stops at this fraction of the slope search's t: below it the
-/// step is not a descent direction of Θ (the tangent is not Θ's Jacobian) and shorter
-/// steps only slow the loop (measured: taking whatever t < t_slope/10 decreased Θ at all
-/// turned plane Q2 sticking h = 1 μ = 0.2 at δ = 1e-8 from 14 iterations into 28, steps of
-/// t ≈ 0.005 while Θ stayed at 13.7).
-constexpr Real min_merit_fraction = 0.1;
-/// The merit decides t once the last relative change is below this (the largest GMRES
-/// forcing term, max_forcing below: from there on the step is the semismooth Newton step
-/// to within 1e-2); before that, in the global phase from the constant-viscosity or coarse
-/// start, the slope search's t stands and Θ is only recorded. Why: there ‖R‖² is ruled by
-/// the near-rigid bulk, whose primal–dual steps raise it while the loop converges, and
-/// enforcing Armijo everywhere cost 40 iterations over the first 28 grid cases at δ = 1e-4
-/// (329 → 369; +4 on every h = 1 case, steps t ≈ 0.2–0.4 where 1 converges) and 20 over the
-/// first 12 at δ = 1e-8 (181 → 201), docs/friction.md "Session 10".
-constexpr Real merit_phase_change = max_forcing;
-
-/// The merit Θ(u, λ) = ½‖R(u; λ)‖² + ½ Σ (W C)² of the pair at `velocity` with the
-/// problem's current multipliers; leaves the internal force there in work.force.
-Real pair_merit(NewtonWork& work, const VectorX& velocity) {
-  work.problem.assemble_newton(velocity, *work.duals, work.force, nullptr);
-  return 0.5 * free_part(work.problem.plan(), work.force).squaredNorm() +
-         work.problem.multiplier_merit(velocity);
-}
-
-/// The step length of exact stick's semismooth Newton on the pair (u, λ), checked on the
-/// pair's merit (docs/friction.md "Session 10": why this merit, what it guarantees, and
-/// why the first choice of t stays the slope search's).
-///
-/// F(u, λ) = (R(u; λ), W C(u, λ)) with R the free rows' residual assembled with the
-/// traction proj(λ + r u_T) and C(u, λ) = λ − proj_{τ_f(u)}(λ + r u_T) the Alart–Curnier
-/// residual, scaled by each point's weight W into a nodal force. The step (δ, Δλ) is the
-/// semismooth Newton step of F (solvers/exact_stick.hpp; Δλ: prepare_multiplier_step), so
-/// Θ = ½‖F‖² falls along it like −2Θ₀ t where the Jacobian is exact. Θ is continuous (the
-/// projection is) and piecewise smooth: kinks (a slip reversing, a point leaving the disk)
-/// change its slope only. `t_slope` is the slope search's t; it is taken when it passes
-/// Armijo's test Θ(t) ≤ (1 − 2σt) Θ₀, else t is backtracked on Θ (safeguarded quadratic
-/// interpolation) down to t_slope/10 until one passes; when none does (the step is no
-/// descent direction of Θ: the tangent is not Θ's Jacobian, through the primal–dual duals
-/// and the slip variable), t_slope as before: that iteration's merit may rise, which the
-/// history shows. The next iterate is the pair (u + tδ, λ + tΔλ) itself: nothing changes
-/// λ between steps (augment_friction measures, and does not update).
-VectorX pair_line_search(NewtonWork& work, const VectorX& velocity, const VectorX& step,
-                         const std::vector<Real>& reactions, Real merit0, Real t_slope) {
-  NonlinearProblem& problem = work.problem;
-  problem.prepare_multiplier_step(velocity, step, reactions);
-  const auto merit_at = [&](Real t) {
-    problem.take_multiplier_step(t);
-    return pair_merit(work, velocity + t * step);
-  };
-  const auto armijo = [&](Real t, Real merit) {
-    return merit <= (1 - 2 * armijo_fraction * t) * merit0;
-  };
-  Real t = t_slope, merit = merit_at(t);
-  // The global phase: the slope search's t stands (see merit_phase_change).
-  const bool enforce = work.last_change < merit_phase_change;
-  while (enforce && !armijo(t, merit) && t > min_merit_fraction * t_slope) {
-    // The minimiser of the quadratic through Θ₀, slope −2Θ₀ and Θ(t), kept in [t/10, t/2]
-    // and above the floor.
-    const Real curvature = merit - merit0 + 2 * t * merit0;
-    const Real model = curvature > 0 ? merit0 * t * t / curvature : 0.5 * t;
-    t = std::max(std::clamp(model, 0.1 * t, 0.5 * t), min_merit_fraction * t_slope);
-    merit = merit_at(t);
-  }
-  work.merit_descent = armijo(t, merit);
-  if (!work.merit_descent && t != t_slope) merit = merit_at(t = t_slope); // Θ may rise
-  work.merit = merit;
-  work.step_length = t;
-  VectorX next = velocity + t * step;
-  {
-    // The duals' update reads the multipliers of the step's start (as before the pair).
-    ScopedTimer dual_timer(work.linear.times(), "dual update");
-    problem.take_multiplier_step(0.0);
-    problem.update_duals(velocity, step, next, *work.duals);
-    problem.take_multiplier_step(t);
-  }
-  return next;
-}
-
 /// One Newton step from `velocity`; std::nullopt when the tangent is not positive
 /// definite or δ is no descent direction (the caller then takes a secant step).
 /// On success work.force holds the internal force at uⁿ⁺¹ (for the reaction).
@@ -181,13 +93,7 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     work.problem.assemble_newton(velocity, *work.duals, work.force, &work.tangent);
   }
   work.tangent_ready = false;
-  work.merit = -1.0;
-  work.merit_descent = false;
-  work.step_length = 1.0; // the full step unless a line search shortens it
   const VectorX gradient = free_part(plan, work.force);
-  const bool pair = work.problem.steps_multipliers();
-  const Real merit0 =
-      pair ? 0.5 * gradient.squaredNorm() + work.problem.multiplier_merit(velocity) : 0.0;
   // Exact constraints on the step (exact friction's stuck nodes): δ = g + z, z = P z,
   // solved on the condensed tangent (solvers/exact_stick.hpp). One rank only: the
   // condensation of a rank's share of T is not its share of the condensed matrix (exact
@@ -246,11 +152,6 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
   if (constrained && !(slope0 < 0)) {
     // No descent left along z (the stick targets dominate the step): the full
     // semismooth step, whose constraints hold exactly.
-    if (pair) {
-      VectorX next = pair_line_search(work, velocity, step, reactions, merit0, 1.0);
-      full_change = step.norm() / next.norm();
-      return next;
-    }
     VectorX next = velocity + step;
     work.problem.update_duals(velocity, step, next, *work.duals);
     work.problem.constrained_step_taken(reactions, 1.0);
@@ -319,18 +220,12 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
       slope = slope_at(work, velocity, step, t, direction);
     }
   }
-  if (pair) {
-    VectorX next = pair_line_search(work, velocity, step, reactions, merit0, t);
-    full_change = step.norm() / next.norm();
-    return next;
-  }
   VectorX next = velocity + t * step;
   {
     ScopedTimer dual_timer(work.linear.times(), "dual update");
     work.problem.update_duals(velocity, step, next, *work.duals);
   }
   if (constrained) work.problem.constrained_step_taken(reactions, t);
-  work.step_length = t;
   full_change = step.norm() / next.norm();
   return next;
 }
@@ -394,13 +289,9 @@ SecantOutcome newton_iteration(NonlinearProblem& problem, LinearSolver& solver,
     step_change = (*next - outcome.velocity).norm() / next->norm();
     const Real change = std::max(step_change, full_change);
     work.forcing = std::clamp(change, min_forcing, max_forcing);
-    work.last_change = change;
     IterationRecord record;
     record.iteration = iteration;
     record.relative_change = change;
-    record.merit = newton && work.merit >= 0 ? work.merit : -1.0;
-    record.step_length = newton ? work.step_length : 0.0;
-    record.merit_descent = newton && work.merit_descent;
     record.pressure = (newton ? problem.internal_driven_force(work.force)
                               : problem.driven_force(work.secant, *next)) /
                       problem.driven_height();

@@ -133,22 +133,6 @@ public:
     return std::numeric_limits<Real>::infinity();
   }
 
-  // --- multipliers stepped with the velocity (optional) ---------------------------
-  /// The problem's multipliers λ are variables of the Newton step, moved with u along
-  /// it (exact stick's semismooth Newton on the pair (u, λ)): the line search then runs on
-  /// the pair's merit (multiplier_merit), and the step sets λ, not an update after it.
-  virtual bool steps_multipliers() const { return false; }
-  /// After the (constrained) step `step` from `u` with the constraints' `reactions`
-  /// (constrained_step_taken's): fixes the multipliers' part Δλ of the step, from the
-  /// current λ (the start, restored by take_multiplier_step(0)).
-  virtual void prepare_multiplier_step(const VectorX& /*u*/, const VectorX& /*step*/,
-                                       const std::vector<Real>& /*reactions*/) {}
-  /// λ = λ_start + t Δλ for the prepared step.
-  virtual void take_multiplier_step(Real /*t*/) {}
-  /// The friction conditions' part of the pair's merit at `u` with the current λ:
-  /// ½ Σ_points (W |λ − proj_{τ_f(u)}(λ + r u_T)|)², a squared nodal force.
-  virtual Real multiplier_merit(const VectorX& /*u*/) const { return 0.0; }
-
   // --- the after-iteration hook ---------------------------------------------------
   /// after_iteration may change the problem (Newton then cannot reuse a tangent
   /// assembled ahead with the old state).

@@ -84,16 +84,6 @@ struct IterationRecord {
   /// solver.linear = "petsc"; a direct KSP "preonly" counts 1 per solve); −1 where the
   /// back-end has none (CHOLMOD, UMFPACK).
   long linear_iterations = -1;
-  /// Exact stick's semismooth Newton: the merit ½‖R‖² + ½‖W C‖² of the pair (u, λ) this
-  /// iteration ended at (solvers/newton_iteration.cpp, docs/friction.md "Session 10");
-  /// −1 where the loop has no such merit (every other loop, and a secant step).
-  Real merit = -1.0;
-  /// The step length t the line search took (1: the full step); 0 for a secant step.
-  Real step_length = 0.0;
-  /// Exact stick: the step passed Armijo's test on the pair's merit, merit ≤ (1 − 2σt) ×
-  /// the merit it started from (false: no t down to a tenth of the slope search's did,
-  /// and that t was taken; solvers/newton_iteration.cpp).
-  bool merit_descent = false;
 };
 
 } // namespace formflow::solvers
