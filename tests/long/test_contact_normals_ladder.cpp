@@ -4,6 +4,7 @@
 // to Hill's value, and the rod extrusion loads lie below Avitzur's bound already
 // on 16 rows.
 #include "formflow/app/simulation.hpp"
+#include "support/angles.hpp"
 #include "support/forming_references.hpp"
 
 #include <gtest/gtest.h>
@@ -13,8 +14,6 @@
 
 namespace formflow::testing {
 namespace {
-
-constexpr double degree = std::numbers::pi / 180.0;
 
 io::Case extrusion_case(double degrees, double exit_half_height, double size) {
   io::Case case_;

@@ -3,6 +3,7 @@
 // over a range of semi-angles on the 16-row mesh of docs/validation.md, and the
 // axisymmetric drawing/extrusion loads between the ideal work and Avitzur's bound.
 #include "formflow/app/simulation.hpp"
+#include "support/angles.hpp"
 #include "support/approx.hpp"
 #include "support/forming_references.hpp"
 
@@ -14,8 +15,6 @@
 
 namespace formflow::testing {
 namespace {
-
-constexpr double degree = std::numbers::pi / 180.0;
 
 io::Case wedge_case(physics::ProcessType type, double degrees, double exit_half_height) {
   io::Case case_;

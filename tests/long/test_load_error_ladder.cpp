@@ -3,6 +3,7 @@
 // the sticking-ram benchmark (h = 1, 1/2, 1/4) and Hill's wedge drawing (15°, 30°;
 // h = 1/4, 1/8, 1/16). The table there comes from bench/error_estimation.py.
 #include "regression/benchmark_support.hpp"
+#include "support/angles.hpp"
 #include "support/forming_references.hpp"
 
 #include <gtest/gtest.h>
@@ -13,7 +14,6 @@
 namespace formflow::testing {
 namespace {
 
-constexpr double degree = std::numbers::pi / 180.0;
 /// The band of tests/regression/test_load_error_estimate.cpp (derived there).
 constexpr double min_effectivity = 0.5, max_effectivity = 3.0;
 

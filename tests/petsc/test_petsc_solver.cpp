@@ -19,14 +19,14 @@
 namespace formflow {
 namespace {
 
-constexpr Real delta = 1e-10; // solver.tolerance of these runs
+constexpr Real solver_delta = 1e-10; // solver.tolerance of these runs
 
 std::vector<io::Override> with_common(std::vector<io::Override> edits) {
   edits.insert(edits.begin(), {{"mesh.size", "2.5"}, {"solver.tolerance", "1e-10"}});
   return edits;
 }
 
-app::Simulation run(std::vector<io::Override> edits, bool estimate_condition = false) {
+app::Simulation run_petsc_case(std::vector<io::Override> edits, bool estimate_condition = false) {
   app::Simulation simulation =
       app::simulate(io::load_case("", with_common(std::move(edits))), {}, estimate_condition);
   EXPECT_TRUE(simulation.results.converged())
@@ -42,7 +42,7 @@ app::Simulation run(std::vector<io::Override> edits, bool estimate_condition = f
 /// stops within its own δ-sized last change, which the same factor bounds.
 Real direct_agreement(Real reciprocal_condition) {
   constexpr Real epsilon = std::numeric_limits<Real>::epsilon();
-  return 10 * (delta + epsilon / reciprocal_condition);
+  return 10 * (solver_delta + epsilon / reciprocal_condition);
 }
 
 class PetscMatchesCholmod : public ::testing::TestWithParam<std::vector<io::Override>> {};
@@ -50,8 +50,8 @@ class PetscMatchesCholmod : public ::testing::TestWithParam<std::vector<io::Over
 TEST_P(PetscMatchesCholmod, DirectMumpsGivesTheSameReaction) {
   std::vector<io::Override> cholmod = GetParam(), petsc = GetParam();
   petsc.emplace_back("solver.linear", "petsc");
-  const app::Simulation by_cholmod = run(cholmod, /*estimate_condition=*/true);
-  const app::Simulation by_petsc = run(petsc);
+  const app::Simulation by_cholmod = run_petsc_case(cholmod, /*estimate_condition=*/true);
+  const app::Simulation by_petsc = run_petsc_case(petsc);
   ASSERT_TRUE(by_cholmod.reciprocal_condition.has_value());
   const Real tolerance = direct_agreement(*by_cholmod.reciprocal_condition);
   std::cout << "rcond " << *by_cholmod.reciprocal_condition << " tolerance " << tolerance
@@ -91,8 +91,8 @@ TEST(PetscSolver, TaylorHoodSaddlePointByMumpsLu) {
   std::vector<io::Override> umfpack = taylor_hood, petsc = taylor_hood;
   umfpack.emplace_back("solver.linear", "umfpack");
   petsc.emplace_back("solver.linear", "petsc");
-  const app::Simulation by_umfpack = run(umfpack, /*estimate_condition=*/true);
-  const app::Simulation by_petsc = run(petsc);
+  const app::Simulation by_umfpack = run_petsc_case(umfpack, /*estimate_condition=*/true);
+  const app::Simulation by_petsc = run_petsc_case(petsc);
   EXPECT_EQ(by_petsc.results.method, "saddle point (petsc) around secant");
   const Real tolerance = direct_agreement(by_umfpack.reciprocal_condition.value_or(0.0));
   EXPECT_TRUE(testing::approx(by_petsc.results.pressure.ram_reaction,
@@ -114,8 +114,8 @@ TEST(PetscSolver, TaylorHoodByFieldsplitSchurGivesTheLuReaction) {
                      "schur -pc_fieldsplit_schur_fact_type full -pc_fieldsplit_schur_precondition "
                      "selfp -fieldsplit_u_ksp_type preonly -fieldsplit_u_pc_type hypre "
                      "-fieldsplit_p_ksp_type preonly -fieldsplit_p_pc_type lu");
-  const app::Simulation by_umfpack = run(umfpack, /*estimate_condition=*/true);
-  const app::Simulation by_petsc = run(petsc);
+  const app::Simulation by_umfpack = run_petsc_case(umfpack, /*estimate_condition=*/true);
+  const app::Simulation by_petsc = run_petsc_case(petsc);
   EXPECT_EQ(by_petsc.results.linear_algebra.solver, "petsc-fgmres-fieldsplit");
   // Each solve stops at a relative residual below krylov_tolerance: its forward
   // error is at most κ times that, on top of the direct solvers' κ·ε.

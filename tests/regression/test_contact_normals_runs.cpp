@@ -3,6 +3,7 @@
 // "Contact normals"): the container/die corner of wedge extrusion and the kinked
 // polyline die with local friction.
 #include "benchmark_support.hpp"
+#include "support/angles.hpp"
 #include "support/approx.hpp"
 #include "support/forming_references.hpp"
 
@@ -13,8 +14,6 @@
 
 namespace formflow::testing {
 namespace {
-
-constexpr double degree = std::numbers::pi / 180.0;
 
 TEST(ContactNormalsRuns, PlaneWedgeExtrusionOnSixteenRowsIsWithinFivePercentOfHill) {
   // Extrusion through a 15° wedge at Hill's reduction, sticking ram, frictionless:

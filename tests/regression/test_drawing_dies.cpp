@@ -2,6 +2,7 @@
 // Drawing and extrusion through wedge/conical dies against slip-line, ideal-work
 // and upper-bound references (docs/validation.md), on coarse meshes.
 #include "benchmark_support.hpp"
+#include "support/angles.hpp"
 #include "support/approx.hpp"
 #include "support/forming_references.hpp"
 
@@ -12,8 +13,6 @@
 
 namespace formflow::testing {
 namespace {
-
-constexpr double degree = std::numbers::pi / 180.0;
 
 /// Unit entry half height, entry part 1 and exit part 2 long, Q2, nearly rate-insensitive.
 io::Case wedge_case(physics::ProcessType type, double degrees, double exit_half_height,

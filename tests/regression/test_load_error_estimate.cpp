@@ -2,6 +2,7 @@
 // The load's error estimate (docs/error-estimation.md) on the coarse rungs of the
 // sticking-ram benchmark and Hill's wedge drawing, against their exact loads.
 #include "benchmark_support.hpp"
+#include "support/angles.hpp"
 #include "support/forming_references.hpp"
 
 #include "formflow/io/results_writer.hpp"
@@ -15,8 +16,6 @@
 
 namespace formflow::testing {
 namespace {
-
-constexpr double degree = std::numbers::pi / 180.0;
 
 /// The effectivity band: the issue's [0.5, 3]. What the estimate's construction
 /// gives (docs/error-estimation.md): |p_{h/2} − p_h| / (1 − q) with q ≥ ½ the larger

@@ -13,9 +13,9 @@
 namespace formflow {
 namespace {
 
-using Parameters = std::tuple<fem::ElementKind, mesh::Distortion>;
+using SolidRateParameters = std::tuple<fem::ElementKind, mesh::Distortion>;
 
-class ManufacturedRates3d : public ::testing::TestWithParam<Parameters> {};
+class ManufacturedRates3d : public ::testing::TestWithParam<SolidRateParameters> {};
 
 TEST_P(ManufacturedRates3d, ObservedOrdersMatchTheoremOnFinestPair) {
   const auto [element, distortion] = GetParam();
@@ -40,7 +40,7 @@ TEST_P(ManufacturedRates3d, ObservedOrdersMatchTheoremOnFinestPair) {
   EXPECT_NEAR(*finest.order_l2, order + 1, 0.15);
 }
 
-std::string name_of(const ::testing::TestParamInfo<Parameters>& info) {
+std::string solid_rate_case_name(const ::testing::TestParamInfo<SolidRateParameters>& info) {
   const auto [element, distortion] = info.param;
   const char* mesh = distortion == mesh::Distortion::None     ? "Uniform"
                      : distortion == mesh::Distortion::Smooth ? "Smooth"
@@ -50,9 +50,9 @@ std::string name_of(const ::testing::TestParamInfo<Parameters>& info) {
 
 INSTANTIATE_TEST_SUITE_P(
     Theorem41, ManufacturedRates3d,
-    ::testing::Values(Parameters{fem::ElementKind::Q1, mesh::Distortion::Smooth},
-                      Parameters{fem::ElementKind::Q2, mesh::Distortion::None}),
-    name_of);
+    ::testing::Values(SolidRateParameters{fem::ElementKind::Q1, mesh::Distortion::Smooth},
+                      SolidRateParameters{fem::ElementKind::Q2, mesh::Distortion::None}),
+    solid_rate_case_name);
 
 } // namespace
 } // namespace formflow

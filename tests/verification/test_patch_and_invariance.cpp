@@ -88,7 +88,7 @@ TEST(Invariance, MirroringTheMeshMirrorsTheSolution) {
   EXPECT_LT((image.velocity - reflected).norm(), 1e-8 * original.velocity.norm());
 }
 
-TEST(SecantIteration, ReachesTheSameAnswerFromDifferentStarts) {
+TEST(SecantStarts, ReachTheSameAnswer) {
   io::Case case_ = testing::coarse_benchmark();
   const mesh::Mesh<2> mesh = mesh::make_channel_mesh(case_.mesh.geometry, case_.mesh.size, 2);
   const testing::Solved reference = testing::solve_on(mesh, case_);

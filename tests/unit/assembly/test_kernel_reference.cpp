@@ -20,7 +20,7 @@ namespace {
 
 // Entries are sums of ≤ 27 products of O(1) gradients: 1e-13 of the matrix
 // norm is round-off with margin, and far below any wrong term.
-constexpr double roundoff = 1e-13;
+constexpr double reference_kernel_roundoff = 1e-13;
 
 /// A distorted cell of `order`: each reference node moved by a smooth O(0.1) field.
 template <int dim> typename fem::CellValues<dim>::Gradients distorted_cell(int order) {
@@ -82,7 +82,8 @@ template <int dim> void check_viscous(int order, physics::ViscousStrain strain) 
   }
   MatrixX k = prefilled(size);
   assembly::add_viscous_term<dim>(values, viscosity, strain, k);
-  EXPECT_TRUE(approx((k - reference).norm(), 0.0, 0.0, roundoff * reference.norm()));
+  EXPECT_TRUE(
+      approx((k - reference).norm(), 0.0, 0.0, reference_kernel_roundoff * reference.norm()));
 }
 
 template <int dim> void check_volumetric(int order, int n_points) {
@@ -101,7 +102,8 @@ template <int dim> void check_volumetric(int order, int n_points) {
                 values.JxW(q) / d * values.gradients(q)(i, a) * values.gradients(q)(j, b);
   MatrixX k = prefilled(size);
   assembly::add_volumetric_penalty<dim>(values, d, k);
-  EXPECT_TRUE(approx((k - reference).norm(), 0.0, 0.0, roundoff * reference.norm()));
+  EXPECT_TRUE(
+      approx((k - reference).norm(), 0.0, 0.0, reference_kernel_roundoff * reference.norm()));
 }
 
 template <int dim> void check_tangent(int order) {
@@ -133,7 +135,8 @@ template <int dim> void check_tangent(int order) {
   }
   MatrixX k = prefilled(size);
   assembly::add_viscous_tangent<dim>(values, deviators, duals, a, b, k);
-  EXPECT_TRUE(approx((k - reference).norm(), 0.0, 0.0, roundoff * reference.norm()));
+  EXPECT_TRUE(
+      approx((k - reference).norm(), 0.0, 0.0, reference_kernel_roundoff * reference.norm()));
 }
 
 class KernelReference : public ::testing::TestWithParam<Case> {};

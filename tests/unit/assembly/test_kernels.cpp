@@ -100,7 +100,7 @@ MatrixX viscous_matrix(const fem::CellValues<2>& values, const std::vector<Real>
 // A local matrix of ≤ 18 rows built from ≤ 9 points of O(1) terms: entries
 // carry ~1e-15 relative error. "Zero" below means ≤ 1e-12 relative to the
 // natural scale ‖K‖·‖u‖ — round-off, four orders below any true signal.
-constexpr double roundoff = 1e-12;
+constexpr double kernel_roundoff = 1e-12;
 
 struct KernelCase {
   int order;
@@ -125,8 +125,8 @@ protected:
 TEST_P(ViscousKernel, IsSymmetricAndPositiveSemiDefinite) {
   const fem::CellValues<2> v = values();
   const MatrixX k = viscous_matrix(v, varying_viscosity(v.n_points()), strain());
-  EXPECT_TRUE(approx((k - k.transpose()).norm(), 0.0, 0.0, roundoff * k.norm()));
-  EXPECT_GE(eigenvalues(k).minCoeff(), -roundoff * k.norm());
+  EXPECT_TRUE(approx((k - k.transpose()).norm(), 0.0, 0.0, kernel_roundoff * k.norm()));
+  EXPECT_GE(eigenvalues(k).minCoeff(), -kernel_roundoff * k.norm());
 }
 
 TEST_P(ViscousKernel, RigidBodyModesAreExactlyTheNullSpace) {
@@ -139,7 +139,7 @@ TEST_P(ViscousKernel, RigidBodyModesAreExactlyTheNullSpace) {
       nodal_field<2>(distorted(order()), Tensor2<2>::Zero(), Point<2>(0.0, 1.0)),
       nodal_field<2>(distorted(order()), rotation)};
   for (const VectorX& mode : modes)
-    EXPECT_TRUE(approx((k * mode).norm(), 0.0, 0.0, roundoff * k.norm() * mode.norm()));
+    EXPECT_TRUE(approx((k * mode).norm(), 0.0, 0.0, kernel_roundoff * k.norm() * mode.norm()));
   // Full integration (2×2 for Q1, 3×3 for Q2) leaves no spurious zero-energy
   // modes: exactly three, in plane strain for ė as well as ε̇ (ė = 0 with
   // ε̇_zz = 0 forces ε̇ = 0). 1e-10 of λ_max separates them from the rest.
@@ -159,7 +159,8 @@ TEST_P(ViscousKernel, EnergyOfALinearFieldByHand) {
   const VectorX u = nodal_field<2>(distorted(order()), g, Point<2>(0.4, -0.9));
   // The gradient of the interpolated linear field is exact, and the full rule
   // integrates det J exactly: round-off only.
-  EXPECT_TRUE(approx(u.dot(k * u), 2.0 / 3.0 * nu * contraction * distorted_area(), roundoff));
+  EXPECT_TRUE(
+      approx(u.dot(k * u), 2.0 / 3.0 * nu * contraction * distorted_area(), kernel_roundoff));
 }
 
 TEST_P(ViscousKernel, MatchesTheVoigtBMatrixForm) {
@@ -185,7 +186,7 @@ TEST_P(ViscousKernel, MatchesTheVoigtBMatrixForm) {
     }
     reference += 2.0 / 3.0 * viscosity[q] * v.JxW(q) * b.transpose() * d * b;
   }
-  EXPECT_TRUE(approx((k - reference).norm(), 0.0, 0.0, roundoff * reference.norm()));
+  EXPECT_TRUE(approx((k - reference).norm(), 0.0, 0.0, kernel_roundoff * reference.norm()));
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -211,12 +212,12 @@ TEST(ViscousKernel3D, SixRigidModesOnADistortedHexahedron) {
   Tensor2<3> spin;
   spin << 0, -0.3, 0.5, 0.3, 0, -0.2, -0.5, 0.2, 0;
   const VectorX u = nodal_field<3>(nodes, spin, Point<3>(0.1, 0.2, 0.3));
-  EXPECT_TRUE(approx((k * u).norm(), 0.0, 0.0, roundoff * k.norm() * u.norm()));
+  EXPECT_TRUE(approx((k * u).norm(), 0.0, 0.0, kernel_roundoff * k.norm() * u.norm()));
   // Energy of u = diag(1, −½, −½) x: ε̇:ε̇ = 1.5, volume 1.325 (hand).
   Tensor2<3> stretch = Tensor2<3>::Zero();
   stretch.diagonal() << 1, -0.5, -0.5;
   const VectorX w = nodal_field<3>(nodes, stretch);
-  EXPECT_TRUE(approx(w.dot(k * w), 2.0 / 3.0 * 1.5 * 1.325, roundoff));
+  EXPECT_TRUE(approx(w.dot(k * w), 2.0 / 3.0 * 1.5 * 1.325, kernel_roundoff));
 }
 
 // ---- volumetric penalty -------------------------------------------------------
@@ -236,7 +237,7 @@ TEST(VolumetricPenalty, DivergenceFreeLinearFieldHasNoPenalty) {
     for (int n = 1; n <= order + 1; ++n) {
       const MatrixX k = volumetric_matrix(order, n, 1e-3);
       const VectorX u = nodal_field<2>(distorted(order), g, Point<2>(1.0, 2.0));
-      EXPECT_TRUE(approx((k * u).norm(), 0.0, 0.0, roundoff * k.norm() * u.norm()))
+      EXPECT_TRUE(approx((k * u).norm(), 0.0, 0.0, kernel_roundoff * k.norm() * u.norm()))
           << order << "/" << n;
     }
 }
@@ -249,8 +250,9 @@ TEST(VolumetricPenalty, UniformDilatationGivesDivergenceSquaredOverD) {
   for (const auto& [order, n] : cases) {
     const MatrixX k = volumetric_matrix(order, n, d);
     const VectorX u = nodal_field<2>(distorted(order), Tensor2<2>::Identity());
-    EXPECT_TRUE(approx(u.dot(k * u), 4.0 / d * distorted_area(), roundoff)) << order << "/" << n;
-    EXPECT_GE(eigenvalues(k).minCoeff(), -roundoff * k.norm());
+    EXPECT_TRUE(approx(u.dot(k * u), 4.0 / d * distorted_area(), kernel_roundoff))
+        << order << "/" << n;
+    EXPECT_GE(eigenvalues(k).minCoeff(), -kernel_roundoff * k.norm());
   }
 }
 
@@ -293,11 +295,11 @@ TEST(ContactPenalty, NormalVelocityIsPenalisedWithOneOverDn) {
           nodal_field<2>(distorted(order), Tensor2<2>::Zero(), face.normal);
       const VectorX tangent_field = nodal_field<2>(distorted(order), Tensor2<2>::Zero(), tangent);
       // u = n: u_N = 1 along the face → (1/d_N)·L; u = t: u_N = 0.
-      EXPECT_TRUE(approx(normal_field.dot(k * normal_field), face.length / d_n, roundoff))
+      EXPECT_TRUE(approx(normal_field.dot(k * normal_field), face.length / d_n, kernel_roundoff))
           << face.local_face;
-      EXPECT_TRUE(
-          approx(tangent_field.dot(k * tangent_field), 0.0, 0.0, roundoff * face.length / d_n));
-      EXPECT_TRUE(approx((k - k.transpose()).norm(), 0.0, 0.0, roundoff * k.norm()));
+      EXPECT_TRUE(approx(tangent_field.dot(k * tangent_field), 0.0, 0.0,
+                         kernel_roundoff * face.length / d_n));
+      EXPECT_TRUE(approx((k - k.transpose()).norm(), 0.0, 0.0, kernel_roundoff * k.norm()));
     }
   }
 }
@@ -328,11 +330,12 @@ TEST(FrictionTerm, TangentialSlipIsWeightedAndNormalMotionIsFree) {
       // u = 0.6 n + 2 t: only the tangential part counts, |u_T|² = 4.
       const VectorX mixed_field = nodal_field<2>(distorted(order), Tensor2<2>::Zero(),
                                                  Point<2>(0.6 * face.normal + 2.0 * tangent));
+      EXPECT_TRUE(approx(normal_field.dot(k * normal_field), 0.0, 0.0,
+                         kernel_roundoff * kappa * face.length));
       EXPECT_TRUE(
-          approx(normal_field.dot(k * normal_field), 0.0, 0.0, roundoff * kappa * face.length));
-      EXPECT_TRUE(approx(mixed_field.dot(k * mixed_field), 4.0 * kappa * face.length, roundoff))
+          approx(mixed_field.dot(k * mixed_field), 4.0 * kappa * face.length, kernel_roundoff))
           << face.local_face;
-      EXPECT_GE(eigenvalues(k).minCoeff(), -roundoff * k.norm());
+      EXPECT_GE(eigenvalues(k).minCoeff(), -kernel_roundoff * k.norm());
     }
   }
 }
@@ -350,7 +353,7 @@ TEST(FrictionTerm, PointWeightsFollowTheirQuadraturePoints) {
   assembly::add_friction_term<2>(values, weight, k);
   const Point<2> tangent(-bottom.normal.y(), bottom.normal.x());
   const VectorX u = nodal_field<2>(distorted_q1(), Tensor2<2>::Zero(), tangent);
-  EXPECT_TRUE(approx(u.dot(k * u), bottom.length + bottom.length * bottom.length, roundoff));
+  EXPECT_TRUE(approx(u.dot(k * u), bottom.length + bottom.length * bottom.length, kernel_roundoff));
   // Zero weights everywhere add nothing.
   MatrixX unchanged = MatrixX::Zero(8, 8);
   assembly::add_friction_term<2>(values, std::vector<Real>(2, 0.0), unchanged);
@@ -375,7 +378,7 @@ TEST(Kernels, AddToTheExistingLocalMatrix) {
   assembly::add_volumetric_penalty<2>(v, 0.5, summed);
   assembly::add_contact_penalty<2>(f, 0.25, summed);
   assembly::add_friction_term<2>(f, kappa, summed);
-  EXPECT_TRUE(approx((summed - start - alone).norm(), 0.0, 0.0, roundoff * alone.norm()));
+  EXPECT_TRUE(approx((summed - start - alone).norm(), 0.0, 0.0, kernel_roundoff * alone.norm()));
 }
 
 } // namespace

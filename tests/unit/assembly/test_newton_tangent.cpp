@@ -27,7 +27,7 @@ namespace {
 using Nodes2 = fem::CellValues<2>::Gradients;
 
 /// A Q2 cell with curved map: straight outline, displaced centre node.
-Nodes2 distorted_q2() {
+Nodes2 curved_q2_cell() {
   Nodes2 corners(2, 4);
   corners << 0.0, 2.0, 0.3, 2.4, //
       0.0, 0.2, 1.5, 1.9;
@@ -82,7 +82,7 @@ MatrixX viscous_tangent(const fem::CellValues<2>& values, const physics::FlowLaw
 /// Central differences of `residual` column by column, step h·(1 + ‖u‖∞).
 TEST(ViscousTangent, MatchesFiniteDifferencesForTheDeviatoricForm) {
   fem::CellValues<2> values(2, fem::gauss_rule<2>(3));
-  ASSERT_TRUE(values.reinit(distorted_q2()));
+  ASSERT_TRUE(values.reinit(curved_q2_cell()));
   const physics::FlowLaw law = sensitive_law();
   const auto strain = physics::ViscousStrain::Deviatoric;
   const VectorX u = random_vector(18, 7);
@@ -103,7 +103,7 @@ TEST(ViscousTangent, MatchesFiniteDifferencesForTheDeviatoricForm) {
 
 TEST(ViscousTangent, IsSymmetricPositiveDefiniteModuloRigidModesForAMonotoneLaw) {
   fem::CellValues<2> values(2, fem::gauss_rule<2>(3));
-  ASSERT_TRUE(values.reinit(distorted_q2()));
+  ASSERT_TRUE(values.reinit(curved_q2_cell()));
   physics::FlowLaw law; // the paper's α = 1e-3: σ_p′ is a thousandth of σ_p/ε̄̇
   law.rate1 = 1e-8;
   for (auto strain : {physics::ViscousStrain::Full, physics::ViscousStrain::Deviatoric}) {
@@ -121,7 +121,7 @@ TEST(ViscousTangent, PrimalDualFormIsPositiveSemiDefiniteForCappedDuals) {
   // Any dual w with √(⅔ w:w) ≤ σ_p(ε̄̇) keeps the symmetrised tangent PSD (the
   // reason for the cap in solvers::update_duals), here a w far from ν ė.
   fem::CellValues<2> values(2, fem::gauss_rule<2>(3));
-  ASSERT_TRUE(values.reinit(distorted_q2()));
+  ASSERT_TRUE(values.reinit(curved_q2_cell()));
   physics::FlowLaw law;
   law.rate1 = 1e-8;
   const VectorX u = random_vector(18, 13);
@@ -156,7 +156,7 @@ TEST(ViscousTangent, IsExactForTheFullFormOnDivergenceFreeFields) {
   // tangent must then match the finite differences of the full-ε̇ residual.
   // On a curved (non-bilinear) map the Q2 interpolant of a polynomial field is
   // not the field, so take the same outline with the centre node in place.
-  Nodes2 affine = distorted_q2();
+  Nodes2 affine = curved_q2_cell();
   affine.col(4) -= Point<2>(0.12, -0.07);
   fem::CellValues<2> values(2, fem::gauss_rule<2>(3));
   ASSERT_TRUE(values.reinit(affine));
@@ -176,7 +176,7 @@ TEST(ViscousTangent, IsExactForTheFullFormOnDivergenceFreeFields) {
 
 TEST(FrictionTangent, MatchesFiniteDifferencesAtFixedThreshold) {
   fem::FacetValues<2> values(2, fem::gauss_rule<1>(3));
-  values.reinit(distorted_q2(), 3);
+  values.reinit(curved_q2_cell(), 3);
   // d_T comparable to the slip speeds, so that both the stick-like and the
   // slip-like part of τ_f u_T/√(|u_T|² + d_T²) are exercised.
   const double d_t = 0.3;

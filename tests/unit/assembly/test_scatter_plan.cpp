@@ -20,7 +20,7 @@ using assembly::ScatterPlan;
 
 // Each global entry is a sum of ≤ 4 local O(1) entries (shared nodes), rhs
 // entries sums of ≤ 40 O(1) products: 1e-13 absolute is round-off.
-constexpr double roundoff = 1e-13;
+constexpr double scatter_roundoff = 1e-13;
 
 /// The tiny channel: container 2×2, exit 2×1, unit cells.
 mesh::Mesh<2> tiny_mesh(int order) {
@@ -137,7 +137,7 @@ TEST_P(ScatterPlanTest, FreeBlockIsTheLowerTriangleOfTheDenseReference) {
   for (Index i = 0; i < plan.n_free(); ++i)
     for (Index j = 0; j < plan.n_free(); ++j) {
       const double expected = i >= j ? full_(free[i], free[j]) : 0.0; // upper triangle not stored
-      EXPECT_TRUE(approx(stored(i, j), expected, 0.0, roundoff))
+      EXPECT_TRUE(approx(stored(i, j), expected, 0.0, scatter_roundoff))
           << "K_ff(" << i << ", " << j << ")";
     }
 }
@@ -150,7 +150,7 @@ TEST_P(ScatterPlanTest, RightHandSideMovesThePrescribedColumns) {
   // F_f = −K_fc u_c; values_ is zero on the free dofs, so K_fc u_c = (K values_)_f.
   const VectorX k_u = full_ * values_;
   for (Index i = 0; i < plan.n_free(); ++i)
-    EXPECT_TRUE(approx(system.rhs[i], -k_u[free[i]], 0.0, roundoff)) << "F_f(" << i << ")";
+    EXPECT_TRUE(approx(system.rhs[i], -k_u[free[i]], 0.0, scatter_roundoff)) << "F_f(" << i << ")";
 }
 
 TEST_P(ScatterPlanTest, ReactionRowsAreThePrescribedRowsOfTheFullMatrix) {
@@ -163,7 +163,7 @@ TEST_P(ScatterPlanTest, ReactionRowsAreThePrescribedRowsOfTheFullMatrix) {
   ASSERT_EQ(rows.cols(), n_dofs_);
   for (Index r = 0; r < plan.n_prescribed(); ++r)
     for (Index dof = 0; dof < n_dofs_; ++dof)
-      EXPECT_TRUE(approx(rows(r, dof), full_(prescribed[r], dof), 0.0, roundoff))
+      EXPECT_TRUE(approx(rows(r, dof), full_(prescribed[r], dof), 0.0, scatter_roundoff))
           << r << ", " << dof;
 }
 
@@ -184,7 +184,7 @@ TEST_P(ScatterPlanTest, EliminatedSystemReproducesTheFullProduct) {
   for (Index dof = 0; dof < n_dofs_; ++dof) {
     const double actual =
         prescribed_[dof] ? reactions[plan.prescribed_index(dof)] : lhs[plan.free_index(dof)];
-    EXPECT_TRUE(approx(actual, k_u[dof], 0.0, roundoff)) << dof;
+    EXPECT_TRUE(approx(actual, k_u[dof], 0.0, scatter_roundoff)) << dof;
   }
 }
 
@@ -194,9 +194,9 @@ TEST_P(ScatterPlanTest, ScatterAccumulatesAndClearKeepsThePattern) {
   scatter_all(plan, once);
   scatter_all(plan, twice);
   scatter_all(plan, twice);
-  EXPECT_TRUE(
-      approx((MatrixX(twice.matrix) - 2 * MatrixX(once.matrix)).norm(), 0.0, 0.0, roundoff));
-  EXPECT_TRUE(approx((twice.rhs - 2 * once.rhs).norm(), 0.0, 0.0, roundoff));
+  EXPECT_TRUE(approx((MatrixX(twice.matrix) - 2 * MatrixX(once.matrix)).norm(), 0.0, 0.0,
+                     scatter_roundoff));
+  EXPECT_TRUE(approx((twice.rhs - 2 * once.rhs).norm(), 0.0, 0.0, scatter_roundoff));
   const Index non_zeros = twice.matrix.nonZeros();
   ScatterPlan::clear(twice);
   EXPECT_EQ(twice.matrix.nonZeros(), non_zeros);

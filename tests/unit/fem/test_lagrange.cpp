@@ -17,7 +17,7 @@ namespace {
 
 // Shape values are products of ≤ 3 one-dimensional quadratics bounded by
 // ~1.2 on the cell; sums over ≤ 27 of them are exact to a few ulps.
-constexpr double roundoff = 1e-14;
+constexpr double lagrange_roundoff = 1e-14;
 
 template <int dim> int n_nodes(int order) {
   int n = 1;
@@ -68,7 +68,7 @@ template <int dim> void check_partition_of_unity(int order) {
     fem::tabulate_shape<dim>(order, xi, values, gradients);
     ASSERT_EQ(values.size(), n_nodes<dim>(order));
     ASSERT_EQ(gradients.cols(), n_nodes<dim>(order));
-    EXPECT_TRUE(approx(values.sum(), 1.0, 0.0, roundoff));
+    EXPECT_TRUE(approx(values.sum(), 1.0, 0.0, lagrange_roundoff));
     // The gradient of Σ N_a = 1 vanishes; entries are O(1), so round-off again.
     for (int d = 0; d < dim; ++d) EXPECT_TRUE(approx(gradients.row(d).sum(), 0.0, 0.0, 1e-13));
   }

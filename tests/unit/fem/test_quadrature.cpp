@@ -21,7 +21,7 @@ double monomial_integral(int k) {
 // A rule of ≤ 125 points with positive weights summing to 2^dim applied to
 // monomials bounded by 1 on the cube: the accumulated round-off is a few
 // hundred ulps of O(1) at most, so 1e-13 absolute is round-off, not a fudge.
-constexpr double roundoff = 1e-13;
+constexpr double quadrature_roundoff = 1e-13;
 
 class GaussRule : public ::testing::TestWithParam<int> {};
 
@@ -33,7 +33,8 @@ TEST_P(GaussRule, OneDimensionalRuleIsExactToDegreeTwoNMinusOne) {
   for (int k = 0; k <= 2 * n - 1; ++k) {
     double sum = 0.0;
     for (int q = 0; q < n; ++q) sum += weights[q] * std::pow(points[q], k);
-    EXPECT_TRUE(approx(sum, monomial_integral(k), 0.0, roundoff)) << "n " << n << ", x^" << k;
+    EXPECT_TRUE(approx(sum, monomial_integral(k), 0.0, quadrature_roundoff))
+        << "n " << n << ", x^" << k;
   }
 }
 
@@ -75,7 +76,8 @@ TEST_P(GaussRule, TwoDimensionalRuleIsExactForEveryMonomialUpToTwoNMinusOne) {
       double sum = 0.0;
       for (int q = 0; q < rule.size(); ++q)
         sum += rule.weights[q] * std::pow(rule.points[q].x(), a) * std::pow(rule.points[q].y(), b);
-      EXPECT_TRUE(approx(sum, monomial_integral(a) * monomial_integral(b), 0.0, roundoff))
+      EXPECT_TRUE(
+          approx(sum, monomial_integral(a) * monomial_integral(b), 0.0, quadrature_roundoff))
           << "n " << n << ", x^" << a << " y^" << b;
     }
 }
@@ -85,9 +87,9 @@ TEST_P(GaussRule, WeightsSumToTheMeasureOfTheReferenceCell) {
   auto total = [](const auto& rule) {
     return std::accumulate(rule.weights.begin(), rule.weights.end(), 0.0);
   };
-  EXPECT_TRUE(approx(total(fem::gauss_rule<1>(n)), 2.0, 0.0, roundoff));
-  EXPECT_TRUE(approx(total(fem::gauss_rule<2>(n)), 4.0, 0.0, roundoff));
-  EXPECT_TRUE(approx(total(fem::gauss_rule<3>(n)), 8.0, 0.0, roundoff));
+  EXPECT_TRUE(approx(total(fem::gauss_rule<1>(n)), 2.0, 0.0, quadrature_roundoff));
+  EXPECT_TRUE(approx(total(fem::gauss_rule<2>(n)), 4.0, 0.0, quadrature_roundoff));
+  EXPECT_TRUE(approx(total(fem::gauss_rule<3>(n)), 8.0, 0.0, quadrature_roundoff));
 }
 
 TEST_P(GaussRule, TensorPointsAreLexicographicWithXFastest) {
@@ -123,7 +125,7 @@ TEST(GaussRule3D, ExactForMixedMonomialsUpToTwoNMinusOne) {
             sum += rule.weights[q] * std::pow(p.x(), a) * std::pow(p.y(), b) * std::pow(p.z(), c);
           }
           const double exact = monomial_integral(a) * monomial_integral(b) * monomial_integral(c);
-          EXPECT_TRUE(approx(sum, exact, 0.0, roundoff)) << n << ": " << a << b << c;
+          EXPECT_TRUE(approx(sum, exact, 0.0, quadrature_roundoff)) << n << ": " << a << b << c;
         }
   }
 }

@@ -17,7 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-::testing::AssertionResult has_text(const std::string& text, const std::string& part) {
+::testing::AssertionResult formulation_hint_has_text(const std::string& text,
+                                                     const std::string& part) {
   if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
 }
@@ -57,7 +58,7 @@ TEST(FormulationKeys, ExactIncompressibilityNeedsTheMixedFormulation) {
   const InputError error = refusal("", {{"penalty.d", "0"}});
   EXPECT_EQ(error.key, "penalty.d");
   EXPECT_EQ(error.file, "--set");
-  EXPECT_TRUE(has_text(error.hint, "formulation.type = \"mixed\""));
+  EXPECT_TRUE(formulation_hint_has_text(error.hint, "formulation.type = \"mixed\""));
 }
 
 TEST(FormulationKeys, NegativePenaltyIsOutOfRange) {
@@ -78,18 +79,18 @@ TEST(FormulationKeys, UnstableOrUnimplementedPairsAreRefused) {
   const InputError q1_q1 = refusal(
       "", {{"formulation.type", "mixed"}, {"formulation.pressure", "Q1"}, {"mesh.element", "Q1"}});
   EXPECT_EQ(q1_q1.key, "mesh.element");
-  EXPECT_TRUE(has_text(q1_q1.message, "Q1 velocity"));
+  EXPECT_TRUE(formulation_hint_has_text(q1_q1.message, "Q1 velocity"));
   const InputError locking = refusal(
       "",
       {{"formulation.type", "mixed"}, {"formulation.pressure", "P1disc"}, {"mesh.element", "Q1"}});
   EXPECT_EQ(locking.key, "mesh.element"); // set last: the one to change
-  EXPECT_TRUE(has_text(locking.hint, "P0"));
+  EXPECT_TRUE(formulation_hint_has_text(locking.hint, "P0"));
   const InputError checkerboard = refusal("", {{"mesh.element", "Q1"},
                                                {"formulation.type", "mixed"},
                                                {"formulation.pressure", "P0"},
                                                {"penalty.d", "0"}});
   EXPECT_EQ(checkerboard.key, "penalty.d");
-  EXPECT_TRUE(has_text(checkerboard.message, "inf-sup"));
+  EXPECT_TRUE(formulation_hint_has_text(checkerboard.message, "inf-sup"));
 }
 
 TEST(FormulationKeys, CombinationsNotYetSupportedAreRefused) {
@@ -99,12 +100,12 @@ TEST(FormulationKeys, CombinationsNotYetSupportedAreRefused) {
   const InputError exact_friction =
       refusal("", {{"friction.regularization", "none"}, {"penalty.dN", "0"}});
   EXPECT_EQ(exact_friction.key, "penalty.dN");
-  EXPECT_TRUE(has_text(exact_friction.hint, "regularized"));
+  EXPECT_TRUE(formulation_hint_has_text(exact_friction.hint, "regularized"));
   const InputError friction_taylor_hood = refusal("", {{"formulation.type", "mixed"},
                                                        {"formulation.pressure", "Q1"},
                                                        {"friction.regularization", "none"}});
   EXPECT_EQ(friction_taylor_hood.key, "friction.regularization");
-  EXPECT_TRUE(has_text(friction_taylor_hood.message, "Taylor–Hood"));
+  EXPECT_TRUE(formulation_hint_has_text(friction_taylor_hood.message, "Taylor–Hood"));
 }
 
 TEST(FormulationKeys, ExactStickNeedsExactFrictionNodalPointsAndNewton) {
@@ -116,19 +117,19 @@ TEST(FormulationKeys, ExactStickNeedsExactFrictionNodalPointsAndNewton) {
   const InputError regularised =
       refusal("", {{"contact.normals", "nodes"}, {"friction.stick", "exact"}});
   EXPECT_EQ(regularised.key, "friction.stick");
-  EXPECT_TRUE(has_text(regularised.hint, "friction.regularization = \"none\""));
+  EXPECT_TRUE(formulation_hint_has_text(regularised.hint, "friction.regularization = \"none\""));
   // An explicit pair that conflicts is refused, never overridden.
   const InputError faces = refusal("", {{"friction.regularization", "none"},
                                         {"contact.normals", "faces"},
                                         {"friction.stick", "exact"}});
   EXPECT_EQ(faces.key, "friction.stick");
-  EXPECT_TRUE(has_text(faces.hint, "contact.normals = \"nodes\""));
+  EXPECT_TRUE(formulation_hint_has_text(faces.hint, "contact.normals = \"nodes\""));
   const InputError secant = refusal("", {{"friction.regularization", "none"},
                                          {"contact.normals", "nodes"},
                                          {"friction.stick", "exact"},
                                          {"solver.method", "secant"}});
   EXPECT_EQ(secant.key, "solver.method");
-  EXPECT_TRUE(has_text(secant.hint, "solver.method = \"newton\""));
+  EXPECT_TRUE(formulation_hint_has_text(secant.hint, "solver.method = \"newton\""));
   EXPECT_EQ(refusal("", {{"friction.stick", "penalty"}}).key, "friction.stick");
 }
 
@@ -162,7 +163,7 @@ TEST(FormulationKeys, TheExactLawUnderNewtonGetsExactStickOnNodesByDefault) {
   EXPECT_EQ(stick_choice(faces).stick, StickEnforcement::Augmented);
   EXPECT_EQ(stick_choice(faces).normals, ContactNormals::Faces);
   ASSERT_EQ(faces.warnings.size(), 1u);
-  EXPECT_TRUE(has_text(faces.warnings[0], "--set: contact.normals = \"faces\""));
+  EXPECT_TRUE(formulation_hint_has_text(faces.warnings[0], "--set: contact.normals = \"faces\""));
   // The old path by key: augmented stick keeps the face points.
   const StickChoice augmented = stick_choice(
       load_case("", {{"friction.regularization", "none"}, {"friction.stick", "augmented"}}));

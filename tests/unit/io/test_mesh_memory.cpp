@@ -22,7 +22,7 @@ namespace {
 constexpr Real mebibyte = 1024.0 * 1024.0;
 constexpr Real gibibyte = 1024.0 * mebibyte;
 
-bool has_text(const std::string& text, const std::string& part) {
+bool memory_message_has_text(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
@@ -127,8 +127,9 @@ TEST(MeshMemory, GmshAndManufacturedSuggestTheirOwnValidSizes) {
   box.manufactured = physics::ManufacturedSolution::Smooth;
   const auto box_problem = mesh_memory_problem(box, 8 * gibibyte);
   ASSERT_TRUE(box_problem);
-  EXPECT_TRUE(has_text(box_problem->message, "about 1e+08 cells")) << box_problem->message;
-  EXPECT_TRUE(has_text(box_problem->hint, "(= 1/")) << box_problem->hint;
+  EXPECT_TRUE(memory_message_has_text(box_problem->message, "about 1e+08 cells"))
+      << box_problem->message;
+  EXPECT_TRUE(memory_message_has_text(box_problem->hint, "(= 1/")) << box_problem->hint;
   box.mesh.size = std::stod(suggested_size(box_problem->hint));
   EXPECT_GT(mesh::cells_along(1.0, box.mesh.size), 0) << box_problem->hint;
   EXPECT_FALSE(mesh_memory_problem(box, 8 * gibibyte));
@@ -142,8 +143,8 @@ TEST(MeshMemory, LoadCaseRefusesAMeshNoMachineHolds) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.key, "mesh.size");
     EXPECT_EQ(error.file, "--set");
-    EXPECT_TRUE(has_text(error.what(), "1.5e+10 cells")) << error.what();
-    EXPECT_TRUE(has_text(error.hint, "use mesh.size ≥ ")) << error.hint;
+    EXPECT_TRUE(memory_message_has_text(error.what(), "1.5e+10 cells")) << error.what();
+    EXPECT_TRUE(memory_message_has_text(error.hint, "use mesh.size ≥ ")) << error.hint;
   }
 }
 

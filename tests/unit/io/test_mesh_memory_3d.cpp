@@ -15,8 +15,8 @@
 namespace formflow::io {
 namespace {
 
-constexpr Real mebibyte = 1024.0 * 1024.0;
-constexpr Real gibibyte = 1024.0 * mebibyte;
+constexpr Real solid_mebibyte = 1024.0 * 1024.0;
+constexpr Real solid_gibibyte = 1024.0 * solid_mebibyte;
 
 Case round_rod() {
   return load_case(std::string(FORMFLOW_SOURCE_DIR) + "/cases/round-rod-3d.toml", {});
@@ -33,8 +33,8 @@ TEST(MeshMemory3D, EstimateIsBelowTheCountedFactorAndTheMeasuredPeaks) {
   EXPECT_LE(at_8->dofs, 48825.0);
   EXPECT_GT(at_8->dofs, 0.8 * 48825.0); // interior nodes only: boundary nodes missing
   EXPECT_LE(at_8->factor_entries, 23945842.0);
-  EXPECT_LE(at_8->bytes, 678 * mebibyte);
-  EXPECT_LE(at_16->bytes, 6880 * mebibyte);
+  EXPECT_LE(at_8->bytes, 678 * solid_mebibyte);
+  EXPECT_LE(at_16->bytes, 6880 * solid_mebibyte);
   // The factor is most of it, and grows faster than the dofs: ×2^(4/3) per ×2 in dofs.
   EXPECT_GT(8.0 * at_8->factor_entries, run_bytes_per_dof * at_8->dofs);
   const Real growth = at_16->factor_entries / at_8->factor_entries;
@@ -52,7 +52,7 @@ TEST(MeshMemory3D, TheHintFitsTheRectanglesHalfWidths) {
                               {"geometry.exit_half_width", "0.75"},
                               {"mesh.size", "0.25"}});
   case_.mesh.size = 0.004; // 1 → 250 cells a side: some 10⁸ dofs
-  const Real memory = 24 * gibibyte;
+  const Real memory = 24 * solid_gibibyte;
   const auto problem = mesh_memory_problem(case_, memory);
   ASSERT_TRUE(problem);
   EXPECT_NE(problem->hint.find("8 per entry of the Cholesky factor"), std::string::npos)

@@ -17,7 +17,7 @@
 namespace formflow::io {
 namespace {
 
-bool has_text(const std::string& text, const std::string& part) {
+bool solid_hint_has_text(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
@@ -78,7 +78,8 @@ TEST(SolidKeys, SolidKeysInAPlaneCaseAreRefusedByNameUnlessAtTheirDefaults) {
       load_case_text("[geometry]\nsection = \"slab\"\nthickness = 1\n", "solid.toml", {}));
   error_in("[geometry]\nsection = \"round\"\n", "geometry.section", 2);
   const InputError thickness = error_in("[geometry]\nthickness = 2\n", "geometry.thickness", 2);
-  EXPECT_TRUE(has_text(thickness.message, "geometry.dimension = 3")) << thickness.message;
+  EXPECT_TRUE(solid_hint_has_text(thickness.message, "geometry.dimension = 3"))
+      << thickness.message;
   error_in("[geometry]\nentry_half_width = 4\n", "geometry.entry_half_width", 2);
   // The slab reads the thickness, not the rectangle's half widths.
   error_in("[geometry]\ndimension = 3\nexit_half_width = 4\n", "geometry.exit_half_width", 3);
@@ -92,7 +93,8 @@ TEST(SolidKeys, WhatThreeDimensionsCannotRunYetIsRefusedNamingTheKeySetLast) {
   const InputError outside =
       error_in("[geometry]\ndimension = 3\nsection = \"round\"\nexit_half_width = 9\n",
                "geometry.exit_half_width", 4);
-  EXPECT_TRUE(has_text(outside.message, "not inside the billet's radius 10")) << outside.message;
+  EXPECT_TRUE(solid_hint_has_text(outside.message, "not inside the billet's radius 10"))
+      << outside.message;
   error_in("[geometry]\ndimension = 3\nsection = \"round\"\nexit_half_width = 8\n"
            "exit_half_height = 6\n",
            "geometry.exit_half_height", 5); // radius 10 = R: no margin
@@ -118,7 +120,7 @@ TEST(SolidKeys, WhatThreeDimensionsCannotRunYetIsRefusedNamingTheKeySetLast) {
   const InputError gmsh = error_in("[geometry]\ndimension = 3\nsection = \"round\"\ndie = "
                                    "\"wedge\"\n[mesh]\nsource = \"gmsh\"\n",
                                    "mesh.source", 6);
-  EXPECT_TRUE(has_text(gmsh.hint, "mesh.source = \"structured\"")) << gmsh.hint;
+  EXPECT_TRUE(solid_hint_has_text(gmsh.hint, "mesh.source = \"structured\"")) << gmsh.hint;
   error_in("[geometry]\ndimension = 3\nsection = \"rectangle\"\ndie = \"wedge\"\n"
            "entry_half_width = 5\nexit_half_width = 2\n[mesh]\nsource = \"gmsh\"\n",
            "mesh.source", 8);
@@ -134,7 +136,7 @@ TEST(SolidKeys, WhatThreeDimensionsCannotRunYetIsRefusedNamingTheKeySetLast) {
       "[geometry]\ndimension = 3\n[verification]\nsolution = \"smooth\"\n[mesh]\nsize = 0.25\n",
       "solid.toml", {}));
   const InputError four = error_in("[geometry]\ndimension = 4\n", "geometry.dimension", 2);
-  EXPECT_TRUE(has_text(four.hint, "2 ≤ value ≤ 3")) << four.hint;
+  EXPECT_TRUE(solid_hint_has_text(four.hint, "2 ≤ value ≤ 3")) << four.hint;
 }
 
 } // namespace

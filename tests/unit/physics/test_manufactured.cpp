@@ -9,12 +9,13 @@
 namespace formflow::physics {
 namespace {
 
-const Point<2> sample_points[] = {Point<2>(0.3, 0.7), Point<2>(0.81, 0.12), Point<2>(0.55, 0.45)};
+const Point<2> plane_sample_points[] = {Point<2>(0.3, 0.7), Point<2>(0.81, 0.12),
+                                        Point<2>(0.55, 0.45)};
 
 TEST(ManufacturedField, IsDivergenceFreeWithConsistentDerivatives) {
   const StreamFunctionField field = StreamFunctionField::of(ManufacturedSolution::Smooth);
   const Real step = 1e-6;
-  for (const Point<2>& x : sample_points) {
+  for (const Point<2>& x : plane_sample_points) {
     const Tensor2<2> gradient = field.gradient(x);
     EXPECT_NEAR(gradient.trace(), 0.0, 1e-13);
     const auto hessian = field.hessians(x);
@@ -47,7 +48,7 @@ TEST(ManufacturedField, BodyForceIsMinusDivergenceOfViscousStress) {
   constant.as<physics::PiecewisePower>().alpha = 1.0; // σ_p = A ε̄̇: constant viscosity A
   const Real step = 1e-5;
   for (const FlowLaw& law : {nonlinear, strongly_nonlinear, constant})
-    for (const Point<2>& x : sample_points) {
+    for (const Point<2>& x : plane_sample_points) {
       Point<2> divergence = Point<2>::Zero();
       for (int k = 0; k < 2; ++k) {
         const Point<2> dx = step * Point<2>::Unit(k);
@@ -66,7 +67,7 @@ TEST(ManufacturedField, BodyForceIsMinusDivergenceOfViscousStress) {
 TEST(ManufacturedField, ExtensionFieldIsLinearWithZeroBodyForce) {
   const StreamFunctionField field = StreamFunctionField::of(ManufacturedSolution::Extension);
   const FlowLaw law;
-  for (const Point<2>& x : sample_points) {
+  for (const Point<2>& x : plane_sample_points) {
     EXPECT_NEAR(field.velocity(x).x(), x.x(), 1e-15);
     EXPECT_NEAR(field.velocity(x).y(), -x.y(), 1e-15);
     EXPECT_NEAR(manufactured_body_force(law, field, x).norm(), 0.0, 1e-12);

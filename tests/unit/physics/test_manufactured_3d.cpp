@@ -9,13 +9,13 @@
 namespace formflow::physics {
 namespace {
 
-const Point<3> sample_points[] = {Point<3>(0.3, 0.7, 0.2), Point<3>(0.81, 0.12, 0.66),
-                                  Point<3>(0.55, 0.45, 0.93)};
+const Point<3> solid_sample_points[] = {Point<3>(0.3, 0.7, 0.2), Point<3>(0.81, 0.12, 0.66),
+                                        Point<3>(0.55, 0.45, 0.93)};
 
 TEST(ManufacturedField3d, IsDivergenceFreeWithConsistentDerivatives) {
   const VectorPotentialField field = VectorPotentialField::of(ManufacturedSolution::Smooth);
   const Real step = 1e-6;
-  for (const Point<3>& x : sample_points) {
+  for (const Point<3>& x : solid_sample_points) {
     const Tensor2<3> gradient = field.gradient(x);
     EXPECT_NEAR(gradient.trace(), 0.0, 1e-13);
     const auto hessian = field.hessians(x);
@@ -47,7 +47,7 @@ TEST(ManufacturedField3d, BodyForceIsMinusDivergenceOfViscousStress) {
   strongly_nonlinear.as<physics::PiecewisePower>().alpha = 0.2;
   const Real step = 1e-5;
   for (const FlowLaw& law : {nonlinear, strongly_nonlinear})
-    for (const Point<3>& x : sample_points) {
+    for (const Point<3>& x : solid_sample_points) {
       Point<3> divergence = Point<3>::Zero();
       for (int k = 0; k < 3; ++k) {
         const Point<3> dx = step * Point<3>::Unit(k);
