@@ -8,7 +8,8 @@
 # each with its own default friction, d = 1e-3 (default) and d = 0, δ = 1e-4.
 # Velocity block: one GAMG V-cycle with the rigid-body near-null space, or one
 # BoomerAMG V-cycle (the default). Counts only: they do not depend on the machine's load.
-# Usage: bench/petsc_discontinuous_saddle_counts.sh [BUILD_DIR] [VARIANTS] [d values]
+# Usage: bench/petsc_discontinuous_saddle_counts.sh [BUILD_DIR] [VARIANTS] [d values] [--set ...]
+#   (arguments after the third go to every run, e.g. --set geometry.die=wedge)
 #   (defaults: build, "gamg hypre", "1e-3 0"); PLANE_SIZES and SLAB_SIZES (default
 #   "2.5 1.25 0.625") and ROUND_SIZES (default "0.5 0.25 0.125") set each geometry's
 #   mesh sizes, "" leaves it out. Since session 10 the Γ3 nodes' velocity dofs are
@@ -18,6 +19,7 @@ cd "$(dirname "$0")/.."
 binary=${1:-build}/formflow
 variants=${2:-gamg hypre}
 penalties=${3:-1e-3 0}
+extra=("${@:4}")
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 declare -A options=(
@@ -47,7 +49,8 @@ PY
 }
 for variant in $variants; do
   for d in $penalties; do
-    run=("${saddle[@]}" --set penalty.d=$d --set "solver.petsc_options=${options[$variant]}")
+    run=("${saddle[@]}" --set penalty.d=$d --set "solver.petsc_options=${options[$variant]}"
+         "${extra[@]}")
     for size in ${PLANE_SIZES-2.5 1.25 0.625}; do
       report "$variant d=$d 2D h=$size" "${run[@]}" --set mesh.size=$size
     done
