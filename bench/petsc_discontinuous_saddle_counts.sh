@@ -8,14 +8,18 @@
 # each with its own default friction, d = 1e-3 (default) and d = 0, δ = 1e-4.
 # Velocity block: one GAMG V-cycle with the rigid-body near-null space, or one
 # BoomerAMG V-cycle (the default). Counts only: they do not depend on the machine's load.
-# Usage: bench/petsc_discontinuous_saddle_counts.sh [BUILD_DIR] [VARIANTS] [d values]
-#   (defaults: build, "gamg hypre", "1e-3 0"); ROUND_SIZES (default "0.5 0.25 0.125")
-#   sets the round quarter's mesh sizes, "" leaves it out.
+# Usage: bench/petsc_discontinuous_saddle_counts.sh [BUILD_DIR] [VARIANTS] [d values] [--set ...]
+#   (arguments after the third go to every run, e.g. --set geometry.die=wedge)
+#   (defaults: build, "gamg hypre", "1e-3 0"); PLANE_SIZES and SLAB_SIZES (default
+#   "2.5 1.25 0.625") and ROUND_SIZES (default "0.5 0.25 0.125") set each geometry's
+#   mesh sizes, "" leaves it out. Since session 10 the Γ3 nodes' velocity dofs are
+#   solved in their normal–tangent frame (assembly/contact_frames.hpp).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 binary=${1:-build}/formflow
 variants=${2:-gamg hypre}
 penalties=${3:-1e-3 0}
+extra=("${@:4}")
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 declare -A options=(
@@ -45,11 +49,12 @@ PY
 }
 for variant in $variants; do
   for d in $penalties; do
-    run=("${saddle[@]}" --set penalty.d=$d --set "solver.petsc_options=${options[$variant]}")
-    for size in 2.5 1.25 0.625; do
+    run=("${saddle[@]}" --set penalty.d=$d --set "solver.petsc_options=${options[$variant]}"
+         "${extra[@]}")
+    for size in ${PLANE_SIZES-2.5 1.25 0.625}; do
       report "$variant d=$d 2D h=$size" "${run[@]}" --set mesh.size=$size
     done
-    for size in 2.5 1.25 0.625; do
+    for size in ${SLAB_SIZES-2.5 1.25 0.625}; do
       report "$variant d=$d 3D slab h=$size" cases/slab-extrusion-3d.toml "${run[@]}" \
         --set mesh.size=$size
     done

@@ -15,7 +15,7 @@ std::string format_real(Real value) {
   return text;
 }
 
-std::string quoted(std::string_view text) {
+std::string toml_quoted(std::string_view text) {
   std::string result = "\"";
   for (const char c : text) {
     if (c == '"' || c == '\\') result += '\\';
@@ -31,7 +31,8 @@ std::string bound_text(const Bound& bound, bool lower) {
 
 std::string choices_text(const CaseKey& key) {
   std::string text;
-  for (std::string_view choice : key.choices) text += (text.empty() ? "" : ", ") + quoted(choice);
+  for (std::string_view choice : key.choices)
+    text += (text.empty() ? "" : ", ") + toml_quoted(choice);
   return text;
 }
 
@@ -75,7 +76,7 @@ std::string default_case_file() {
 std::string format_key_value(const KeyValue& value) {
   if (const auto* real = std::get_if<Real>(&value)) return format_real(*real);
   if (const auto* integer = std::get_if<std::int64_t>(&value)) return fmt::format("{}", *integer);
-  if (const auto* text = std::get_if<std::string>(&value)) return quoted(*text);
+  if (const auto* text = std::get_if<std::string>(&value)) return toml_quoted(*text);
   if (const auto* points = std::get_if<KeyPoints>(&value)) {
     std::string list = "[";
     for (const auto& point : *points)
@@ -87,12 +88,12 @@ std::string format_key_value(const KeyValue& value) {
     // A TOML inline table; keys quoted, so any physical name is valid.
     std::string table = "{";
     for (const auto& [entry, text] : *map)
-      table += (table.size() > 1 ? ", " : "") + quoted(entry) + " = " + quoted(text);
+      table += (table.size() > 1 ? ", " : "") + toml_quoted(entry) + " = " + toml_quoted(text);
     return table + "}";
   }
   std::string text = "[";
   for (const std::string& entry : std::get<std::vector<std::string>>(value))
-    text += (text.size() > 1 ? ", " : "") + quoted(entry);
+    text += (text.size() > 1 ? ", " : "") + toml_quoted(entry);
   return text + "]";
 }
 

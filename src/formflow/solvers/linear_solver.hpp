@@ -2,6 +2,7 @@
 // Sparse SPD direct solver interface: analyse the pattern once, factorise per iteration.
 #pragma once
 
+#include "formflow/assembly/local_frame.hpp"
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/solvers/linear_solver_kind.hpp"
 
@@ -66,6 +67,15 @@ public:
   virtual void set_schur_preconditioner(const assembly::SparseMatrix& matrix, Index cell_block) {
     static_cast<void>(matrix);
     static_cast<void>(cell_block);
+  }
+  /// Orthogonal changes of basis of groups of unknowns (the Γ3 nodes' velocity dofs into
+  /// their normal–tangent frame, assembly::contact_frames) that a back-end may solve in:
+  /// Qᵀ K Q y = Qᵀ b, x = Q y — the same solution, the same condition number, but a
+  /// stiff coupling along an inclined direction becomes a diagonal entry. Rows index the
+  /// matrices to come; call before analyze. A direct back-end has no use for it; PETSc's
+  /// iterative path (a pointwise smoother, algebraic multigrid) needs it.
+  virtual void set_local_frames(std::vector<assembly::LocalFrame> frames) {
+    static_cast<void>(frames);
   }
 };
 

@@ -3,6 +3,7 @@
 // discontinuous one kept as a saddle point).
 #include "formflow/solvers/saddle_point_iteration.hpp"
 
+#include "formflow/assembly/contact_frames.hpp"
 #include "formflow/assembly/rigid_body_modes.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/uzawa_update.hpp"
@@ -23,6 +24,10 @@ SaddlePointSolve<dim>::SaddlePointSolve(FormingNonlinearProblem<dim>& problem,
   linear.solver().set_fields(
       saddle_->n_velocity(),
       assembly::rigid_body_modes(forming.discretisation().mesh(), forming.plan()));
+  // The contact penalty (1/d_N = 10⁶ by default) on an inclined die couples the
+  // Cartesian components of every Γ3 node; in the node's normal–tangent frame it is one
+  // diagonal entry, which AMG's smoothers resolve (docs/petsc.md).
+  linear.solver().set_local_frames(assembly::contact_frames(forming.discretisation()));
 }
 
 /// One secant step at the lagged velocity `w` (null: constant viscosity):

@@ -105,7 +105,13 @@ public:
     } else {
       PetscScalar* values = nullptr;
       VecGetArray(rhs_, &values);
-      std::copy(rhs.data(), rhs.data() + n, values);
+      if (frames_.empty()) {
+        std::copy(rhs.data(), rhs.data() + n, values);
+      } else { // Qᵀ b: the system is Qᵀ K Q y = Qᵀ b (set_local_frames)
+        VectorX rotated = rhs;
+        assembly::to_frames(frames_, rotated);
+        std::copy(rotated.data(), rotated.data() + n, values);
+      }
       VecRestoreArray(rhs_, &values);
     }
     if (KSPSolve(ksp_, rhs_, solution_) != 0) return false;
@@ -131,6 +137,7 @@ public:
     VecGetArrayRead(solution_, &result);
     std::copy(result, result + n, solution.data());
     VecRestoreArrayRead(solution_, &result);
+    assembly::from_frames(frames_, solution); // x = Q y
     return true;
   }
 
@@ -157,6 +164,12 @@ public:
     petsc::ErrorCapture capture;
     schur_block_ = cell_block;
     petsc::copy_schur_matrix(matrix, cell_block, &schur_matrix_);
+  }
+
+  void set_local_frames(std::vector<assembly::LocalFrame> frames) override {
+    if (distributed_) return; // the saddle point, their one user, is refused on several ranks
+    frames_ = std::move(frames);
+    frame_matrix_ = {};
   }
 
 private:
@@ -205,9 +218,12 @@ private:
       for (std::size_t k = 0; k < modes.size(); ++k) {
         FF_ASSERT(near_null_space_[k].size() == n_first_, "one mode entry per velocity dof");
         VecCreateSeq(PETSC_COMM_SELF, n_first, &modes[k]);
+        // The modes in the unknowns PETSc solves for: y = Qᵀ x.
+        VectorX mode = near_null_space_[k];
+        assembly::to_frames(frames_, mode);
         PetscScalar* values = nullptr;
         VecGetArray(modes[k], &values);
-        std::copy(near_null_space_[k].data(), near_null_space_[k].data() + n_first, values);
+        std::copy(mode.data(), mode.data() + n_first, values);
         VecRestoreArray(modes[k], &values);
       }
       // MatNullSpaceCreate wants an orthonormal basis.
@@ -224,6 +240,17 @@ private:
     PCFieldSplitSetIS(preconditioner, "p", fields_[1]);
     if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
     return true;
+  }
+
+  /// Qᵀ K Q for the full matrix K (set_local_frames; K itself without frames). Q's
+  /// pattern is fixed and the product keeps every structural entry, so the pattern
+  /// stays the same from one factorisation to the next.
+  RowMatrix in_frames(const assembly::SparseMatrix& full) {
+    if (frames_.empty()) return RowMatrix(full);
+    if (frame_matrix_.rows() != full.rows())
+      frame_matrix_ = assembly::frame_matrix(frames_, full.rows());
+    const assembly::SparseMatrix transposed = frame_matrix_.transpose();
+    return RowMatrix(transposed * full * frame_matrix_);
   }
 
   /// Modified Gram–Schmidt, in place.
@@ -251,9 +278,9 @@ private:
       const assembly::SparseMatrix strict = matrix.triangularView<Eigen::StrictlyLower>();
       assembly::SparseMatrix full = matrix;
       full += assembly::SparseMatrix(strict.transpose());
-      rows = full;
+      rows = in_frames(full);
     } else {
-      rows = matrix;
+      rows = in_frames(matrix);
     }
     rows.makeCompressed();
     const auto n = static_cast<PetscInt>(rows.rows());
@@ -422,12 +449,14 @@ private:
   std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
   VecScatter to_all_ = nullptr;       ///< distributed: the solution to every rank
   Vec all_ = nullptr;
-  Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)
-  std::vector<VectorX> near_null_space_; ///< the velocity block's rigid-body modes
-  IS fields_[2] = {nullptr, nullptr};    ///< fieldsplit's "u" and "p"
-  Mat schur_matrix_ = nullptr;           ///< the Schur complement's preconditioning matrix
-  Index schur_block_ = 0;                ///< its cell block size (0: not block diagonal)
-  petsc::DefaultOptions defaults_;       ///< the saddle-point defaults in the database
+  Index n_first_ = 0;                        ///< velocity dofs of a saddle point (set_fields)
+  std::vector<VectorX> near_null_space_;     ///< the velocity block's rigid-body modes
+  IS fields_[2] = {nullptr, nullptr};        ///< fieldsplit's "u" and "p"
+  Mat schur_matrix_ = nullptr;               ///< the Schur complement's preconditioning matrix
+  Index schur_block_ = 0;                    ///< its cell block size (0: not block diagonal)
+  std::vector<assembly::LocalFrame> frames_; ///< PETSc solves for y, x = Q y (set_local_frames)
+  assembly::SparseMatrix frame_matrix_;      ///< Q, made at the first copy
+  petsc::DefaultOptions defaults_;           ///< the saddle-point defaults in the database
   long iterations_ = 0;
   bool checked_unused_ = false;
 };
