@@ -2,7 +2,9 @@
 # Run at build time (POST_BUILD of a test executable) by formflow_gtest_suites(): lists
 # the executable's GoogleTest cases and writes a ctest include file with one test per
 # test *suite* (`--gtest_filter=Suite.*`), named PREFIX.Suite (two folders may have a
-# suite of the same name). Inputs: EXECUTABLE, OUTPUT, PREFIX, LABEL, TIMEOUT.
+# suite of the same name). Inputs: EXECUTABLE, OUTPUT, PREFIX, LABEL. No
+# timeout of its own: the caller's ctest --timeout applies (./test 900 s, the sanitizers'
+# 1800 s).
 execute_process(COMMAND "${EXECUTABLE}" --gtest_list_tests
                 OUTPUT_VARIABLE listing RESULT_VARIABLE status TIMEOUT 60)
 if(NOT status EQUAL 0)
@@ -19,8 +21,7 @@ macro(flush_suite)
   if(NOT suite STREQUAL "")
     string(APPEND script
       "add_test([=[${PREFIX}.${suite}]=] [=[${EXECUTABLE}]=] [=[--gtest_filter=${suite}.*]=])\n"
-      "set_tests_properties([=[${PREFIX}.${suite}]=] PROPERTIES LABELS [=[${LABEL}]=] COST ${count}"
-      " TIMEOUT ${TIMEOUT})\n")
+      "set_tests_properties([=[${PREFIX}.${suite}]=] PROPERTIES LABELS [=[${LABEL}]=] COST ${count})\n")
   endif()
 endmacro()
 foreach(line IN LISTS lines)
