@@ -180,6 +180,7 @@ json adapt_json(const Case& case_, const post::AdaptRecord& record) {
                       {"dofs", cycle.dofs},
                       {"load", cycle.load},
                       {"estimate", cycle.estimate ? json(*cycle.estimate) : json(nullptr)},
+                      {"estimate_predicted", cycle.estimate_predicted},
                       {"relative_estimate", cycle.estimate && cycle.load != 0
                                                 ? json(*cycle.estimate / std::abs(cycle.load))
                                                 : json(nullptr)},
