@@ -65,11 +65,13 @@ TEST(AdaptiveRun, CyclesAreRecordedAndTheRefinedMeshIsBetter) {
 }
 
 TEST(AdaptiveRun, IntermediateCyclesPredictAndTheLastOneCarriesTheFullEstimate) {
+  // solver.load_error = "linearized" in an adaptive run: cheap intermediate cycles.
   // Three cycles, the target out of reach: cycle 1 marks with the cheap (linearised)
   // estimate scaled by cycle 0's settled/linearised ratio; cycle 2 ends the run
   // (max_cycles) and its error bar, the result's, is the full (settled) estimate.
   io::Case case_ = two_cycles();
   case_.adapt.max_cycles = 3;
+  case_.solver.load_error = solvers::LoadErrorMethod::Linearized; // cheap cycles asked for
   const post::Results results = app::simulate(case_).results;
   ASSERT_TRUE(results.converged());
   const post::AdaptRecord& record = results.adapt;
