@@ -7,6 +7,7 @@
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/post/adaptivity.hpp"
+#include "formflow/post/load_error_estimate.hpp"
 #if FORMFLOW_WITH_GMSH
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_sized_channel.hpp"
@@ -29,13 +30,12 @@ Real seconds_since(Clock::time_point start) {
 }
 
 /// |p_{h/2} − p|, the refined mesh's own error by the same argument as the cycle's
-/// (post::load_error_bound): the tail beyond p_{h/2}, |p_{h/2} − p_h| q/(1 − q), plus
-/// the penalties' offset. std::nullopt without a settled refined solution or a
-/// penalty run (the cycle's estimate skipped it: its tail alone is above target).
+/// (post::load_error_bound): the tail beyond p_{h/2}, F_s |p_{h/2} − p_h| q/(1 − q)
+/// (post::tail_beyond_refined), plus the penalties' offset. std::nullopt without a settled refined
+/// solution or a penalty run (the cycle's estimate skipped it: its tail alone is above target).
 std::optional<Real> refined_mesh_error(const post::LoadErrorEstimate& estimate, Real change) {
   if (estimate.refined_velocity.size() == 0 || !estimate.penalty_change) return std::nullopt;
-  return std::abs(change) * estimate.ratio / (1.0 - estimate.ratio) +
-         std::abs(*estimate.penalty_change);
+  return post::tail_beyond_refined(change, estimate.ratio) + std::abs(*estimate.penalty_change);
 }
 
 /// The run on the estimate's refined mesh of the cycle that just ran (`simulation`),
@@ -147,10 +147,10 @@ bool predicts_target(const CheapEstimateScale& scale, const post::Results& resul
                      post::AdaptCycle& entry) {
   const Real change = scale.settled_per_linearised * results.load_error.enriched_change;
   const Real q = scale.ratio;
-  entry.estimate = std::abs(change) / (1.0 - q) + scale.regularisations;
+  entry.estimate = post::discretisation_tail(change, q) + scale.regularisations;
   entry.estimate_predicted = true;
   const Real load = results.pressure.ram_reaction;
-  const Real refined_error = std::abs(change) * q / (1.0 - q) + scale.regularisations;
+  const Real refined_error = post::tail_beyond_refined(change, q) + scale.regularisations;
   return *entry.estimate <= target * std::abs(load) ||
          refined_error <= target * std::abs(load + change);
 }

@@ -125,12 +125,12 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
     return;
   }
   estimate.ratio = *ratio;
-  estimate.discretisation_error = std::abs(estimate.enriched_change) / (1.0 - *ratio);
+  estimate.discretisation_error = post::discretisation_tail(estimate.enriched_change, *ratio);
   estimate.error = estimate.discretisation_error;
   // An adaptive cycle whose tail from p_{h/2} alone is above the target stops on
   // neither mesh: the penalty run would not change the decision.
   const Real target = case_.adapt.cycle_target * std::abs(load);
-  if (target > 0 && std::abs(estimate.enriched_change) * *ratio / (1.0 - *ratio) > target) return;
+  if (target > 0 && post::tail_beyond_refined(estimate.enriched_change, *ratio) > target) return;
   const std::optional<Real> doubled =
       solved_load(doubled_regularisations(case_), mesh, u, estimate.penalty_newton_iterations);
   if (!doubled) {
