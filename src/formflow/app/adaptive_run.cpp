@@ -7,6 +7,7 @@
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/post/adaptivity.hpp"
+#include "formflow/post/load_error_estimate.hpp"
 #if FORMFLOW_WITH_GMSH
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_sized_channel.hpp"
@@ -29,13 +30,12 @@ Real seconds_since(Clock::time_point start) {
 }
 
 /// |p_{h/2} − p|, the refined mesh's own error by the same argument as the cycle's
-/// (post::load_error_bound): the tail beyond p_{h/2}, |p_{h/2} − p_h| q/(1 − q), plus
-/// the penalties' offset. std::nullopt without a settled refined solution or a
-/// penalty run (the cycle's estimate skipped it: its tail alone is above target).
+/// (post::load_error_bound): the tail beyond p_{h/2}, F_s |p_{h/2} − p_h| q/(1 − q)
+/// (post::tail_beyond_refined), plus the penalties' offset. std::nullopt without a settled refined
+/// solution or a penalty run (the cycle's estimate skipped it: its tail alone is above target).
 std::optional<Real> refined_mesh_error(const post::LoadErrorEstimate& estimate, Real change) {
   if (estimate.refined_velocity.size() == 0 || !estimate.penalty_change) return std::nullopt;
-  return std::abs(change) * estimate.ratio / (1.0 - estimate.ratio) +
-         std::abs(*estimate.penalty_change);
+  return post::tail_beyond_refined(change, estimate.ratio) + std::abs(*estimate.penalty_change);
 }
 
 /// The run on the estimate's refined mesh of the cycle that just ran (`simulation`),
@@ -110,6 +110,79 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   return last;
 }
 
+/// What turns an intermediate cycle's cheap estimate into a prediction of the full
+/// one (docs/error-estimation.md, "Adaptivity", cheap cycles). The linearised change
+/// p_{h/2} − p_h (the adjoint at the prolonged solution, no settle: one factorisation
+/// on the refined mesh instead of 5–9 Newton steps there) misses most of the settled
+/// change for a nearly rate-insensitive law, but by a similar factor from mesh to
+/// mesh; the last full estimate's settled/linearised ratio scales it. The prediction
+/// only decides *when* to pay for the full estimate and marks cells; every stop is
+/// decided by a full estimate.
+struct CheapEstimateScale {
+  Real settled_per_linearised = 0.0; ///< 0: none (every cycle then gets the full estimate)
+  Real ratio = 0.5;                  ///< the tail ratio q of the last full estimate
+  Real regularisations = 0.0;        ///< |p(2ε) − p(ε)| of the last full estimate with one
+  bool calibrated() const { return settled_per_linearised > 0.0; }
+  /// From a full estimate and the linearised change of the same solution.
+  void update(const post::LoadErrorEstimate& full, Real linearised_change) {
+    const Real scale = full.enriched_change / linearised_change;
+    settled_per_linearised = std::isfinite(scale) && scale > 0.0 ? scale : 0.0;
+    ratio = full.ratio;
+    if (full.penalty_change) regularisations = std::abs(*full.penalty_change);
+  }
+};
+
+/// The case of an intermediate cycle: the linearised estimate, indicators only.
+io::Case cheap_cycle_case(const io::Case& run) {
+  io::Case cheap = run;
+  cheap.solver.load_error = solvers::LoadErrorMethod::Linearized;
+  cheap.adapt.indicators_only = true;
+  return cheap;
+}
+
+/// For a cycle that ran with the cheap estimate: its predicted full estimate, and
+/// whether that (or its refined mesh's own error) is within the target, so that the
+/// full estimate must decide. Writes the prediction into `entry`.
+bool predicts_target(const CheapEstimateScale& scale, const post::Results& results, Real target,
+                     post::AdaptCycle& entry) {
+  const Real change = scale.settled_per_linearised * results.load_error.enriched_change;
+  const Real q = scale.ratio;
+  entry.estimate = post::discretisation_tail(change, q) + scale.regularisations;
+  entry.estimate_predicted = true;
+  const Real load = results.pressure.ram_reaction;
+  const Real refined_error = post::tail_beyond_refined(change, q) + scale.regularisations;
+  return *entry.estimate <= target * std::abs(load) ||
+         refined_error <= target * std::abs(load + change);
+}
+
+/// Replaces a cheap cycle's estimate by the full one (`run`'s) on the same solution and
+/// recalibrates `scale` with the pair.
+void estimate_fully(const io::Case& run, Simulation& simulation, CheapEstimateScale& scale) {
+  post::Results& results = simulation.results;
+  const Real linearised_change = results.load_error.enriched_change;
+  results.load_error = load_error_on<2>(run, simulation.plane_mesh(), results.fields.velocity,
+                                        false, results.timing);
+  results.fields.cell_load_error = results.load_error.cell_indicators;
+  if (results.load_error.error) scale.update(results.load_error, linearised_change);
+}
+
+/// Cycle 0 ran with the full estimate: its linearised change on the same solution
+/// calibrates the cheap cycles that follow.
+CheapEstimateScale calibrate_on_first_cycle(const io::Case& cheap, const Simulation& simulation) {
+  CheapEstimateScale scale;
+  const post::Results& results = simulation.results;
+  if (!results.converged() || !results.load_error.error) return scale;
+  PhaseTimes times; // its time is in the cycle's total
+  const post::LoadErrorEstimate linearised = std::visit(
+      [&](const auto& mesh) {
+        return load_error_on(cheap, mesh, results.fields.velocity, true, times);
+      },
+      simulation.mesh);
+  if (linearised.cell_indicators.size() > 0)
+    scale.update(results.load_error, linearised.enriched_change);
+  return scale;
+}
+
 } // namespace
 
 Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_iteration) {
@@ -118,12 +191,20 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   io::Case run = case_;
   run.adapt.target_error = 0; // each cycle is a plain run
   run.adapt.cycle_target = case_.adapt.target_error;
-  if (run.solver.load_error == solvers::LoadErrorMethod::None)
-    run.solver.load_error = solvers::LoadErrorMethod::Refined; // the indicators drive it
+  // The stops are decided by the full ("refined") estimate. solver.load_error =
+  // "linearized" asks for cheap intermediate cycles (step 2c of docs/error-estimation.md:
+  // measured faster on the sticking ram, much slower on Hill's wedge, so not the default).
+  const bool cheap_cycles = case_.solver.load_error == solvers::LoadErrorMethod::Linearized;
+  run.solver.load_error = solvers::LoadErrorMethod::Refined;
   const post::AdaptSettings& adapt = case_.adapt;
   post::AdaptRecord record;
   auto cycle_start = Clock::now();
   Simulation simulation = simulate(run, on_iteration); // cycle 0: the case's mesh
+  // Later cycles mark with the cheap estimate; the full one only where it may stop.
+  const io::Case cheap = cheap_cycle_case(run);
+  CheapEstimateScale scale =
+      cheap_cycles ? calibrate_on_first_cycle(cheap, simulation) : CheapEstimateScale{};
+  bool cheap_cycle = false;
   for (int cycle = 0;; ++cycle) {
     const post::Results& results = simulation.results;
     post::AdaptCycle entry;
@@ -145,19 +226,35 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
       finish("no error estimate: " + results.load_error.unavailable);
       break;
     }
-    entry.estimate = *results.load_error.error;
-    if (*entry.estimate <= adapt.target_error * std::abs(entry.load)) {
-      finish("target reached", true);
-      break;
-    }
-    // The estimate's refined mesh, whose settled solution is at hand, may already be
-    // accurate enough: solve there to δ and end on it, its load as the result.
-    if (std::optional<Simulation> last = end_on_refined_mesh(
-            run, simulation, cycle == 0, cycle_start, entry, record, on_iteration)) {
-      simulation = std::move(*last);
-      break;
+    // A cheap cycle whose prediction is above the target only marks; one that may stop
+    // (and the last cycle, whatever stops it) gets the full estimate, which decides.
+    bool fully_estimated = !cheap_cycle;
+    const auto estimate_fully_once = [&] {
+      if (!fully_estimated) estimate_fully(run, simulation, scale);
+      fully_estimated = true;
+      entry.estimate = results.load_error.error;
+      entry.estimate_predicted = false;
+    };
+    if (!cheap_cycle || predicts_target(scale, results, adapt.target_error, entry)) {
+      estimate_fully_once();
+      if (!results.load_error.error) {
+        finish("no error estimate: " + results.load_error.unavailable);
+        break;
+      }
+      if (*entry.estimate <= adapt.target_error * std::abs(entry.load)) {
+        finish("target reached", true);
+        break;
+      }
+      // The estimate's refined mesh, whose settled solution is at hand, may already be
+      // accurate enough: solve there to δ and end on it, its load as the result.
+      if (std::optional<Simulation> last = end_on_refined_mesh(
+              run, simulation, cycle == 0, cycle_start, entry, record, on_iteration)) {
+        simulation = std::move(*last);
+        break;
+      }
     }
     if (cycle + 1 >= adapt.max_cycles) {
+      estimate_fully_once(); // the result's error bar is the full estimate
       finish("max_cycles");
       break;
     }
@@ -172,6 +269,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     const Real growth =
         1.0 + 3.0 * static_cast<Real>(entry.marked) / std::max<Index>(1, entry.cells);
     if (static_cast<Real>(entry.dofs) * growth > static_cast<Real>(adapt.max_dofs)) {
+      estimate_fully_once();
       finish("max_dofs");
       break;
     }
@@ -185,7 +283,8 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     entry.seconds = seconds_since(cycle_start);
     record.cycles.push_back(entry);
     cycle_start = Clock::now();
-    simulation = simulate_from<2>(run, std::move(next), start, on_iteration);
+    cheap_cycle = scale.calibrated();
+    simulation = simulate_from<2>(cheap_cycle ? cheap : run, std::move(next), start, on_iteration);
 #else
     finish("adaptivity needs Gmsh (FORMFLOW_WITH_GMSH=OFF)");
     break;

@@ -175,7 +175,9 @@ int run_case(const Options& options) {
       const post::AdaptCycle& cycle = results.adapt.cycles[k];
       fmt::print("adapt cycle {}: {} cells, {} dofs, p = {:.5f}{}, {:.1f} s{}\n", k, cycle.cells,
                  cycle.dofs, cycle.load,
-                 cycle.estimate ? fmt::format(" ± {:.5f}", *cycle.estimate) : std::string(),
+                 cycle.estimate ? fmt::format(" ± {:.5f}{}", *cycle.estimate,
+                                              cycle.estimate_predicted ? " (predicted)" : "")
+                                : std::string(),
                  cycle.seconds, cycle.refined_mesh ? " (the previous mesh split)" : "");
     }
     fmt::print("adapt: {} ({} cycles; target {:g} of the load)\n", results.adapt.stop,

@@ -97,6 +97,7 @@ template <int dim>
 void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
                        const VectorX& u, bool mesh_from_case, post::LoadErrorEstimate& estimate,
                        PhaseTimes& times) {
+  if (case_.adapt.indicators_only) return; // an adaptive run's marking-only cycle
   ScopedTimer timer(times, "error estimate");
   const Real load = load_at(problem, u);
   const mesh::Mesh<dim>& mesh = problem.mesh();
@@ -124,12 +125,12 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
     return;
   }
   estimate.ratio = *ratio;
-  estimate.discretisation_error = std::abs(estimate.enriched_change) / (1.0 - *ratio);
+  estimate.discretisation_error = post::discretisation_tail(estimate.enriched_change, *ratio);
   estimate.error = estimate.discretisation_error;
   // An adaptive cycle whose tail from p_{h/2} alone is above the target stops on
   // neither mesh: the penalty run would not change the decision.
   const Real target = case_.adapt.cycle_target * std::abs(load);
-  if (target > 0 && std::abs(estimate.enriched_change) * *ratio / (1.0 - *ratio) > target) return;
+  if (target > 0 && post::tail_beyond_refined(estimate.enriched_change, *ratio) > target) return;
   const std::optional<Real> doubled =
       solved_load(doubled_regularisations(case_), mesh, u, estimate.penalty_newton_iterations);
   if (!doubled) {
@@ -204,6 +205,19 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
   return estimate;
 }
 
+template <int dim>
+post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<dim>& mesh,
+                                      const VectorX& u, bool mesh_from_case, PhaseTimes& times) {
+  assembly::FormingProblem<dim> problem(mesh, problem_settings(case_));
+  std::unique_ptr<assembly::ConstraintMultipliers<dim>> pressure;
+  if (case_.formulation.type == assembly::FormulationType::Mixed) {
+    pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
+        mesh, case_.penalty, case_.formulation, problem.full_rule(), problem.n_contact_points());
+    problem.attach_multipliers(pressure.get());
+  }
+  return load_error_of(case_, problem, u, mesh_from_case, true, times);
+}
+
 template mesh::RefinedMesh<2> estimate_mesh<2>(const io::Case&, const mesh::Mesh<2>&, bool);
 template mesh::RefinedMesh<3> estimate_mesh<3>(const io::Case&, const mesh::Mesh<3>&, bool);
 template post::LoadErrorEstimate load_error_of<2>(const io::Case&,
@@ -212,5 +226,9 @@ template post::LoadErrorEstimate load_error_of<2>(const io::Case&,
 template post::LoadErrorEstimate load_error_of<3>(const io::Case&,
                                                   const assembly::FormingProblem<3>&,
                                                   const VectorX&, bool, bool, PhaseTimes&);
+template post::LoadErrorEstimate load_error_on<2>(const io::Case&, const mesh::Mesh<2>&,
+                                                  const VectorX&, bool, PhaseTimes&);
+template post::LoadErrorEstimate load_error_on<3>(const io::Case&, const mesh::Mesh<3>&,
+                                                  const VectorX&, bool, PhaseTimes&);
 
 } // namespace formflow::app

@@ -32,4 +32,10 @@ post::LoadErrorEstimate
 load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,
               bool mesh_from_case, bool converged, PhaseTimes& times);
 
+/// load_error_of for a converged solution `u` of `case_` on `mesh`, the problem built
+/// again (an adaptive run asks the full estimate of a cycle that ran with the cheap one).
+template <int dim>
+post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<dim>& mesh,
+                                      const VectorX& u, bool mesh_from_case, PhaseTimes& times);
+
 } // namespace formflow::app

@@ -55,7 +55,8 @@ json pressure_json(const Case& case_, const post::Results& results) {
   }
   out["error_estimate"] = {
       {"method", "adjoint of the reaction on the mesh refined once (dual-weighted residual), "
-                 "its geometric tail, plus the doubled penalties' offset"},
+                 "its geometric tail times the safety factor, plus the doubled penalties' "
+                 "offset"},
       {"computed", estimate.error.has_value()},
       {"unavailable", estimate.error ? json(nullptr) : json(estimate.unavailable)},
       {"refined_dofs", estimate.enriched_dofs},
@@ -69,7 +70,8 @@ json pressure_json(const Case& case_, const post::Results& results) {
        estimate.error && estimate.penalty_change ? json(*estimate.penalty_change) : json(nullptr)},
       {"of_refined_mesh", estimate.of_refined_mesh},
       {"penalty_newton_iterations", estimate.penalty_newton_iterations},
-      {"assumed_order", post::assumed_load_error_order}};
+      {"assumed_order", post::assumed_load_error_order},
+      {"safety_factor", post::grid_convergence_safety_factor}};
   return out;
 }
 
@@ -180,6 +182,7 @@ json adapt_json(const Case& case_, const post::AdaptRecord& record) {
                       {"dofs", cycle.dofs},
                       {"load", cycle.load},
                       {"estimate", cycle.estimate ? json(*cycle.estimate) : json(nullptr)},
+                      {"estimate_predicted", cycle.estimate_predicted},
                       {"relative_estimate", cycle.estimate && cycle.load != 0
                                                 ? json(*cycle.estimate / std::abs(cycle.load))
                                                 : json(nullptr)},

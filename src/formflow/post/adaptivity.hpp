@@ -22,6 +22,10 @@ struct AdaptSettings {
   /// Not a key: inside an adaptive run, the target its cycles' estimates are held to
   /// (the estimate skips its penalty run while its discretisation part alone exceeds it).
   Real cycle_target = 0.0;
+  /// Not a key: an intermediate cycle's estimate is its indicators and linearised
+  /// change only ("linearized", no third level, no regularisations' solve): what the
+  /// marking needs, one factorisation on the refined mesh (app/adaptive_run.cpp).
+  bool indicators_only = false;
   bool enabled() const { return target_error > 0; }
 };
 
@@ -30,6 +34,10 @@ struct AdaptCycle {
   Index cells = 0, dofs = 0;
   Real load = 0.0;              ///< the ram pressure (drawing: the drawing stress) p_h
   std::optional<Real> estimate; ///< of |p_h − p|; none: not computed (it ends the run)
+  /// True when `estimate` is a prediction, not the bound: the linearised change scaled
+  /// by the ratio settled/linearised of the last full estimate (an intermediate cycle
+  /// that only marked; app/adaptive_run.cpp).
+  bool estimate_predicted = false;
   int newton_iterations = 0;
   Index marked = 0;   ///< cells marked for refinement after this cycle (0 for the last)
   Real seconds = 0.0; ///< wall time of the cycle: solve, estimate, marking, remeshing

@@ -142,7 +142,7 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
   // 4. From the two-level change to the error of p_h (assumed_load_error_order); the
   // caller may observe the ratio on a third level and adds the penalties' part.
   estimate.ratio = std::pow(2.0, -assumed_load_error_order);
-  estimate.discretisation_error = std::abs(estimate.enriched_change) / (1.0 - estimate.ratio);
+  estimate.discretisation_error = discretisation_tail(estimate.enriched_change, estimate.ratio);
   estimate.error = estimate.discretisation_error;
   return estimate;
 }
@@ -154,9 +154,17 @@ std::optional<Real> tail_ratio(std::optional<Real> observed_ratio) {
   return std::max(fastest, *observed_ratio);
 }
 
-Real load_error_bound(Real refined_change, Real ratio, Real penalty_change) {
+Real discretisation_tail(Real refined_change, Real ratio) {
   FF_ASSERT(ratio >= 0.0 && ratio < 1.0, "a contracting tail");
-  return std::abs(refined_change) / (1.0 - ratio) + std::abs(penalty_change);
+  return grid_convergence_safety_factor * std::abs(refined_change) / (1.0 - ratio);
+}
+
+Real tail_beyond_refined(Real refined_change, Real ratio) {
+  return discretisation_tail(refined_change, ratio) * ratio;
+}
+
+Real load_error_bound(Real refined_change, Real ratio, Real penalty_change) {
+  return discretisation_tail(refined_change, ratio) + std::abs(penalty_change);
 }
 
 template <int dim>

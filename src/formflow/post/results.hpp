@@ -137,7 +137,8 @@ struct LoadErrorEstimate {
   std::optional<Real> observed_ratio;
   /// The ratio q used for the tail: max(2^{-r_max}, observed ratio) (post::tail_ratio).
   Real ratio = 0.5;
-  /// |p_{h/2} − p_h| / (1 − q): the discretisation part of `error`.
+  /// F_s |p_{h/2} − p_h| / (1 − q) (post::discretisation_tail): the discretisation
+  /// part of `error`.
   Real discretisation_error = 0.0;
   /// p_h(2ε) − p_h(ε), every regularisation (d, d_N, d_T and the paper's power law's
   /// α) doubled on the same mesh: by the first-order expansion in ε, the estimate of
@@ -150,7 +151,7 @@ struct LoadErrorEstimate {
   /// adaptive run's last step starts there (app/adaptive_run.cpp).
   VectorX refined_velocity;
   /// True when this estimate is of the refined mesh's load p_{h/2} (an adaptive run
-  /// that ended on it): error = |p_{h/2} − p_h| q/(1 − q) + |penalty_change|.
+  /// that ended on it): error = F_s |p_{h/2} − p_h| q/(1 − q) + |penalty_change|.
   bool of_refined_mesh = false;
   /// Per cell of the mesh that ran, its share of `enriched_change` (signed; the
   /// entries sum to it): the local error indicator. Empty when not computed.
