@@ -44,6 +44,20 @@ template <int dim> Real load_at(const assembly::FormingProblem<dim>& problem, co
   return problem.driven_force(force) / problem.driven_height();
 }
 
+/// The mixed formulation's condensed pressure (and contact multipliers) attached to
+/// `problem`; null for the penalty formulation. Owned by the caller, who keeps it alive
+/// as long as `problem`.
+template <int dim>
+std::unique_ptr<assembly::ConstraintMultipliers<dim>>
+attached_pressure_multipliers(const io::Case& case_, const mesh::Mesh<dim>& mesh,
+                              assembly::FormingProblem<dim>& problem) {
+  if (case_.formulation.type != assembly::FormulationType::Mixed) return nullptr;
+  auto pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
+      mesh, case_.penalty, case_.formulation, problem.full_rule(), problem.n_contact_points());
+  problem.attach_multipliers(pressure.get());
+  return pressure;
+}
+
 /// A converged Newton solve of `case_` (to its δ) on `mesh` from `start` (a field on
 /// `mesh`; its prescribed values are replaced), and the load there: the third level
 /// and the doubled-penalty run of the estimate. std::nullopt if it did not converge.
@@ -51,12 +65,7 @@ template <int dim>
 std::optional<Real> solved_load(const io::Case& case_, const mesh::Mesh<dim>& mesh, VectorX start,
                                 Index& iterations) {
   assembly::FormingProblem<dim> problem(mesh, problem_settings(case_));
-  std::unique_ptr<assembly::ConstraintMultipliers<dim>> pressure;
-  if (case_.formulation.type == assembly::FormulationType::Mixed) {
-    pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-        mesh, case_.penalty, case_.formulation, problem.full_rule(), problem.n_contact_points());
-    problem.attach_multipliers(pressure.get());
-  }
+  const auto pressure = attached_pressure_multipliers(case_, mesh, problem);
   const assembly::ScatterPlan& plan = problem.plan();
   for (Index dof = 0; dof < plan.n_dofs(); ++dof)
     if (plan.free_index(dof) < 0) start[dof] = problem.constraints().values[dof];
@@ -209,12 +218,7 @@ template <int dim>
 post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<dim>& mesh,
                                       const VectorX& u, bool mesh_from_case, PhaseTimes& times) {
   assembly::FormingProblem<dim> problem(mesh, problem_settings(case_));
-  std::unique_ptr<assembly::ConstraintMultipliers<dim>> pressure;
-  if (case_.formulation.type == assembly::FormulationType::Mixed) {
-    pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-        mesh, case_.penalty, case_.formulation, problem.full_rule(), problem.n_contact_points());
-    problem.attach_multipliers(pressure.get());
-  }
+  const auto pressure = attached_pressure_multipliers(case_, mesh, problem);
   return load_error_of(case_, problem, u, mesh_from_case, true, times);
 }
 
