@@ -65,7 +65,7 @@ def main():
     parser.add_argument("--set", action="append", default=[], help="extra KEY=VALUE overrides")
     args = parser.parse_args()
     print("| case | h | dofs | p_h | estimate | p_h − p | effectivity | p in p_h ± est |"
-          " p_{h/2} − p_h | p_h − p_{2h} | ratio q | tail |Δ|/(1−q) | penalties p(2ε) − p(ε) |"
+          " p_{h/2} − p_h | p_h − p_{2h} (or p_{h/4} − p_{h/2}) | ratio q | tail F_s|Δ|/(1−q) | penalties p(2ε) − p(ε) |"
           " run s | estimate s |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as scratch:
@@ -90,7 +90,10 @@ def main():
                     continue
                 contained = "yes" if abs(error) <= estimate else "no"
                 coarser = info["coarser_change"]
-                coarser = f"{coarser:+.4f}" if coarser is not None else "—"
+                finer = info.get("finer_change")
+                # The third level: 2h where the channel admits it, else h/4.
+                coarser = (f"{coarser:+.4f}" if coarser is not None
+                           else f"(h/4: {finer:+.4f})" if finer is not None else "—")
                 print(f"| {name} | {size:g} | {summary['mesh']['dofs']} | {load:.4f} | "
                       f"{estimate:.4f} | {error:+.4f} | {estimate / abs(error):.2f} | "
                       f"{contained} | {info['refined_change']:+.4f} | {coarser} | "

@@ -63,6 +63,7 @@ json pressure_json(const Case& case_, const post::Results& results) {
       {"refined_newton_iterations", estimate.settle_iterations},
       {"refined_change", estimate.error ? json(estimate.enriched_change) : json(nullptr)},
       {"coarser_change", estimate.coarser_change ? json(*estimate.coarser_change) : json(nullptr)},
+      {"finer_change", estimate.finer_change ? json(*estimate.finer_change) : json(nullptr)},
       {"observed_ratio", estimate.observed_ratio ? json(*estimate.observed_ratio) : json(nullptr)},
       {"tail_ratio", estimate.error ? json(estimate.ratio) : json(nullptr)},
       {"discretisation", estimate.error ? json(estimate.discretisation_error) : json(nullptr)},

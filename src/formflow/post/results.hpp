@@ -134,6 +134,9 @@ struct LoadErrorEstimate {
   /// lengths admit 2h), and the contraction ratio (p_{h/2} − p_h)/(p_h − p_{2h}) it
   /// gives; std::nullopt without that level.
   std::optional<Real> coarser_change;
+  /// Where the channel admits no 2h: p_{h/4} − p_{h/2} from a solve on the mesh
+  /// refined twice, and observed_ratio = (p_{h/4} − p_{h/2})/(p_{h/2} − p_h).
+  std::optional<Real> finer_change;
   std::optional<Real> observed_ratio;
   /// The ratio q used for the tail: max(2^{-r_max}, observed ratio) (post::tail_ratio).
   Real ratio = 0.5;
