@@ -251,6 +251,9 @@ int run_cli(int argc, char** argv) {
   study->add_flag("--rcond", study_options.estimate_condition,
                   "Also estimate CHOLMOD's rcond of K(u) per rung (one extra factorisation)");
   study->add_flag("-q,--quiet", study_options.quiet, "No progress lines");
+  study->add_option("--exact-load", study_options.exact_load,
+                    "The exact load p: load_error_dofs.png shows |p_h - p| against dofs "
+                    "(with the estimates' bars)");
 
   CLI::App* reference = app.add_subcommand(
       "case-reference", "Print the Markdown reference of every case key (docs/case-reference.md)");

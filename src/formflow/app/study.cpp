@@ -2,6 +2,7 @@
 // Ladder of runs over one key: running, differences, orders (planning: app/study_plan.cpp).
 #include "formflow/app/study.hpp"
 
+#include "formflow/app/adaptive_run.hpp"
 #include "formflow/app/simulation.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_keys.hpp"
@@ -46,9 +47,20 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
   FF_ASSERT(key, "plan_study checked the key");
   post::StudyTable table{plan.key, plan.description, {}, std::nullopt, std::nullopt};
   std::vector<Simulation> simulations;
+  // A mesh ladder of a case with [adapt] compares uniform with adaptive refinement:
+  // the rungs are the uniform ladder (no [adapt], the load's estimate kept on), and
+  // one adaptive run starts from the first rung's case (docs/error-estimation.md,
+  // "Convergence picture").
+  const bool against_adaptive = plan.key == "mesh.size" && plan.cases.front().adapt.enabled();
   for (std::size_t k = 0; k < plan.cases.size(); ++k) {
     const auto start = std::chrono::steady_clock::now();
-    Simulation simulation = simulate(plan.cases[k], on_iteration, estimate_condition);
+    io::Case rung_case = plan.cases[k];
+    if (against_adaptive) {
+      rung_case.adapt.target_error = 0;
+      if (rung_case.solver.load_error == solvers::LoadErrorMethod::None)
+        rung_case.solver.load_error = solvers::LoadErrorMethod::Refined;
+    }
+    Simulation simulation = simulate(rung_case, on_iteration, estimate_condition);
     post::StudyRung rung;
     rung.value_text = plan.values[k];
     rung.parameter = numeric_key_value(*key, plan.cases[k]);
@@ -59,6 +71,7 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
     rung.pressure = simulation.results.pressure;
     rung.error = simulation.errors;
     rung.reciprocal_condition = simulation.reciprocal_condition;
+    rung.load_error_estimate = simulation.results.load_error.error;
     // The re-entrant corner (L_c, H_out) exists only for the square die of SPEC §4.
     if (plan.key == "mesh.size" &&
         plan.cases[k].manufactured == physics::ManufacturedSolution::None &&
@@ -85,6 +98,8 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
         },
         last.mesh);
   post::compute_orders(table);
+  if (against_adaptive)
+    table.adaptive = simulate_adaptive(plan.cases.front(), on_iteration).results.adapt;
   const io::Case& first = plan.cases.front();
   if (plan.key == "mesh.size" && first.manufactured != physics::ManufacturedSolution::None) {
     const int order = fem::element_order(first.element); // Theorem 4.1, smooth solution

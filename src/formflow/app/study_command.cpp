@@ -47,9 +47,9 @@ int study_command(const StudyCommand& command) {
                solvers::stop_reason_name(rung.stop_reason));
     std::fflush(stdout);
   };
-  const post::StudyTable table =
-      run_study(plan, command.estimate_condition, progress,
-                [](const solvers::IterationRecord&) { throw_if_signalled(); });
+  post::StudyTable table = run_study(plan, command.estimate_condition, progress,
+                                     [](const solvers::IterationRecord&) { throw_if_signalled(); });
+  table.exact_load = command.exact_load;
   io::write_study(command.output_directory, table, signal_stop_request());
   if (stop_signal() != 0) {
     fmt::print(stderr, "formflow: stopped by a signal; the study in {} is complete\n",
@@ -65,7 +65,15 @@ int study_command(const StudyCommand& command) {
                  rung.reciprocal_condition
                      ? fmt::format("  rcond {:.3e}", *rung.reciprocal_condition)
                      : "");
-    fmt::print("study written to {}/study.csv, study.png, study.svg\n", command.output_directory);
+    for (std::size_t k = 0; k < table.adaptive.cycles.size(); ++k) {
+      const post::AdaptCycle& cycle = table.adaptive.cycles[k];
+      fmt::print("adaptive cycle {}: {} dofs, p = {:.6f}, estimate {}{}\n", k, cycle.dofs,
+                 cycle.load, cell(cycle.estimate, "{:.4e}"),
+                 cycle.refined_mesh ? " (the refined mesh)" : "");
+    }
+    if (!table.adaptive.cycles.empty()) fmt::print("adaptive: {}\n", table.adaptive.stop);
+    fmt::print("study written to {}/study.csv, study.png, study.svg{}\n", command.output_directory,
+               table.has_load_errors() ? ", load_error_dofs.png, adaptive.csv" : "");
   }
   if (!table.all_converged()) {
     fmt::print(stderr,

@@ -16,6 +16,13 @@ bool StudyTable::has_differences() const {
                      [](const StudyRung& r) { return r.difference.has_value(); });
 }
 
+bool StudyTable::has_load_errors() const {
+  const auto estimated = [](const StudyRung& r) { return r.load_error_estimate.has_value(); };
+  const auto cycle_estimated = [](const AdaptCycle& c) { return c.estimate.has_value(); };
+  return std::any_of(rungs.begin(), rungs.end(), estimated) ||
+         std::any_of(adaptive.cycles.begin(), adaptive.cycles.end(), cycle_estimated);
+}
+
 std::optional<Real> observed_order(Real p_previous, Real e_previous, Real p, Real e) {
   const bool usable = std::isfinite(p_previous) && std::isfinite(e_previous) && std::isfinite(p) &&
                       std::isfinite(e) && p_previous > 0 && e_previous > 0 && p > 0 && e > 0 &&

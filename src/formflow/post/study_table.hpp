@@ -2,6 +2,7 @@
 // The rows of a parameter study (a ladder of runs) and the observed orders between rungs.
 #pragma once
 
+#include "formflow/post/adaptivity.hpp"
 #include "formflow/post/corner_profile.hpp"
 #include "formflow/post/error_norms.hpp"
 #include "formflow/post/results.hpp"
@@ -32,6 +33,8 @@ struct StudyRung {
   std::optional<Real> pressure_order, pressure_extrapolated;
   /// ε̄̇ around the die corner (forming cases of a mesh.size study).
   std::optional<CornerProfile> corner;
+  /// The estimate of |p_h − p| (solver.load_error; docs/error-estimation.md), when computed.
+  std::optional<Real> load_error_estimate;
 
   bool converged() const { return stop_reason == solvers::StopReason::Converged; }
 };
@@ -44,11 +47,19 @@ struct StudyTable {
   /// as reference slopes), when known: Theorem 4.1 for a manufactured
   /// solution on a mesh ladder, 3.4 for penalty.d, the bound of 3.3 for penalty.dT.
   std::optional<Real> theory_order_v, theory_order_l2;
+  /// The exact load p (`formflow study --exact-load`): |p_h − p| is drawn against dofs.
+  std::optional<Real> exact_load;
+  /// A mesh.size study of a case with [adapt]: its adaptive run from the first rung's
+  /// case, every cycle (the rungs themselves run without [adapt]: the uniform ladder).
+  AdaptRecord adaptive;
 
   bool all_converged() const;
   bool has_errors() const { return !rungs.empty() && rungs.front().error.has_value(); }
   bool has_differences() const;
   bool has_corner_profiles() const { return !rungs.empty() && rungs.front().corner.has_value(); }
+  /// Some rung, or the adaptive run, has a load error estimate: the picture of the
+  /// load error against dofs is drawn.
+  bool has_load_errors() const;
 };
 
 /// Fills order_v, order_l2, pressure_order and pressure_extrapolated of every
