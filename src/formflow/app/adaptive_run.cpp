@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace formflow::app {
 
@@ -27,6 +28,11 @@ using Clock = std::chrono::steady_clock;
 
 Real seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// The process's CPU time so far (every thread's), for the cycles' `cpu_s`.
+Real cpu_seconds() {
+  return static_cast<Real>(std::clock()) / CLOCKS_PER_SEC;
 }
 
 /// |p_{h/2} − p|, the refined mesh's own error by the same argument as the cycle's
@@ -76,7 +82,8 @@ Simulation simulate_on_refined_mesh(const io::Case& run, const Simulation& simul
 /// with the direct change, or it did not converge); std::nullopt to go on cycling.
 std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulation& simulation,
                                               bool mesh_from_case, Clock::time_point cycle_start,
-                                              post::AdaptCycle& entry, post::AdaptRecord& record,
+                                              Real cycle_cpu_start, post::AdaptCycle& entry,
+                                              post::AdaptRecord& record,
                                               const IterationCallback& on_iteration) {
   const post::LoadErrorEstimate& estimate = simulation.results.load_error;
   const Real target = run.adapt.cycle_target;
@@ -85,6 +92,7 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
       *expected > target * std::abs(entry.load + estimate.enriched_change))
     return std::nullopt;
   const auto refined_start = Clock::now();
+  const Real refined_cpu_start = cpu_seconds();
   Simulation last = simulate_on_refined_mesh(run, simulation, mesh_from_case, on_iteration);
   const post::Results& results = last.results;
   const std::optional<Real> error = results.load_error.error;
@@ -94,6 +102,8 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   // the cycle's mesh as if the refined run had not been tried.
   if (results.converged() && !reached) return std::nullopt;
   entry.seconds = std::chrono::duration<double>(refined_start - cycle_start).count();
+  entry.cpu_seconds = refined_cpu_start - cycle_cpu_start;
+  entry.estimate_seconds = simulation.results.timing.get("error estimate");
   record.cycles.push_back(entry);
   post::AdaptCycle final_entry;
   final_entry.cells = results.n_cells;
@@ -103,6 +113,7 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   final_entry.newton_iterations = results.iterations;
   final_entry.refined_mesh = true;
   final_entry.seconds = seconds_since(refined_start);
+  final_entry.cpu_seconds = cpu_seconds() - refined_cpu_start;
   record.cycles.push_back(final_entry);
   record.stop = reached ? "target reached on the refined mesh"
                         : "the run on the refined mesh did not converge";
@@ -199,6 +210,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   const post::AdaptSettings& adapt = case_.adapt;
   post::AdaptRecord record;
   auto cycle_start = Clock::now();
+  Real cycle_cpu_start = cpu_seconds();
   Simulation simulation = simulate(run, on_iteration); // cycle 0: the case's mesh
   // Later cycles mark with the cheap estimate; the full one only where it may stop.
   const io::Case cheap = cheap_cycle_case(run);
@@ -214,6 +226,8 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     entry.newton_iterations = results.iterations;
     const auto finish = [&](std::string why, bool reached = false) {
       entry.seconds = seconds_since(cycle_start);
+      entry.cpu_seconds = cpu_seconds() - cycle_cpu_start;
+      entry.estimate_seconds = results.timing.get("error estimate");
       record.cycles.push_back(entry);
       record.stop = std::move(why);
       record.reached_target = reached;
@@ -247,8 +261,9 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
       }
       // The estimate's refined mesh, whose settled solution is at hand, may already be
       // accurate enough: solve there to δ and end on it, its load as the result.
-      if (std::optional<Simulation> last = end_on_refined_mesh(
-              run, simulation, cycle == 0, cycle_start, entry, record, on_iteration)) {
+      if (std::optional<Simulation> last =
+              end_on_refined_mesh(run, simulation, cycle == 0, cycle_start, cycle_cpu_start, entry,
+                                  record, on_iteration)) {
         simulation = std::move(*last);
         break;
       }
@@ -281,8 +296,11 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     if (run.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(next);
     const VectorX start = fem::interpolate_nodal_field(current, results.fields.velocity, 2, next);
     entry.seconds = seconds_since(cycle_start);
+    entry.cpu_seconds = cpu_seconds() - cycle_cpu_start;
+    entry.estimate_seconds = results.timing.get("error estimate");
     record.cycles.push_back(entry);
     cycle_start = Clock::now();
+    cycle_cpu_start = cpu_seconds();
     cheap_cycle = scale.calibrated();
     simulation = simulate_from<2>(cheap_cycle ? cheap : run, std::move(next), start, on_iteration);
 #else

@@ -45,7 +45,9 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
                            const IterationCallback& on_iteration) {
   const io::CaseKey* key = io::find_case_key(plan.key);
   FF_ASSERT(key, "plan_study checked the key");
-  post::StudyTable table{plan.key, plan.description, {}, std::nullopt, std::nullopt};
+  post::StudyTable table;
+  table.key = plan.key;
+  table.description = plan.description;
   std::vector<Simulation> simulations;
   // A mesh ladder of a case with [adapt] compares uniform with adaptive refinement:
   // the rungs are the uniform ladder (no [adapt], the load's estimate kept on), and

@@ -190,7 +190,9 @@ json adapt_json(const Case& case_, const post::AdaptRecord& record) {
                       {"newton_iterations", cycle.newton_iterations},
                       {"marked_cells", cycle.marked},
                       {"refined_mesh", cycle.refined_mesh},
-                      {"time_s", cycle.seconds}});
+                      {"time_s", cycle.seconds},
+                      {"cpu_s", cycle.cpu_seconds},
+                      {"estimate_time_s", cycle.estimate_seconds}});
   }
   return {{"target_error", case_.adapt.target_error},
           {"fraction", case_.adapt.fraction},

@@ -41,6 +41,10 @@ struct AdaptCycle {
   int newton_iterations = 0;
   Index marked = 0;   ///< cells marked for refinement after this cycle (0 for the last)
   Real seconds = 0.0; ///< wall time of the cycle: solve, estimate, marking, remeshing
+  /// CPU time of the process over the cycle (std::clock: every thread's; with one BLAS
+  /// thread, the cycle's own work however loaded the machine is).
+  Real cpu_seconds = 0.0;
+  Real estimate_seconds = 0.0; ///< wall time of its "error estimate" phase
   /// The previous cycle's mesh split uniformly (the estimate's refined mesh), solved
   /// from the estimate's settled solution: the run ended on it.
   bool refined_mesh = false;

@@ -71,8 +71,8 @@ Axis log_axis(double lo, double hi, std::string label) {
 void draw_load_error_against_dofs(const Canvas& canvas, const post::StudyTable& table) {
   const std::optional<double> exact = table.exact_load;
   draw_title(canvas, "Load error against dofs",
-             exact ? fmt::format("|p_h − p|, p = {:.6g}; bars: the estimates", *exact)
-                   : std::string("the estimates of |p_h − p| (no exact load given)"));
+             exact ? fmt::format("|p_{{h}} − p|, p = {:.6g}; bars: the estimates", *exact)
+                   : std::string("the estimates of |p_{h} − p| (no exact load given)"));
   const std::vector<LoadSequence> all = sequences(table);
   double x_lo = std::numeric_limits<double>::max(), x_hi = 0;
   double y_lo = std::numeric_limits<double>::max(), y_hi = 0;
