@@ -58,7 +58,9 @@ Real load_error_bound(Real refined_change, Real ratio, Real penalty_change);
 /// The DWR estimate for the driven-end reaction Q(u) = Σ_driven f_i(u) (the ram
 /// reaction, the drawing force). `fine` is the same discrete problem on the mesh
 /// refined once (nested in `coarse`'s); `u` the solution on `coarse`.
-///  1. ũ = u prolonged to the fine mesh (exact: the spaces nest).
+///  1. ũ = u prolonged to the fine mesh (exact: the spaces nest); with `settle`,
+///     Newton from there to settle's δ or until two successive iterations each move
+///     the load by at most 1 % of its change from p_h, whichever comes first.
 ///  2. The adjoint z on the fine mesh: Jᵀ z = ∂Q/∂u_free with J the Newton tangent
 ///     at ũ (primal, the exact Jacobian; τ_f frozen), i.e. (T + Nᵀ) z = g; T is
 ///     factorised once, Nᵀ (the full-ε̇ form's unsymmetric rest and a pressure-
