@@ -9,8 +9,8 @@
 #include "formflow/post/adaptivity.hpp"
 #include "formflow/post/load_error_estimate.hpp"
 #if FORMFLOW_WITH_GMSH
-#include "formflow/mesh/gmsh_channel.hpp"
-#include "formflow/mesh/gmsh_sized_channel.hpp"
+#include "formflow/mesh/die_face.hpp"
+#include "formflow/mesh/gmsh_meshers.hpp"
 #endif
 
 #include <fmt/format.h>
@@ -290,7 +290,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     }
 #if FORMFLOW_WITH_GMSH
     const mesh::Mesh<2>& current = simulation.plane_mesh();
-    mesh::Mesh<2> next = mesh::make_sized_gmsh_channel_mesh(
+    mesh::Mesh<2> next = mesh::gmsh_meshers().sized_channel_mesh(
         run.mesh.geometry, mesh::die_face_polyline(run.mesh.geometry, run.mesh.size), current,
         post::target_node_sizes(current, marked), current.order);
     if (run.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(next);

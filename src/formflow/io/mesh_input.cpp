@@ -8,11 +8,10 @@
 #include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/mesh/solid_channel_mesh.hpp"
 #if FORMFLOW_WITH_GMSH
+#include "formflow/mesh/die_face.hpp"
 #include "formflow/mesh/facet_axis.hpp"
-#include "formflow/mesh/gmsh_channel.hpp"
-#include "formflow/mesh/gmsh_mesh.hpp"
+#include "formflow/mesh/gmsh_meshers.hpp"
 #include "formflow/mesh/gmsh_solid_channel.hpp"
-#include "formflow/mesh/gmsh_solid_mesh.hpp"
 #endif
 
 #include <fmt/format.h>
@@ -92,11 +91,11 @@ template <int dim> mesh::Mesh<dim> read_mesh_file(const Case& case_, const mesh:
   using Subject = mesh::MeshFileError::Subject;
   try {
     if constexpr (dim == 2)
-      return mesh::read_gmsh_mesh(resolved_mesh_path(case_, spec), boundary_map(spec),
-                                  fem::element_order(case_.element));
+      return mesh::gmsh_meshers().read_mesh(resolved_mesh_path(case_, spec), boundary_map(spec),
+                                            fem::element_order(case_.element));
     else
-      return mesh::read_gmsh_solid_mesh(resolved_mesh_path(case_, spec), boundary_map(spec),
-                                        fem::element_order(case_.element));
+      return mesh::gmsh_meshers().read_solid_mesh(
+          resolved_mesh_path(case_, spec), boundary_map(spec), fem::element_order(case_.element));
   } catch (const mesh::MeshFileError& error) {
     std::string key = "mesh.file";
     if (error.subject == Subject::Element) key = "mesh.element";
@@ -172,9 +171,10 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
 #if FORMFLOW_WITH_GMSH
   if (spec.source == mesh::MeshSource::Gmsh) {
     if (spec.dimension == 3) // slab or square-die rectangle: io/case_validation_3d.cpp
-      return mesh::make_gmsh_solid_channel_mesh(spec.geometry, spec.solid, spec.size, order,
-                                                drawing);
-    mesh::Mesh<2> mesh = mesh::make_gmsh_channel_mesh(spec.geometry, spec.size, order);
+      return mesh::gmsh_meshers().solid_channel_mesh(spec.geometry, spec.solid, spec.size, order,
+                                                     drawing);
+    mesh::Mesh<2> mesh = mesh::gmsh_meshers().channel_mesh(
+        spec.geometry, mesh::die_face_polyline(spec.geometry, spec.size), spec.size, order);
     if (drawing) mesh::free_container_wall(mesh);
     return mesh;
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/die_face.hpp"
 #include "formflow/mesh/gmsh_session.hpp"
 
 #include <functional>
@@ -10,10 +11,6 @@
 #include <vector>
 
 namespace formflow::mesh {
-
-/// The die face of the square die: from the top of the die (L_c, H_in) straight
-/// down to the start of the exit (L_c, H_out).
-std::vector<Point<2>> square_die_face(const ChannelGeometry& geometry);
 
 /// The half channel's geometry in Gmsh's built-in kernel (not yet synchronised):
 /// its plane surface and, in the order of the surface's curve loop (symmetry,
@@ -49,12 +46,6 @@ void build_channel_model(const GmshSession& session, const ChannelGeometry& geom
 /// The channel with `die_face`, meshed by Gmsh, as a formflow mesh.
 Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry,
                                const std::vector<Point<2>>& die_face, Real size, int order);
-
-/// The die face of any geometry.die as a polyline for build_channel_model, the
-/// die land (if any) appended: square, wedge and polyline dies exactly; the
-/// arc by chords of at most size/2 (straight cell faces keep the penalty
-/// contact free of the curved-face trouble described in docs/gmsh-meshes.md).
-std::vector<Point<2>> die_face_polyline(const ChannelGeometry& geometry, Real size);
 
 /// The channel of `geometry` (any die shape, with its land), meshed by Gmsh.
 inline Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry, Real size, int order) {
