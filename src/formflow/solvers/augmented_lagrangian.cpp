@@ -52,18 +52,39 @@ std::pair<Real, Real> multiplier_norms(const std::vector<assembly::ContactPoint<
 } // namespace
 
 template <int dim>
-MultiplierUpdate update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
-                                             const VectorX& velocity,
-                                             assembly::FrictionMultipliers<dim>& multipliers) {
+MultiplierUpdate
+update_friction_multipliers(const assembly::FormingProblem<dim>& problem, const VectorX& velocity,
+                            assembly::FrictionMultipliers<dim>& multipliers,
+                            const std::vector<std::size_t>& held, Real release_from) {
   // λᵏ⁺¹ = proj(λᵏ + r uᵏ_T): the traction contact_state evaluates for λᵏ at uᵏ, the
   // one the equilibrium at uᵏ was assembled with; the Coulomb residual is that pair's.
   const auto state = problem.contact_state(velocity, &multipliers);
   const auto [difference, norm] = multiplier_norms(state, multipliers.traction);
+  MultiplierUpdate update;
+  // No friction anywhere (μ = 0, or Γ3 entirely in tension): nothing left to update.
+  update.change = norm > 0 ? difference / norm : 0.0;
+  update.residual = friction_residual(state);
+  std::vector<Point<dim>> asked;
+  Real held_residual = 0.0;
+  if (!held.empty() && multipliers.traction.size() == state.size()) {
+    asked = multipliers.traction;
+    held_residual = held_friction_residual(state, asked, held);
+    update.residual = std::max(update.residual, held_residual);
+  }
   multipliers.traction.resize(state.size());
   for (std::size_t k = 0; k < state.size(); ++k)
     multipliers.traction[k] = state[k].friction_traction;
-  // No friction anywhere (μ = 0, or Γ3 entirely in tension): nothing left to update.
-  return {norm > 0 ? difference / norm : 0.0, friction_residual(state)};
+  if (!asked.empty() && held_residual >= release_from) {
+    for (std::size_t k : held) {
+      const assembly::ContactPoint<dim>& point = state[k];
+      const Point<dim> tangential = asked[k] - asked[k].dot(point.normal) * point.normal;
+      if (point.friction_threshold > 0 && tangential.norm() > point.friction_threshold) {
+        multipliers.traction[k] = tangential;
+        ++update.released;
+      }
+    }
+  }
+  return update;
 }
 
 template <int dim>
@@ -86,8 +107,18 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
         if (!last_updated) return {false, std::nullopt};
         // The multipliers this iteration was assembled with, kept for the evaluation.
         equilibrium = outcome.multipliers;
-        const MultiplierUpdate update =
-            update_friction_multipliers(problem.forming(), *state.velocity, outcome.multipliers);
+        // Exact stick: a held node whose reaction leaves the Coulomb disk counts in the
+        // residual (the projection would hide it), and once the velocity has settled with
+        // the current stick set (state.converged) and such nodes are what is left, they
+        // are released to slip (a working-set rule: a constraint is dropped at the
+        // stationary point of its working set). Not before: while the iterate still moves
+        // a reaction over τ_f is no verdict (the first fine iterate after the coarse start
+        // asks 2.3 τ_f of a node that sticks at the solution; released there, axisymmetric
+        // Q2 sliding h = 0.5 μ = 0.3 stalls: docs/friction.md "Session 11").
+        const std::vector<std::size_t> held = problem.take_held_points();
+        const MultiplierUpdate update = update_friction_multipliers(
+            problem.forming(), *state.velocity, outcome.multipliers, held,
+            state.converged ? control.tolerance : std::numeric_limits<Real>::infinity());
         outcome.multiplier_change = update.change;
         outcome.friction_residual = update.residual;
         ++updates;
@@ -153,9 +184,11 @@ template AugmentedOutcome<3> augmented_lagrangian<3>(FormingNonlinearProblem<3>&
                                                      const IterationObserver&, PhaseTimes&);
 template MultiplierUpdate update_friction_multipliers<2>(const assembly::FormingProblem<2>&,
                                                          const VectorX&,
-                                                         assembly::FrictionMultipliers<2>&);
+                                                         assembly::FrictionMultipliers<2>&,
+                                                         const std::vector<std::size_t>&, Real);
 template MultiplierUpdate update_friction_multipliers<3>(const assembly::FormingProblem<3>&,
                                                          const VectorX&,
-                                                         assembly::FrictionMultipliers<3>&);
+                                                         assembly::FrictionMultipliers<3>&,
+                                                         const std::vector<std::size_t>&, Real);
 
 } // namespace formflow::solvers
