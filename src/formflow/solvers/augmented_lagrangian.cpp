@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace formflow::solvers {
 
@@ -80,7 +81,7 @@ update_friction_multipliers(const assembly::FormingProblem<dim>& problem, const 
       const Point<dim> tangential = asked[k] - asked[k].dot(point.normal) * point.normal;
       if (point.friction_threshold > 0 && tangential.norm() > point.friction_threshold) {
         multipliers.traction[k] = tangential;
-        ++update.released;
+        update.released.push_back(k);
       }
     }
   }
@@ -96,6 +97,7 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
   int updates = 0;
   int inner_solves = 1; // ConvergedIterate: the first inner solve starts with the driver
   StallWatch stall(stall_window);
+  std::set<std::size_t> ever_released; // exact stick: points released by the update
   // λ̂ of the last iteration (outcome.multipliers are updated after it): see AugmentedOutcome.
   assembly::FrictionMultipliers<dim> equilibrium;
   bool last_updated = false;
@@ -119,6 +121,13 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
         const MultiplierUpdate update = update_friction_multipliers(
             problem.forming(), *state.velocity, outcome.multipliers, held,
             state.converged ? control.tolerance : std::numeric_limits<Real>::infinity());
+        // A release starts a new stick set, from whose settling the stall watch counts
+        // afresh; once per point, so that nodes released, held again and released again
+        // in a cycle still end as Stalled.
+        bool released_new = false;
+        for (std::size_t k : update.released)
+          if (ever_released.insert(k).second) released_new = true;
+        if (released_new) stall.restart();
         outcome.multiplier_change = update.change;
         outcome.friction_residual = update.residual;
         ++updates;

@@ -58,7 +58,8 @@ struct MultiplierUpdate {
   /// friction_residual of (uᵏ, λᵏ⁺¹), and not less than held_friction_residual of the
   /// multipliers the held nodes' reactions asked for (their excess over τ_f).
   Real residual = 0.0;
-  int released = 0; ///< held points left unprojected (release_from), so that they slip
+  /// Held points left unprojected (release_from), so that they slip.
+  std::vector<std::size_t> released;
 };
 
 /// Uzawa iteration of the augmented Lagrangian for λ_T (Alart–Curnier form), one
