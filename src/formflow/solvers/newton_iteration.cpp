@@ -9,8 +9,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -219,27 +217,6 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     const Real kink = work.problem.slip_reversal(velocity, step);
     if (kink <= 1.0 && kink >= 0.5 * t) {
       t = std::min(1.0, kink * (1.0 + kink_overshoot));
-      slope = slope_at(work, velocity, step, t, direction);
-    }
-  }
-  if (constrained && std::getenv("FF_NMT")) {
-    // Natural monotonicity (experiment): the simplified correction at the trial point,
-    // with the step's factor, must be shorter than the step: ‖Δ̄(t)‖ < θ_max ‖Δ‖.
-    const Real theta_max = std::getenv("FF_NMT_HALF") ? 0.0 : 1.0;
-    const Real full_norm = free_step.norm();
-    for (int k = 0; k < 6; ++k) {
-      const VectorX p = (1.0 - t) * particular;
-      VectorX product = work.tangent.matrix.selfadjointView<Eigen::Lower>() * p;
-      if (work.problem.has_coupling()) work.problem.apply_coupling(p, product);
-      const VectorX rhs_bar = -condensation->project(free_part(plan, work.force) + product);
-      VectorX z_bar;
-      if (work.linear.solve_whole(rhs_bar, z_bar)) break;
-      const Real bar_norm = (p + condensation->project(z_bar)).norm();
-      const Real bound = theta_max > 0 ? theta_max : 1.0 - 0.5 * t;
-      if (std::getenv("FF_TRACE_NMT"))
-        std::fprintf(stderr, "NMT t %.3e theta %.3e\n", t, bar_norm / full_norm);
-      if (bar_norm < bound * full_norm) break;
-      t *= 0.5;
       slope = slope_at(work, velocity, step, t, direction);
     }
   }
