@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace formflow::solvers {
 
@@ -34,6 +35,16 @@ namespace {
 /// δ = 1e-4 converged in at most 18 iterations, Q2 at 1e-8 in up to 44; the one stall
 /// never got its residual's power below 1e-4 (docs/friction.md "Session 7").
 constexpr int stall_window = 8;
+
+/// Exact stick: a held node over the Coulomb limit is released when the held residual
+/// (its excess) is at least 1/release_margin times the iterate's relative change, as well
+/// as when the velocity has settled to δ. Not derived: an order of magnitude between the
+/// excess and the iterate's own motion, read off the grid's traces (docs/friction.md
+/// "Session 11"): transient excesses came with changes of their own size (0.26 at 0.10,
+/// 0.044 at 0.043), persisting ones were 10 to 1000 times the change. Without it (release
+/// at δ only) the slip front of plane Q1 sliding h = 0.25 μ = 0.5 moved one node per
+/// Newton solve to δ = 1e-8 and stalled after 30 iterations.
+constexpr Real release_margin = 0.1;
 
 /// ‖a − b‖ and ‖a‖ in L²(Γ3), with the quadrature weights of the contact points.
 template <int dim>
@@ -52,18 +63,39 @@ std::pair<Real, Real> multiplier_norms(const std::vector<assembly::ContactPoint<
 } // namespace
 
 template <int dim>
-MultiplierUpdate update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
-                                             const VectorX& velocity,
-                                             assembly::FrictionMultipliers<dim>& multipliers) {
+MultiplierUpdate
+update_friction_multipliers(const assembly::FormingProblem<dim>& problem, const VectorX& velocity,
+                            assembly::FrictionMultipliers<dim>& multipliers,
+                            const std::vector<std::size_t>& held, Real release_from) {
   // λᵏ⁺¹ = proj(λᵏ + r uᵏ_T): the traction contact_state evaluates for λᵏ at uᵏ, the
   // one the equilibrium at uᵏ was assembled with; the Coulomb residual is that pair's.
   const auto state = problem.contact_state(velocity, &multipliers);
   const auto [difference, norm] = multiplier_norms(state, multipliers.traction);
+  MultiplierUpdate update;
+  // No friction anywhere (μ = 0, or Γ3 entirely in tension): nothing left to update.
+  update.change = norm > 0 ? difference / norm : 0.0;
+  update.residual = friction_residual(state);
+  std::vector<Point<dim>> asked;
+  Real held_residual = 0.0;
+  if (!held.empty() && multipliers.traction.size() == state.size()) {
+    asked = multipliers.traction;
+    held_residual = held_friction_residual(state, asked, held);
+    update.residual = std::max(update.residual, held_residual);
+  }
   multipliers.traction.resize(state.size());
   for (std::size_t k = 0; k < state.size(); ++k)
     multipliers.traction[k] = state[k].friction_traction;
-  // No friction anywhere (μ = 0, or Γ3 entirely in tension): nothing left to update.
-  return {norm > 0 ? difference / norm : 0.0, friction_residual(state)};
+  if (!asked.empty() && held_residual >= release_from) {
+    for (std::size_t k : held) {
+      const assembly::ContactPoint<dim>& point = state[k];
+      const Point<dim> tangential = asked[k] - asked[k].dot(point.normal) * point.normal;
+      if (point.friction_threshold > 0 && tangential.norm() > point.friction_threshold) {
+        multipliers.traction[k] = tangential;
+        update.released.push_back(k);
+      }
+    }
+  }
+  return update;
 }
 
 template <int dim>
@@ -75,6 +107,7 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
   int updates = 0;
   int inner_solves = 1; // ConvergedIterate: the first inner solve starts with the driver
   StallWatch stall(stall_window);
+  std::set<std::size_t> ever_released; // exact stick: points released by the update
   // λ̂ of the last iteration (outcome.multipliers are updated after it): see AugmentedOutcome.
   assembly::FrictionMultipliers<dim> equilibrium;
   bool last_updated = false;
@@ -86,8 +119,26 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
         if (!last_updated) return {false, std::nullopt};
         // The multipliers this iteration was assembled with, kept for the evaluation.
         equilibrium = outcome.multipliers;
-        const MultiplierUpdate update =
-            update_friction_multipliers(problem.forming(), *state.velocity, outcome.multipliers);
+        // Exact stick: a held node whose reaction leaves the Coulomb disk counts in the
+        // residual (the projection would hide it), and it is released to slip once the
+        // iterate has settled enough for the excess to be a verdict on the stick set: the
+        // velocity settled to δ (a working-set rule: a constraint is dropped at the
+        // stationary point of its working set), or the excess at least 1/release_margin
+        // times the iterate's relative change. Not on any excess: the first fine iterate
+        // after the coarse start asks 2.3 τ_f of a node that sticks at the solution
+        // (change 0.10); released there, axisymmetric Q2 sliding h = 0.5 μ = 0.3 stalls
+        // (docs/friction.md "Session 11").
+        const std::vector<std::size_t> held = problem.take_held_points();
+        const MultiplierUpdate update = update_friction_multipliers(
+            problem.forming(), *state.velocity, outcome.multipliers, held,
+            state.converged ? control.tolerance : state.relative_change / release_margin);
+        // A release starts a new stick set, from whose settling the stall watch counts
+        // afresh; once per point, so that nodes released, held again and released again
+        // in a cycle still end as Stalled.
+        bool released_new = false;
+        for (std::size_t k : update.released)
+          if (ever_released.insert(k).second) released_new = true;
+        if (released_new) stall.restart();
         outcome.multiplier_change = update.change;
         outcome.friction_residual = update.residual;
         ++updates;
@@ -153,9 +204,11 @@ template AugmentedOutcome<3> augmented_lagrangian<3>(FormingNonlinearProblem<3>&
                                                      const IterationObserver&, PhaseTimes&);
 template MultiplierUpdate update_friction_multipliers<2>(const assembly::FormingProblem<2>&,
                                                          const VectorX&,
-                                                         assembly::FrictionMultipliers<2>&);
+                                                         assembly::FrictionMultipliers<2>&,
+                                                         const std::vector<std::size_t>&, Real);
 template MultiplierUpdate update_friction_multipliers<3>(const assembly::FormingProblem<3>&,
                                                          const VectorX&,
-                                                         assembly::FrictionMultipliers<3>&);
+                                                         assembly::FrictionMultipliers<3>&,
+                                                         const std::vector<std::size_t>&, Real);
 
 } // namespace formflow::solvers

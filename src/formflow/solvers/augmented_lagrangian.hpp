@@ -10,6 +10,8 @@
 #include "formflow/solvers/stop_reason.hpp"
 
 #include <functional>
+#include <limits>
+#include <vector>
 
 namespace formflow::solvers {
 
@@ -53,7 +55,11 @@ template <int dim> struct AugmentedOutcome {
 /// What one multiplier update measured.
 struct MultiplierUpdate {
   Real change = 0.0; ///< ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3) (0 without friction)
-  Real residual = 0.0; ///< friction_residual of (uᵏ, λᵏ⁺¹)
+  /// friction_residual of (uᵏ, λᵏ⁺¹), and not less than held_friction_residual of the
+  /// multipliers the held nodes' reactions asked for (their excess over τ_f).
+  Real residual = 0.0;
+  /// Held points left unprojected (release_from), so that they slip.
+  std::vector<std::size_t> released;
 };
 
 /// Uzawa iteration of the augmented Lagrangian for λ_T (Alart–Curnier form), one
@@ -79,10 +85,17 @@ AugmentedOutcome<dim> augmented_lagrangian(FormingNonlinearProblem<dim>& problem
 
 /// One Uzawa update λᵏ⁺¹ = proj_{|λ| ≤ τ_f(u)}(λᵏ + r u_T) at `velocity`, in place;
 /// returns ‖λᵏ⁺¹ − λᵏ‖/‖λᵏ⁺¹‖ in L²(Γ3) (0 where there is no friction at all) and the
-/// Coulomb residual of (u, λᵏ⁺¹).
+/// Coulomb residual of (u, λᵏ⁺¹), or, if larger, that of the multipliers the exact-stick
+/// step set at its `held` points from their reactions (held_friction_residual: a held
+/// node whose reaction leaves the Coulomb disk). When that held residual is at least
+/// `release_from` (∞: never), such points keep the multiplier their reaction asked
+/// (unprojected), so that the next active-set test |λ̂ + r u_T| ≤ τ_f lets them slip
+/// (docs/friction.md "Session 11").
 template <int dim>
-MultiplierUpdate update_friction_multipliers(const assembly::FormingProblem<dim>& problem,
-                                             const VectorX& velocity,
-                                             assembly::FrictionMultipliers<dim>& multipliers);
+MultiplierUpdate
+update_friction_multipliers(const assembly::FormingProblem<dim>& problem, const VectorX& velocity,
+                            assembly::FrictionMultipliers<dim>& multipliers,
+                            const std::vector<std::size_t>& held = {},
+                            Real release_from = std::numeric_limits<Real>::infinity());
 
 } // namespace formflow::solvers

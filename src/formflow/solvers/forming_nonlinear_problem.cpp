@@ -133,6 +133,7 @@ FormingNonlinearProblem<dim>::exact_stick_nodes() const {
 template <int dim>
 std::vector<StepConstraint> FormingNonlinearProblem<dim>::step_constraints(const VectorX& u) const {
   constrained_.clear();
+  held_points_.clear();
   if (stick_nodes_.empty() || !friction_) return {};
   const auto state = problem_.contact_state(u, friction_);
   std::vector<StepConstraint> constraints;
@@ -209,6 +210,9 @@ void FormingNonlinearProblem<dim>::constrained_step_taken(const std::vector<Real
     // With the nodal rule λ̂ loads its node alone, by W λ̂ (W the node's share of Γ3).
     const Point<dim> change = (-t * reactions[k] / node.weight) * constrained_[k].second;
     for (std::size_t p : node.points) friction_->traction[p] += change;
+    // A node with two tangents (3D) is listed once per constraint: its points once.
+    if (k == 0 || constrained_[k - 1].first != constrained_[k].first)
+      held_points_.insert(held_points_.end(), node.points.begin(), node.points.end());
   }
 }
 

@@ -8,6 +8,8 @@
 
 #include <array>
 #include <functional>
+#include <utility>
+#include <vector>
 
 namespace formflow::solvers {
 
@@ -79,6 +81,10 @@ public:
   std::vector<StepConstraint> step_constraints(const VectorX& u) const override;
   /// λ̂ at the constrained nodes += t × (−reaction / the node's weight) along the tangent.
   void constrained_step_taken(const std::vector<Real>& reactions, Real t) override;
+  /// The contact points of the nodes the last Newton step held (whose λ̂ that step set
+  /// from their reactions, not yet projected onto the Coulomb disk), handed over once:
+  /// empty after a step that held none, or when no Newton step ran since the last call.
+  std::vector<std::size_t> take_held_points() { return std::exchange(held_points_, {}); }
   /// Over the eligible nodes that slip for the current λ̂: where u_T·t̂ (t̂ the
   /// traction's direction) reaches 0 along the step.
   Real slip_reversal(const VectorX& u, const VectorX& step) const override;
@@ -112,6 +118,8 @@ private:
   std::vector<StickNode> stick_nodes_;
   /// Per constraint of the last step_constraints: its node and tangent.
   mutable std::vector<std::pair<std::size_t, Point<dim>>> constrained_;
+  /// The points of the nodes the last constrained step held (take_held_points).
+  mutable std::vector<std::size_t> held_points_;
   assembly::UnsymmetricTangent<dim> coupling_;
   /// coupling_ is not empty on some rank: every rank then takes the GMRES path.
   bool coupled_ = false;

@@ -51,4 +51,25 @@ template <int dim> Real friction_residual(const std::vector<assembly::ContactPoi
   return std::sqrt(residual / traction_norm);
 }
 
+/// friction_residual with the traction at the `held` points replaced by what the Newton
+/// step's reactions asked there, `asked[k]` (its tangential part; ContactPoint::
+/// friction_traction is that multiplier projected onto the Coulomb disk). Why: a node the
+/// step held (u_T = 0) whose reaction asks for more than τ_f gets λ̂ clipped to the disk by
+/// the update, and the projected traction with u_T = 0 satisfies Coulomb exactly, while the
+/// node's tangential row stays out of balance by W(|λ̂_asked| − τ_f): the projected
+/// residual cannot see it (issue 16, case 228 of the grid, docs/friction.md "Session 11").
+/// Judged with the asked multiplier the point contributes exactly that excess
+/// λ − proj(λ) = (|λ| − τ_f)₊ λ/|λ| (u_T = 0 after a full step), and nothing where the
+/// reaction lies inside the disk (there the asked and projected tractions coincide).
+template <int dim>
+Real held_friction_residual(std::vector<assembly::ContactPoint<dim>> state,
+                            const std::vector<Point<dim>>& asked,
+                            const std::vector<std::size_t>& held) {
+  for (std::size_t k : held) {
+    assembly::ContactPoint<dim>& point = state[k];
+    point.friction_traction = asked[k] - asked[k].dot(point.normal) * point.normal;
+  }
+  return friction_residual(state);
+}
+
 } // namespace formflow::solvers

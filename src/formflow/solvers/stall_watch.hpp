@@ -28,6 +28,14 @@ public:
     return ++since_best_ >= window_;
   }
 
+  /// A new stage of the loop whose merit may start above the old minimum (exact stick: a
+  /// held node released to slip, its excess over τ_f in the merit until the iterate
+  /// settles again): minima are counted afresh.
+  void restart() {
+    best_ = std::numeric_limits<Real>::infinity();
+    since_best_ = 0;
+  }
+
 private:
   int window_;
   Real best_ = std::numeric_limits<Real>::infinity();

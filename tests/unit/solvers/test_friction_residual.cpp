@@ -89,5 +89,28 @@ TEST(FrictionResidual, TestsOnlyTheDiscWhenNothingSlips) {
   EXPECT_TRUE(testing::approx(friction_residual(points), 0.2 / std::sqrt(0.58), 1e-12));
 }
 
+// A node the exact-stick step held (u_T = 0) whose reaction asks λ̂ = 0.6 over τ_f = 0.5:
+// the update projects it to 0.5, which with u_T = 0 satisfies Coulomb exactly, so the
+// projected residual is blind to the row's imbalance W (0.6 − 0.5) (issue 16, case 228).
+TEST(HeldFrictionResidual, SeesAHeldReactionBeyondTheCoulombLimit) {
+  Points points = coulomb_solution();
+  points[1].friction_traction = Point<2>(-0.5, 0); // projected onto the disc: on its edge
+  std::vector<Point<2>> asked(points.size(), Point<2>::Zero());
+  asked[1] = Point<2>(-0.6, 0.0);
+  ASSERT_EQ(friction_residual(points), 0.0);
+  // Judged with the asked 0.6 (the scale r̄ multiplies u_T = 0 there): 0.1 at weight 2,
+  // relative to ‖λ‖ with λ = 0.6 at that point. Rounding only: a few ε.
+  const Real traction = 0.5 * 0.5 * 1.0 + 0.6 * 0.6 * 2.0 + 0.2 * 0.2 * 1.0;
+  const Real expected = 0.1 * std::sqrt(2.0 / traction);
+  EXPECT_TRUE(testing::approx(held_friction_residual(points, asked, {1}), expected, 1e-12));
+}
+
+TEST(HeldFrictionResidual, IsTheProjectedResidualWhereTheReactionLiesInsideTheDisc) {
+  Points points = coulomb_solution();
+  std::vector<Point<2>> asked(points.size(), Point<2>::Zero());
+  asked[1] = points[1].friction_traction + Point<2>(0.0, 0.25); // a normal part: dropped
+  EXPECT_EQ(held_friction_residual(points, asked, {1}), 0.0);
+}
+
 } // namespace
 } // namespace formflow::solvers

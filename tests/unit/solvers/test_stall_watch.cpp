@@ -34,5 +34,22 @@ TEST(StallWatch, CyclingBetweenTwoValuesStalls) {
   EXPECT_EQ(stalled_at, 5); // minimum 2e-4 at k = 1, then four iterations without one
 }
 
+// Exact stick releases a held node: the merit jumps above the old minimum (the node's
+// excess) and falls again as the iterate settles; counted from the release, not from the
+// old minimum.
+TEST(StallWatch, ARestartCountsMinimaAfresh) {
+  StallWatch watch(3);
+  EXPECT_FALSE(watch.stalled(1e-6));
+  EXPECT_FALSE(watch.stalled(1e-2)); // one without a new minimum
+  EXPECT_FALSE(watch.stalled(8e-3)); // two
+  watch.restart();
+  EXPECT_FALSE(watch.stalled(9e-3)); // a new minimum after the restart
+  EXPECT_FALSE(watch.stalled(5e-3));
+  // Without the restart the third merit above 1e-6 would have stalled.
+  StallWatch unrestarted(3);
+  for (const Real merit : {1e-6, 1e-2, 8e-3}) EXPECT_FALSE(unrestarted.stalled(merit));
+  EXPECT_TRUE(unrestarted.stalled(9e-3));
+}
+
 } // namespace
 } // namespace formflow::solvers
