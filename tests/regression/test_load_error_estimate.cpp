@@ -70,6 +70,17 @@ double effectivity(const post::Results& results, double exact) {
   return *estimate.error / std::abs(results.pressure.ram_reaction - exact);
 }
 
+/// The effectivity within [min_effectivity, max_effectivity] and the interval
+/// p_h ± estimate around `exact` (Hill's wedge at `degrees`).
+void expect_effective_and_containing(const post::Results& results, double exact, double degrees) {
+  const double index = effectivity(results, exact);
+  EXPECT_GE(index, min_effectivity) << degrees << "°";
+  EXPECT_LE(index, max_effectivity) << degrees << "°";
+  ASSERT_TRUE(results.load_error.error.has_value());
+  EXPECT_LE(std::abs(results.pressure.ram_reaction - exact), *results.load_error.error)
+      << degrees << "°: p_h = " << results.pressure.ram_reaction << ", exact " << exact;
+}
+
 TEST(LoadErrorEstimate, StickingRamCoarseRungIsEffective) {
   // Exact (1 + π/2) k, k = 1 (SPEC §4); h = 1: 1 322 dofs, 5 042 on the refined mesh.
   const double exact = 1.0 + std::numbers::pi / 2.0;
@@ -119,13 +130,7 @@ TEST(LoadErrorEstimate, HillWedgeDrawingOneRowRungsUseTheFinerThirdLevel) {
     ASSERT_TRUE(estimate.observed_ratio.has_value()) << degrees << "°";
     EXPECT_DOUBLE_EQ(*estimate.observed_ratio, *estimate.finer_change / estimate.enriched_change);
     EXPECT_EQ(estimate.ratio, std::max(0.5, *estimate.observed_ratio));
-    const double exact = hill_wedge_stress(degrees * degree);
-    const double index = effectivity(results, exact);
-    EXPECT_GE(index, min_effectivity) << degrees << "°";
-    EXPECT_LE(index, max_effectivity) << degrees << "°";
-    ASSERT_TRUE(estimate.error.has_value());
-    EXPECT_LE(std::abs(results.pressure.ram_reaction - exact), *estimate.error)
-        << degrees << "°: p_h = " << results.pressure.ram_reaction << ", exact " << exact;
+    expect_effective_and_containing(results, hill_wedge_stress(degrees * degree), degrees);
   }
 }
 
@@ -144,13 +149,7 @@ TEST(LoadErrorEstimate, HillWedgeDrawingCoarseRungsAreEffective) {
     const post::LoadErrorEstimate& estimate = results.load_error;
     ASSERT_TRUE(estimate.observed_ratio.has_value()) << degrees << "°";
     EXPECT_EQ(estimate.ratio, std::max(0.5, *estimate.observed_ratio));
-    const double exact = hill_wedge_stress(degrees * degree);
-    const double index = effectivity(results, exact);
-    EXPECT_GE(index, min_effectivity) << degrees << "°";
-    EXPECT_LE(index, max_effectivity) << degrees << "°";
-    ASSERT_TRUE(estimate.error.has_value());
-    EXPECT_LE(std::abs(results.pressure.ram_reaction - exact), *estimate.error)
-        << degrees << "°: p_h = " << results.pressure.ram_reaction << ", exact " << exact;
+    expect_effective_and_containing(results, hill_wedge_stress(degrees * degree), degrees);
   }
 }
 
