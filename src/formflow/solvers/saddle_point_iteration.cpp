@@ -28,6 +28,12 @@ SaddlePointSolve<dim>::SaddlePointSolve(FormingNonlinearProblem<dim>& problem,
   // Cartesian components of every Γ3 node; in the node's normal–tangent frame it is one
   // diagonal entry, which AMG's smoothers resolve (docs/petsc.md).
   linear.solver().set_local_frames(assembly::contact_frames(forming.discretisation()));
+  // Each velocity row's node, for an AMG that coarsens node by node (block size dim).
+  const assembly::ScatterPlan& plan = forming.plan();
+  std::vector<Index> dof_of_velocity(static_cast<std::size_t>(plan.n_free()));
+  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+    if (const Index row = plan.free_index(dof); row >= 0) dof_of_velocity[row] = dof;
+  linear.solver().set_velocity_nodes(dim, std::move(dof_of_velocity));
 }
 
 /// One secant step at the lagged velocity `w` (null: constant viscosity):
