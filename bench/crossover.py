@@ -3,8 +3,11 @@
 """Where the iterative PETSc path beats CHOLMOD (issue 20, docs/benchmarks.md
 "Crossover: CHOLMOD against the iterative PETSc path").
 
-Runs one case at growing mesh sizes twice:
+Runs one case at growing mesh sizes by
   cholmod    the default solve (penalty formulation, CHOLMOD, Newton with its coarse levels);
+  cholmod-condensed  the same with the iterative path's discretisation (mixed Q2-P1disc,
+             the pressure condensed cell by cell: the same discrete problem, so the same
+             load to the loops' tolerance);
   iterative  the mixed Q2-P1disc problem kept as a saddle point, PETSc FGMRES + fieldsplit
              Schur with BoomerAMG on the velocity (the secant loop: the only loop that path
              has), its default options (docs/petsc.md).
@@ -32,6 +35,9 @@ GEOMETRIES = {
 }
 PATHS = {
     "cholmod": ["--set", "solver.linear=cholmod"],
+    # the iterative path's discretisation (Q2-P1disc, d = 1e-3), condensed cell by cell
+    "cholmod-condensed": ["--set", "solver.linear=cholmod", "--set", "formulation.type=mixed",
+                          "--set", "formulation.pressure=P1disc"],
     "iterative": ["--set", "formulation.type=mixed", "--set", "formulation.pressure=P1disc",
                   "--set", "formulation.discontinuous_pressure=saddle_point",
                   "--set", "solver.linear=petsc", "--set", "solver.method=secant",
@@ -75,7 +81,7 @@ def main():
     parser.add_argument("--binary", default="build/formflow")
     parser.add_argument("--geometry", choices=GEOMETRIES, default="3d")
     parser.add_argument("--sizes", nargs="+")
-    parser.add_argument("--paths", nargs="+", choices=PATHS, default=list(PATHS))
+    parser.add_argument("--paths", nargs="+", choices=PATHS, default=["cholmod-condensed", "iterative"])
     parser.add_argument("--steps", type=int, default=0)
     parser.add_argument("--set", action="append", default=[], dest="sets")
     parser.add_argument("--json", help="also append every row to this file (JSON lines)")

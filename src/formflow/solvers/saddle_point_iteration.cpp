@@ -54,10 +54,12 @@ template <int dim> LaggedStep SaddlePointSolve<dim>::solve(const VectorX* w, Vec
     }
     if (step == 0) {
       saddle.fill_matrix(system_);
-      if (const auto stop = linear_.analyse_once(saddle.matrix())) return {stop, false};
-      // The viscosities of this step's assembly scale the Schur preconditioner.
+      // The viscosities of this step's assembly scale the Schur preconditioner. Given
+      // before the analysis: PETSc chooses its iterative default (and the velocity
+      // block's node layout) from it at the first matrix it sees.
       linear_.solver().set_schur_preconditioner(saddle.schur_preconditioner(),
                                                 saddle.pressure_block_size());
+      if (const auto stop = linear_.analyse_once(saddle.matrix())) return {stop, false};
       if (const auto stop = linear_.factorize(saddle.matrix())) return {stop, false};
     }
     const VectorX& pressure = multipliers.global_pressure();

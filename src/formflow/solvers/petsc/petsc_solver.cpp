@@ -277,13 +277,19 @@ private:
     return RowMatrix(transposed * full * frame_matrix_);
   }
 
-  /// Whether the velocity block is laid out node by node (NodeBlockLayout): asked for by
-  /// the option -formflow_velocity_node_blocks (read here, so it counts as used), for a
-  /// saddle point whose velocity nodes set_velocity_nodes gave. Decided at the first copy.
+  /// Whether the velocity block is laid out node by node (NodeBlockLayout), for a saddle
+  /// point whose velocity nodes set_velocity_nodes gave: by default where the iterative
+  /// default serves (a block-diagonal Schur matrix, make_ksp), since BoomerAMG then
+  /// coarsens each velocity component on its own (hypre's systems AMG, block size dim)
+  /// and needed fewer iterations at half the operator complexity in 3D
+  /// (docs/benchmarks.md "Velocity AMG settings in 3D"); the option
+  /// -formflow_velocity_node_blocks (read here, so it counts as used) says otherwise.
+  /// Decided at the first copy.
   bool lay_out_nodes(Index n_rows) {
     if (!layout_decided_) {
       layout_decided_ = true;
-      PetscBool wanted = PETSC_FALSE, given = PETSC_FALSE;
+      PetscBool wanted = schur_block_ > 0 && schur_matrix_ ? PETSC_TRUE : PETSC_FALSE;
+      PetscBool given = PETSC_FALSE;
       PetscOptionsGetBool(nullptr, nullptr, "-formflow_velocity_node_blocks", &wanted, &given);
       if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
         layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, n_rows);
