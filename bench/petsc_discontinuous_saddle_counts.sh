@@ -7,7 +7,11 @@
 # (cases/slab-extrusion-3d.toml) and the 3D round quarter (cases/round-rod-3d.toml),
 # each with its own default friction, d = 1e-3 (default) and d = 0, δ = 1e-4.
 # Velocity block: one GAMG V-cycle with the rigid-body near-null space, or one
-# BoomerAMG V-cycle (the default). Counts only: they do not depend on the machine's load.
+# BoomerAMG V-cycle (the default; since session 11 on the velocity block laid out node
+# by node, block size dim: hypre's systems AMG — `hypre-scalar` is the free numbering),
+# and the 3D settings tried in session 11 (the table below). Counts only: they do not
+# depend on the machine's load; each line also gives the run's CPU time and peak RSS
+# (/usr/bin/time, one BLAS thread), which do (machine not quiet unless said).
 # Usage: bench/petsc_discontinuous_saddle_counts.sh [BUILD_DIR] [VARIANTS] [d values] [--set ...]
 #   (arguments after the third go to every run, e.g. --set geometry.die=wedge)
 #   (defaults: build, "gamg hypre", "1e-3 0"); PLANE_SIZES and SLAB_SIZES (default
