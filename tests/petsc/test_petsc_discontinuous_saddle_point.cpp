@@ -120,6 +120,31 @@ TEST(DiscontinuousSaddlePoint, KrylovCountsStayBoundedUnderRefinement) {
   EXPECT_LE(fine, 2 * coarse);
 }
 
+/// The velocity block laid out node by node (systems BoomerAMG, the default on this
+/// path) or in the free numbering (`-formflow_velocity_node_blocks 0`, scalar BoomerAMG)
+/// is the same system renumbered plus decoupled rows: the same secant iterates, so the
+/// same load within the Krylov solves' error (agreement() with rtol/r_s for each run).
+TEST(DiscontinuousSaddlePoint, TheNodeLayoutIsARenumberingAndCanBeSwitchedOff) {
+  constexpr Real krylov_tolerance = 1e-12; // -ksp_rtol below
+  const auto saddle_run = [](const std::string& options) {
+    return run({{"mesh.size", "2.5"},
+                {"formulation.discontinuous_pressure", "saddle_point"},
+                {"solver.linear", "petsc"},
+                {"solver.petsc_options", "-ksp_rtol 1e-12" + options}},
+               /*estimate_condition=*/true);
+  };
+  const app::Simulation laid_out = saddle_run("");
+  const app::Simulation free_numbering = saddle_run(" -formflow_velocity_node_blocks 0");
+  ASSERT_TRUE(laid_out.reciprocal_condition.has_value());
+  // Both runs err by at most rtol/r_s each (r_s the saddle point's reciprocal condition).
+  const Real tolerance = agreement(2 * krylov_tolerance / *laid_out.reciprocal_condition);
+  std::cout << "node layout against free numbering: "
+            << relative_difference(laid_out, free_numbering) << " (tolerance " << tolerance
+            << ")\n";
+  EXPECT_LE(relative_difference(laid_out, free_numbering), tolerance);
+  EXPECT_NEAR(laid_out.results.iterations, free_numbering.results.iterations, 1);
+}
+
 /// The largest Krylov count of the secant steps of `simulation`.
 long largest_step_count(const app::Simulation& simulation) {
   long largest = 0;

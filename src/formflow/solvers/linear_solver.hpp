@@ -77,6 +77,16 @@ public:
   virtual void set_local_frames(std::vector<assembly::LocalFrame> frames) {
     static_cast<void>(frames);
   }
+  /// The node of each velocity row of the saddle point whose fields set_fields gave:
+  /// `dof_of_velocity[i]` = node·components + component of velocity row i. An AMG that
+  /// coarsens node by node (BoomerAMG's nodal options, GAMG's aggregates with the
+  /// rigid-body modes) needs rows grouped by node with a constant block size, which the
+  /// free dofs are not; PETSc's iterative path lays the block out so (docs/petsc.md).
+  /// Call before analyze. A direct back-end has no use for it.
+  virtual void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) {
+    static_cast<void>(components);
+    static_cast<void>(dof_of_velocity);
+  }
 };
 
 /// The key's spelling of `kind` ("cholmod", "umfpack").

@@ -30,6 +30,9 @@ public:
   void set_fields(Index n_first, std::vector<VectorX> near_null_space) override {
     solver_->set_fields(n_first, std::move(near_null_space));
   }
+  void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
+    solver_->set_velocity_nodes(components, std::move(dof_of_velocity));
+  }
 
 private:
   bool same_pattern(const assembly::SparseMatrix& matrix) const {

@@ -28,6 +28,12 @@ SaddlePointSolve<dim>::SaddlePointSolve(FormingNonlinearProblem<dim>& problem,
   // Cartesian components of every Γ3 node; in the node's normal–tangent frame it is one
   // diagonal entry, which AMG's smoothers resolve (docs/petsc.md).
   linear.solver().set_local_frames(assembly::contact_frames(forming.discretisation()));
+  // Each velocity row's node, for an AMG that coarsens node by node (block size dim).
+  const assembly::ScatterPlan& plan = forming.plan();
+  std::vector<Index> dof_of_velocity(static_cast<std::size_t>(plan.n_free()));
+  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+    if (const Index row = plan.free_index(dof); row >= 0) dof_of_velocity[row] = dof;
+  linear.solver().set_velocity_nodes(dim, std::move(dof_of_velocity));
 }
 
 /// One secant step at the lagged velocity `w` (null: constant viscosity):
@@ -48,10 +54,12 @@ template <int dim> LaggedStep SaddlePointSolve<dim>::solve(const VectorX* w, Vec
     }
     if (step == 0) {
       saddle.fill_matrix(system_);
-      if (const auto stop = linear_.analyse_once(saddle.matrix())) return {stop, false};
-      // The viscosities of this step's assembly scale the Schur preconditioner.
+      // The viscosities of this step's assembly scale the Schur preconditioner. Given
+      // before the analysis: PETSc chooses its iterative default (and the velocity
+      // block's node layout) from it at the first matrix it sees.
       linear_.solver().set_schur_preconditioner(saddle.schur_preconditioner(),
                                                 saddle.pressure_block_size());
+      if (const auto stop = linear_.analyse_once(saddle.matrix())) return {stop, false};
       if (const auto stop = linear_.factorize(saddle.matrix())) return {stop, false};
     }
     const VectorX& pressure = multipliers.global_pressure();

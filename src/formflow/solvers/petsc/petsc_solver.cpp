@@ -4,6 +4,7 @@
 #include "formflow/solvers/petsc/petsc_solver.hpp"
 
 #include "formflow/core/error.hpp"
+#include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
 
@@ -12,6 +13,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 namespace formflow::solvers {
@@ -105,12 +107,13 @@ public:
     } else {
       PetscScalar* values = nullptr;
       VecGetArray(rhs_, &values);
-      if (frames_.empty()) {
+      if (frames_.empty() && layout_.empty()) {
         std::copy(rhs.data(), rhs.data() + n, values);
-      } else { // Qᵀ b: the system is Qᵀ K Q y = Qᵀ b (set_local_frames)
+      } else { // Qᵀ b: the system is Qᵀ K Q y = Qᵀ b (set_local_frames), then laid out
         VectorX rotated = rhs;
         assembly::to_frames(frames_, rotated);
-        std::copy(rotated.data(), rotated.data() + n, values);
+        if (!layout_.empty()) rotated = layout_.embed(rotated);
+        std::copy(rotated.data(), rotated.data() + rotated.size(), values);
       }
       VecRestoreArray(rhs_, &values);
     }
@@ -135,7 +138,12 @@ public:
       return true;
     }
     VecGetArrayRead(solution_, &result);
-    std::copy(result, result + n, solution.data());
+    if (layout_.empty()) {
+      std::copy(result, result + n, solution.data());
+    } else {
+      solution = layout_.restrict(
+          std::span<const Real>(result, static_cast<std::size_t>(layout_.n_embedded())));
+    }
     VecRestoreArrayRead(solution_, &result);
     assembly::from_frames(frames_, solution); // x = Q y
     return true;
@@ -172,6 +180,12 @@ public:
     frame_matrix_ = {};
   }
 
+  void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
+    if (distributed_) return; // the saddle point, their one user, is refused on several ranks
+    components_ = components;
+    dof_of_velocity_ = std::move(dof_of_velocity);
+  }
+
 private:
   /// The KSP with formflow's defaults, then the options database over them.
   bool make_ksp(petsc::ErrorCapture& capture) {
@@ -205,22 +219,32 @@ private:
   /// "nearnullspace" composed on a split's IS to that split's matrix, which GAMG reads).
   bool split_fields(PC preconditioner) {
     const auto n = static_cast<PetscInt>(pattern_outer_.size()) - 1;
-    if (n_first_ <= 0 || n_first_ >= n)
+    if (n_first_ <= 0 || n_first_ >= (layout_.empty() ? n : layout_.n_rows()))
       refuse("-pc_type fieldsplit needs a saddle point (velocity and pressure fields), and "
              "this loop's systems have the velocity only",
              "use fieldsplit with formulation.type = \"mixed\" and formulation.pressure = "
              "\"Q1\"; for the velocity systems try -pc_type gamg or the default");
-    const auto n_first = static_cast<PetscInt>(n_first_);
+    const auto n_first =
+        static_cast<PetscInt>(layout_.empty() ? n_first_ : layout_.n_velocity_embedded());
     ISCreateStride(PETSC_COMM_SELF, n_first, 0, 1, &fields_[0]);
     ISCreateStride(PETSC_COMM_SELF, n - n_first, n_first, 1, &fields_[1]);
+    // Laid out node by node: the split's matrix gets the block size (MatCreateSubMatrix
+    // takes it from the IS), which BoomerAMG's nodal options and GAMG read.
+    if (!layout_.empty()) ISSetBlockSize(fields_[0], layout_.components());
     if (!near_null_space_.empty()) {
       std::vector<Vec> modes(near_null_space_.size());
       for (std::size_t k = 0; k < modes.size(); ++k) {
         FF_ASSERT(near_null_space_[k].size() == n_first_, "one mode entry per velocity dof");
         VecCreateSeq(PETSC_COMM_SELF, n_first, &modes[k]);
-        // The modes in the unknowns PETSc solves for: y = Qᵀ x.
+        // The modes in the unknowns PETSc solves for: y = Qᵀ x (laid out: zero on the
+        // prescribed components' slots, which are decoupled).
         VectorX mode = near_null_space_[k];
         assembly::to_frames(frames_, mode);
+        if (!layout_.empty()) {
+          VectorX padded = VectorX::Zero(layout_.n_rows());
+          padded.head(n_first_) = mode;
+          mode = layout_.embed(padded);
+        }
         PetscScalar* values = nullptr;
         VecGetArray(modes[k], &values);
         std::copy(mode.data(), mode.data() + n_first, values);
@@ -253,6 +277,26 @@ private:
     return RowMatrix(transposed * full * frame_matrix_);
   }
 
+  /// Whether the velocity block is laid out node by node (NodeBlockLayout), for a saddle
+  /// point whose velocity nodes set_velocity_nodes gave: by default where the iterative
+  /// default serves (a block-diagonal Schur matrix, make_ksp), since BoomerAMG then
+  /// coarsens each velocity component on its own (hypre's systems AMG, block size dim)
+  /// and needed fewer iterations at half the operator complexity in 3D
+  /// (docs/benchmarks.md "Velocity AMG settings in 3D"); the option
+  /// -formflow_velocity_node_blocks (read here, so it counts as used) says otherwise.
+  /// Decided at the first copy.
+  bool lay_out_nodes(Index n_rows) {
+    if (!layout_decided_) {
+      layout_decided_ = true;
+      PetscBool wanted = schur_block_ > 0 && schur_matrix_ ? PETSC_TRUE : PETSC_FALSE;
+      PetscBool given = PETSC_FALSE;
+      PetscOptionsGetBool(nullptr, nullptr, "-formflow_velocity_node_blocks", &wanted, &given);
+      if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
+        layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, n_rows);
+    }
+    return !layout_.empty();
+  }
+
   /// Modified Gram–Schmidt, in place.
   static void orthonormalize(std::vector<Vec>& vectors) {
     for (std::size_t k = 0; k < vectors.size(); ++k) {
@@ -282,6 +326,8 @@ private:
     } else {
       rows = in_frames(matrix);
     }
+    if (lay_out_nodes(rows.rows()))
+      rows = layout_.embed(rows, petsc::mean_absolute_diagonal(rows, n_first_));
     rows.makeCompressed();
     const auto n = static_cast<PetscInt>(rows.rows());
     const bool same_pattern =
@@ -456,7 +502,11 @@ private:
   Index schur_block_ = 0;                    ///< its cell block size (0: not block diagonal)
   std::vector<assembly::LocalFrame> frames_; ///< PETSc solves for y, x = Q y (set_local_frames)
   assembly::SparseMatrix frame_matrix_;      ///< Q, made at the first copy
-  petsc::DefaultOptions defaults_;           ///< the saddle-point defaults in the database
+  int components_ = 1;                       ///< velocity components per node
+  std::vector<Index> dof_of_velocity_;       ///< velocity row → mesh dof (set_velocity_nodes)
+  petsc::NodeBlockLayout layout_;            ///< the velocity block node by node, if asked
+  bool layout_decided_ = false;
+  petsc::DefaultOptions defaults_; ///< the saddle-point defaults in the database
   long iterations_ = 0;
   bool checked_unused_ = false;
 };
