@@ -25,8 +25,9 @@ double effectivity(const io::Case& case_, double exact, bool contained) {
   EXPECT_TRUE(results.load_error.error.has_value()) << results.load_error.unavailable;
   const double error = std::abs(results.pressure.ram_reaction - exact);
   const double index = results.load_error.error.value_or(0.0) / error;
-  if (contained)
+  if (contained) {
     EXPECT_LE(error, results.load_error.error.value_or(0.0)) << "p_h ± estimate holds p";
+  }
   std::printf("h = %g: p_h = %.5f, estimate %.5f, error %.5f, effectivity %.3f\n", case_.mesh.size,
               results.pressure.ram_reaction, results.load_error.error.value_or(0.0), error, index);
   return index;
