@@ -148,9 +148,11 @@ TEST(FacetNormalAxis, CoordinatePlanesOfTheSlabAndNoneOnTheWedgeFace) {
     EXPECT_EQ(*axis, facet.local_face / 2) << mesh::label_name(facet.label);
   }
   EXPECT_GT(tilted, 0);
-  for (const mesh::BoundaryFacet& facet : plane.facets)
-    if (facet.label == BoundaryLabel::Symmetry)
+  for (const mesh::BoundaryFacet& facet : plane.facets) {
+    if (facet.label == BoundaryLabel::Symmetry) {
       EXPECT_EQ(mesh::facet_normal_axis(plane, facet).value_or(-1), 1);
+    }
+  }
 }
 
 } // namespace
