@@ -127,7 +127,9 @@ TEST_P(SlabConstraints, FixTheNormalComponentOnEachSymmetryPlaneAndTheDrivenEnd)
     for (int axis = 0; axis < 3; ++axis) {
       const Index dof = fem::dof_of<3>(node, axis);
       EXPECT_EQ(c.prescribed[dof], expected[axis]) << "u_" << axis << " at " << p.transpose();
-      if (expected[axis]) EXPECT_EQ(c.values[dof], axis == 0 ? plane.x_value : 0.0);
+      if (expected[axis]) {
+        EXPECT_EQ(c.values[dof], axis == 0 ? plane.x_value : 0.0);
+      }
     }
     n_driven += plane.x_prescribed;
   }

@@ -148,10 +148,11 @@ TEST(NodalRule, PointsAreTheFaceLatticeAndTheRulesIntegrateLikeTrapezoidAndSimps
           sum +=
               rule.weights[q] * std::pow(rule.points[q].x(), a) * std::pow(rule.points[q].y(), b);
         const double exact = monomial_integral(a) * monomial_integral(b);
-        if (a <= degree)
+        if (a <= degree) {
           EXPECT_NEAR(sum, exact, 1e-14) << n << ": " << a << b;
-        else if (a % 2 == 0 && b % 2 == 0) // odd powers integrate to 0 with any symmetric rule
+        } else if (a % 2 == 0 && b % 2 == 0) { // odd powers integrate to 0 with any symmetric rule
           EXPECT_GT(std::abs(sum - exact), 0.1 * std::abs(exact)) << n << ": " << a << b;
+        }
       }
   }
 }
