@@ -35,15 +35,6 @@ post::LoadErrorEstimate unavailable(std::string why) {
   return estimate;
 }
 
-/// The load Q(u)/height of `problem` at `u` (the driven rows of the Newton assembly's
-/// internal force, as the estimate's weighted residuals count it).
-template <int dim> Real load_at(const assembly::FormingProblem<dim>& problem, const VectorX& u) {
-  VectorX force;
-  problem.assemble_newton(u, problem.friction_thresholds(u), assembly::NewtonDuals<dim>{}, force,
-                          nullptr, nullptr);
-  return problem.driven_force(force) / problem.driven_height();
-}
-
 /// The mixed formulation's condensed pressure (and contact multipliers) attached to
 /// `problem`; null for the penalty formulation. Owned by the caller, who keeps it alive
 /// as long as `problem`.
@@ -79,7 +70,7 @@ std::optional<Real> solved_load(const io::Case& case_, const mesh::Mesh<dim>& me
       solvers::newton_iteration(nonlinear, *solver, control, {}, inner, &start);
   iterations = static_cast<Index>(outcome.history.size());
   if (outcome.stop_reason != solvers::StopReason::Converged) return std::nullopt;
-  return load_at(problem, outcome.velocity);
+  return post::driven_load(problem, outcome.velocity);
 }
 
 /// The case with every regularisation doubled: the penalties d (incompressibility,
@@ -109,7 +100,7 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
                        post::LoadErrorEstimate& estimate, PhaseTimes& times) {
   if (case_.adapt.indicators_only) return; // an adaptive run's marking-only cycle
   ScopedTimer timer(times, "error estimate");
-  const Real load = load_at(problem, u);
+  const Real load = post::driven_load(problem, u);
   const mesh::Mesh<dim>& mesh = problem.mesh();
   const Real coarser_size = 2 * case_.mesh.size;
   if (mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured &&

@@ -29,6 +29,12 @@ template <int dim> struct ContactPoint {
   /// Regularised: |λ_T| < 0.99 τ_f (|u_T| < 7 d_T); exact: |λ + r u_T| ≤ τ_f. Never
   /// where τ_f = 0.
   bool sticking = false;
+
+  /// The part of `vector` in the tangent plane at this point (a multiplier handed in
+  /// from elsewhere need not be tangential).
+  Point<dim> tangential_part(const Point<dim>& vector) const {
+    return vector - vector.dot(normal) * normal;
+  }
 };
 
 /// Exact friction at one point for the frozen multiplier λ̂ (its tangential part)

@@ -25,7 +25,7 @@ bool friction_acts_on(const physics::Friction& friction, mesh::BoundaryLabel lab
 template <int dim>
 void exact_friction_point(const Point<dim>& multiplier, Real augmentation,
                           ContactPoint<dim>& point) {
-  const Point<dim> lambda = multiplier - multiplier.dot(point.normal) * point.normal;
+  const Point<dim> lambda = point.tangential_part(multiplier);
   const Point<dim> trial = lambda + augmentation * point.tangential_velocity;
   const Real s = physics::coulomb_projection_factor(point.friction_threshold, trial.norm());
   point.friction_weight = s * augmentation;

@@ -59,15 +59,6 @@ VectorX reaction_gradient(const assembly::FormingProblem<dim>& problem,
   return gradient;
 }
 
-/// The load Q(u)/height on `problem` (the driven rows of the Newton assembly's force).
-template <int dim>
-Real coarse_reaction(const assembly::FormingProblem<dim>& problem, const VectorX& u) {
-  VectorX force;
-  problem.assemble_newton(u, problem.friction_thresholds(u), assembly::NewtonDuals<dim>{}, force,
-                          nullptr, nullptr);
-  return problem.driven_force(force) / problem.driven_height();
-}
-
 LoadErrorEstimate unavailable(std::string why) {
   LoadErrorEstimate estimate;
   estimate.unavailable = std::move(why);
@@ -96,7 +87,7 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
     PhaseTimes inner;
     auto settle_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
     solvers::FormingNonlinearProblem<dim> nonlinear(fine);
-    const Real coarse_load = coarse_reaction(coarse, u);
+    const Real coarse_load = driven_load(coarse, u);
     Real previous_load = std::numeric_limits<Real>::quiet_NaN();
     int quiet_iterations = 0;
     nonlinear.set_after_iteration(
@@ -182,6 +173,14 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
   estimate.discretisation_error = discretisation_tail(estimate.enriched_change, estimate.ratio);
   estimate.error = estimate.discretisation_error;
   return estimate;
+}
+
+template <int dim>
+Real driven_load(const assembly::FormingProblem<dim>& problem, const VectorX& u) {
+  VectorX force;
+  problem.assemble_newton(u, problem.friction_thresholds(u), assembly::NewtonDuals<dim>{}, force,
+                          nullptr, nullptr);
+  return problem.driven_force(force) / problem.driven_height();
 }
 
 std::optional<Real> tail_ratio(std::optional<Real> observed_ratio) {
@@ -274,6 +273,8 @@ template LoadErrorEstimate
 estimate_load_error<3>(const assembly::FormingProblem<3>&, const VectorX&,
                        const assembly::FormingProblem<3>&, const std::vector<Index>&,
                        solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&);
+template Real driven_load<2>(const assembly::FormingProblem<2>&, const VectorX&);
+template Real driven_load<3>(const assembly::FormingProblem<3>&, const VectorX&);
 template std::vector<Index> parent_cells<2>(const mesh::Mesh<2>&, const mesh::Mesh<2>&);
 template std::vector<Index> parent_cells<3>(const mesh::Mesh<3>&, const mesh::Mesh<3>&);
 

@@ -82,6 +82,10 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
                                       solvers::LinearSolverKind kind,
                                       const solvers::IterationControl* settle, PhaseTimes& times);
 
+/// The load Q(u)/height of `problem` at `u`: the driven rows of the Newton assembly's
+/// internal force, as the estimate's weighted residuals count it.
+template <int dim> Real driven_load(const assembly::FormingProblem<dim>& problem, const VectorX& u);
+
 /// For each cell of `fine`, the cell of `coarse` that contains its centroid (the
 /// mean of its nodes): bounding-box buckets, then the nearest centroid among the
 /// cells whose box holds it. Exact for a mesh and its refinement by 2 with

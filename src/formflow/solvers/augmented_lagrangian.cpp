@@ -88,7 +88,7 @@ update_friction_multipliers(const assembly::FormingProblem<dim>& problem, const 
   if (!asked.empty() && held_residual >= release_from) {
     for (std::size_t k : held) {
       const assembly::ContactPoint<dim>& point = state[k];
-      const Point<dim> tangential = asked[k] - asked[k].dot(point.normal) * point.normal;
+      const Point<dim> tangential = point.tangential_part(asked[k]);
       if (point.friction_threshold > 0 && tangential.norm() > point.friction_threshold) {
         multipliers.traction[k] = tangential;
         update.released.push_back(k);

@@ -67,7 +67,7 @@ Real held_friction_residual(std::vector<assembly::ContactPoint<dim>> state,
                             const std::vector<std::size_t>& held) {
   for (std::size_t k : held) {
     assembly::ContactPoint<dim>& point = state[k];
-    point.friction_traction = asked[k] - asked[k].dot(point.normal) * point.normal;
+    point.friction_traction = point.tangential_part(asked[k]);
   }
   return friction_residual(state);
 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace formflow::solvers {
@@ -99,10 +100,13 @@ TEST(HeldFrictionResidual, SeesAHeldReactionBeyondTheCoulombLimit) {
   asked[1] = Point<2>(-0.6, 0.0);
   ASSERT_EQ(friction_residual(points), 0.0);
   // Judged with the asked 0.6 (the scale r̄ multiplies u_T = 0 there): 0.1 at weight 2,
-  // relative to ‖λ‖ with λ = 0.6 at that point. Rounding only: a few ε.
+  // relative to ‖λ‖ with λ = 0.6 at that point. Rounding only: the excess 0.6 − 0.5 loses
+  // a factor 6 of relative accuracy to cancellation (6ε), and the sums of three squares,
+  // the quotient and the square roots on both sides add about 10ε more: 32ε bounds it.
   const Real traction = 0.5 * 0.5 * 1.0 + 0.6 * 0.6 * 2.0 + 0.2 * 0.2 * 1.0;
   const Real expected = 0.1 * std::sqrt(2.0 / traction);
-  EXPECT_TRUE(testing::approx(held_friction_residual(points, asked, {1}), expected, 1e-12));
+  constexpr Real rounding = 32 * std::numeric_limits<Real>::epsilon();
+  EXPECT_TRUE(testing::approx(held_friction_residual(points, asked, {1}), expected, rounding));
 }
 
 TEST(HeldFrictionResidual, IsTheProjectedResidualWhereTheReactionLiesInsideTheDisc) {
