@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: MIT
 // CHOLMOD supernodal Cholesky behind the LinearSolver interface.
 #include "formflow/solvers/linear_solver.hpp"
+#include "formflow/solvers/openmp_team_limit.hpp"
 
 #include <Eigen/CholmodSupport>
 
 namespace formflow::solvers {
 
 namespace {
+
+/// CHOLMOD's own OpenMP teams run single-threaded (solvers/openmp_team_limit.hpp:
+/// a team per supernode costs more in wake-ups than its loops save); its BLAS keeps
+/// OpenBLAS's threads.
+constexpr unsigned cholmod_team_threads = 1;
 
 class CholmodSolver final : public LinearSolver {
 public:
@@ -16,14 +22,17 @@ public:
     factorization_.cholmod().print = 0;
   }
   bool analyze(const assembly::SparseMatrix& lower) override {
+    const OpenMpTeamLimit team(cholmod_team_threads);
     factorization_.analyzePattern(lower);
     return factorization_.info() == Eigen::Success;
   }
   bool factorize(const assembly::SparseMatrix& lower) override {
+    const OpenMpTeamLimit team(cholmod_team_threads);
     factorization_.factorize(lower);
     return factorization_.info() == Eigen::Success;
   }
   bool solve(const VectorX& rhs, VectorX& solution) override {
+    const OpenMpTeamLimit team(cholmod_team_threads);
     solution = factorization_.solve(rhs);
     return factorization_.info() == Eigen::Success;
   }
