@@ -14,6 +14,7 @@
 #include "formflow/io/output_directory.hpp"
 #include "formflow/io/output_error.hpp"
 #include "formflow/io/results_writer.hpp"
+#include "formflow/solvers/blas_runtime.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -199,7 +200,15 @@ int run_case(const Options& options) {
 int run_cli(int argc, char** argv) {
   CLI::App app{"formflow: steady-state metal forming (extrusion, drawing) by the finite element "
                "method of Angelov (2010)"};
-  app.set_version_flag("--version", std::string("formflow ") + FORMFLOW_VERSION);
+  // The version, and the BLAS this process found (its kernels decide the speed of every
+  // factorisation: solvers/blas_runtime.hpp).
+  app.set_version_flag("--version", [] {
+    const solvers::BlasRuntime blas = solvers::blas_runtime();
+    std::string text = std::string("formflow ") + FORMFLOW_VERSION + "\nBLAS: " + blas.library;
+    if (!blas.core.empty()) text += ", kernels " + blas.core;
+    if (blas.threads) text += ", " + std::to_string(*blas.threads) + " thread(s)";
+    return text;
+  });
   app.require_subcommand(1);
   app.footer(exit_codes);
   Options options;

@@ -6,6 +6,7 @@
 #include "formflow/io/problem_shape.hpp"
 #include "formflow/io/results_writer.hpp"
 #include "formflow/post/load_error_estimate.hpp"
+#include "formflow/solvers/blas_runtime.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -269,6 +270,12 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["linear_algebra"]["factor_nonzeros"] =
       count_or_null_real(results.linear_algebra.factor_nonzeros);
   out["linear_algebra"]["factor_flops"] = count_or_null_real(results.linear_algebra.factor_flops);
+  // The BLAS that did the dense work, and which kernels it chose for this CPU: the same
+  // run is slower on OpenBLAS's generic kernels (solvers/blas_runtime.hpp).
+  const solvers::BlasRuntime blas = solvers::blas_runtime();
+  out["linear_algebra"]["blas"] = {{"library", blas.library},
+                                   {"core", blas.core.empty() ? json(nullptr) : json(blas.core)},
+                                   {"threads", blas.threads ? json(*blas.threads) : json(nullptr)}};
   // How often each timed phase ran (timing_s / timing_calls = cost per call).
   json calls = json::object();
   for (const auto& [phase, seconds] : results.timing.all())
