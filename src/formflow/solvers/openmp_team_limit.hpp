@@ -21,9 +21,9 @@ namespace formflow::solvers {
 /// capped. The linker exports it from an executable that links this library, since
 /// CHOLMOD refers to it, and the dynamic linker binds CHOLMOD's call to the
 /// executable's definition ahead of libgomp's. Regions opened while no limit is alive
-/// pass unchanged. The Python module keeps its static library's symbols local
-/// (python/CMakeLists.txt), so there CHOLMOD's teams are not capped: OMP_THREAD_LIMIT=1
-/// in the environment does the same.
+/// pass unchanged. The Python module, whose static library's symbols stay local, links
+/// this file's object directly so that it exports the entry point too
+/// (python/CMakeLists.txt).
 class OpenMpTeamLimit {
 public:
   explicit OpenMpTeamLimit(unsigned threads);
