@@ -35,6 +35,20 @@ Real cpu_seconds() {
   return static_cast<Real>(std::clock()) / CLOCKS_PER_SEC;
 }
 
+/// When a cycle began, by the wall clock and the process's CPU time: what a cycle's
+/// entry records as `time_s`, `cpu_s` and `estimate_time_s`.
+struct CycleClock {
+  Clock::time_point wall = Clock::now();
+  Real cpu = cpu_seconds();
+
+  /// The cycle's times up to now, its estimate's from the cycle's own phases.
+  void stamp(post::AdaptCycle& entry, const post::Results& results) const {
+    entry.seconds = seconds_since(wall);
+    entry.cpu_seconds = cpu_seconds() - cpu;
+    entry.estimate_seconds = results.timing.get("error estimate");
+  }
+};
+
 /// |p_{h/2} − p|, the refined mesh's own error by the same argument as the cycle's
 /// (post::load_error_bound): the tail beyond p_{h/2}, F_s |p_{h/2} − p_h| q/(1 − q)
 /// (post::tail_beyond_refined), plus the penalties' offset. std::nullopt without a settled refined
@@ -81,9 +95,8 @@ Simulation simulate_on_refined_mesh(const io::Case& run, const Simulation& simul
 /// and its stop reason set, when it ends the adaptive run (the target reached there
 /// with the direct change, or it did not converge); std::nullopt to go on cycling.
 std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulation& simulation,
-                                              bool mesh_from_case, Clock::time_point cycle_start,
-                                              Real cycle_cpu_start, post::AdaptCycle& entry,
-                                              post::AdaptRecord& record,
+                                              bool mesh_from_case, const CycleClock& cycle_clock,
+                                              post::AdaptCycle& entry, post::AdaptRecord& record,
                                               const IterationCallback& on_iteration) {
   const post::LoadErrorEstimate& estimate = simulation.results.load_error;
   const Real target = run.adapt.cycle_target;
@@ -91,8 +104,10 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   if (simulation.dimension() != 2 || !expected ||
       *expected > target * std::abs(entry.load + estimate.enriched_change))
     return std::nullopt;
-  const auto refined_start = Clock::now();
-  const Real refined_cpu_start = cpu_seconds();
+  // The cycle's entry ends where the refined run begins (if it is kept).
+  post::AdaptCycle cycle_entry = entry;
+  cycle_clock.stamp(cycle_entry, simulation.results);
+  const CycleClock refined_clock;
   Simulation last = simulate_on_refined_mesh(run, simulation, mesh_from_case, on_iteration);
   const post::Results& results = last.results;
   const std::optional<Real> error = results.load_error.error;
@@ -101,9 +116,7 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   // Not reached after all (the direct change exceeded the linearised one): go on from
   // the cycle's mesh as if the refined run had not been tried.
   if (results.converged() && !reached) return std::nullopt;
-  entry.seconds = std::chrono::duration<double>(refined_start - cycle_start).count();
-  entry.cpu_seconds = refined_cpu_start - cycle_cpu_start;
-  entry.estimate_seconds = simulation.results.timing.get("error estimate");
+  entry = cycle_entry;
   record.cycles.push_back(entry);
   post::AdaptCycle final_entry;
   final_entry.cells = results.n_cells;
@@ -112,8 +125,8 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   final_entry.estimate = error;
   final_entry.newton_iterations = results.iterations;
   final_entry.refined_mesh = true;
-  final_entry.seconds = seconds_since(refined_start);
-  final_entry.cpu_seconds = cpu_seconds() - refined_cpu_start;
+  refined_clock.stamp(final_entry, results);
+  final_entry.estimate_seconds = 0; // its bar comes from the cycle's estimate
   record.cycles.push_back(final_entry);
   record.stop = reached ? "target reached on the refined mesh"
                         : "the run on the refined mesh did not converge";
@@ -209,8 +222,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   run.solver.load_error = solvers::LoadErrorMethod::Refined;
   const post::AdaptSettings& adapt = case_.adapt;
   post::AdaptRecord record;
-  auto cycle_start = Clock::now();
-  Real cycle_cpu_start = cpu_seconds();
+  CycleClock cycle_clock;
   Simulation simulation = simulate(run, on_iteration); // cycle 0: the case's mesh
   // Later cycles mark with the cheap estimate; the full one only where it may stop.
   const io::Case cheap = cheap_cycle_case(run);
@@ -225,9 +237,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     entry.load = results.pressure.ram_reaction;
     entry.newton_iterations = results.iterations;
     const auto finish = [&](std::string why, bool reached = false) {
-      entry.seconds = seconds_since(cycle_start);
-      entry.cpu_seconds = cpu_seconds() - cycle_cpu_start;
-      entry.estimate_seconds = results.timing.get("error estimate");
+      cycle_clock.stamp(entry, results);
       record.cycles.push_back(entry);
       record.stop = std::move(why);
       record.reached_target = reached;
@@ -261,9 +271,8 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
       }
       // The estimate's refined mesh, whose settled solution is at hand, may already be
       // accurate enough: solve there to δ and end on it, its load as the result.
-      if (std::optional<Simulation> last =
-              end_on_refined_mesh(run, simulation, cycle == 0, cycle_start, cycle_cpu_start, entry,
-                                  record, on_iteration)) {
+      if (std::optional<Simulation> last = end_on_refined_mesh(
+              run, simulation, cycle == 0, cycle_clock, entry, record, on_iteration)) {
         simulation = std::move(*last);
         break;
       }
@@ -295,12 +304,9 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
         post::target_node_sizes(current, marked), current.order);
     if (run.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(next);
     const VectorX start = fem::interpolate_nodal_field(current, results.fields.velocity, 2, next);
-    entry.seconds = seconds_since(cycle_start);
-    entry.cpu_seconds = cpu_seconds() - cycle_cpu_start;
-    entry.estimate_seconds = results.timing.get("error estimate");
+    cycle_clock.stamp(entry, results);
     record.cycles.push_back(entry);
-    cycle_start = Clock::now();
-    cycle_cpu_start = cpu_seconds();
+    cycle_clock = CycleClock{};
     cheap_cycle = scale.calibrated();
     simulation = simulate_from<2>(cheap_cycle ? cheap : run, std::move(next), start, on_iteration);
 #else
