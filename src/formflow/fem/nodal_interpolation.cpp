@@ -14,7 +14,17 @@
 
 namespace formflow::fem {
 
-namespace {
+// Not an anonymous namespace: interpolate_nodal_field<dim> (external linkage) captures
+// these types in its lambdas (-Wsubobject-linkage).
+namespace point_location {
+
+/// The buffers of reference_coordinates, reused from call to call (it runs for every
+/// candidate cell of every target node: allocations were a fifth of its time).
+template <int dim> struct InverseMapWork {
+  Eigen::Matrix<Real, dim, Eigen::Dynamic> corners;
+  VectorX values;
+  Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
+};
 
 /// Reference coordinates ξ of `x` in `cell` by Newton on x(ξ) = x, clamped to the
 /// reference cube after each step (so a point outside the cell ends on its
@@ -22,18 +32,16 @@ namespace {
 /// unclamped ξ lay (0 for a point inside).
 template <int dim>
 Point<dim> reference_coordinates(const mesh::Mesh<dim>& mesh, Index cell, const Point<dim>& x,
-                                 Real& outside) {
+                                 Real& outside, InverseMapWork<dim>& work) {
   const int n_nodes = mesh.nodes_per_cell();
-  Eigen::Matrix<Real, dim, Eigen::Dynamic> corners(dim, n_nodes);
-  for (int a = 0; a < n_nodes; ++a) corners.col(a) = mesh.nodes.col(mesh.cells(a, cell));
+  work.corners.resize(dim, n_nodes);
+  for (int a = 0; a < n_nodes; ++a) work.corners.col(a) = mesh.nodes.col(mesh.cells(a, cell));
   Point<dim> xi = Point<dim>::Zero();
-  VectorX values;
-  Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
   Point<dim> unclamped = xi;
   for (int k = 0; k < 20; ++k) {
-    tabulate_shape<dim>(mesh.order, xi, values, gradients);
-    const Point<dim> residual = corners * values - x;
-    const Tensor2<dim> jacobian = corners * gradients.transpose();
+    tabulate_shape<dim>(mesh.order, xi, work.values, work.gradients);
+    const Point<dim> residual = work.corners * work.values - x;
+    const Tensor2<dim> jacobian = work.corners * work.gradients.transpose();
     const Point<dim> step = jacobian.partialPivLu().solve(residual);
     unclamped = xi - step;
     xi = unclamped.cwiseMax(-1.0).cwiseMin(1.0);
@@ -43,11 +51,43 @@ Point<dim> reference_coordinates(const mesh::Mesh<dim>& mesh, Index cell, const 
   return xi;
 }
 
-} // namespace
+/// A cell's box: its nodes' bounding box widened so that it holds the whole cell. The
+/// map x(ξ) = Σ N_a(ξ) x_a is a convex combination for Q1 (no widening); for Q2 the
+/// Lebesgue constant of the three-point quadratic is 5/4 per direction, so
+/// |x(ξ) − c| ≤ (5/4)^dim max_a |x_a − c| with c the box's centre: the cell reaches
+/// past its nodes' box by at most ((5/4)^dim − 1)/2 of the box's extent (0.28 in 2D,
+/// 0.48 in 3D; near-affine cells stay far inside that). Plus round-off, and the 1e-9 of
+/// the reference cell by which a point may lie outside and still be taken as inside.
+template <int dim> struct CellBox {
+  Point<dim> low, high;
+  bool contains(const Point<dim>& x) const {
+    return (x.array() >= low.array()).all() && (x.array() <= high.array()).all();
+  }
+};
+
+template <int dim> std::vector<CellBox<dim>> cell_boxes(const mesh::Mesh<dim>& mesh) {
+  std::vector<CellBox<dim>> boxes(static_cast<std::size_t>(mesh.n_cells()));
+  for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+    Point<dim> low = Point<dim>::Constant(std::numeric_limits<Real>::max());
+    Point<dim> high = -low;
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a) {
+      low = low.cwiseMin(mesh.nodes.col(mesh.cells(a, cell)));
+      high = high.cwiseMax(mesh.nodes.col(mesh.cells(a, cell)));
+    }
+    const Real reach = mesh.order == 1 ? 0.0 : (std::pow(1.25, dim) - 1.0) / 2.0;
+    const Point<dim> margin =
+        reach * (high - low) + Point<dim>::Constant(1e-12) + 1e-9 * (high - low);
+    boxes[static_cast<std::size_t>(cell)] = CellBox<dim>{low - margin, high + margin};
+  }
+  return boxes;
+}
+
+} // namespace point_location
 
 template <int dim>
 VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& source_values,
                                 int components, const mesh::Mesh<dim>& target) {
+  using namespace point_location;
   FF_ASSERT(source_values.size() == source.n_nodes() * components,
             "source field has one value per node and component");
   // Buckets: a uniform grid over the source's bounding box, each cell entered in
@@ -70,18 +110,12 @@ VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& so
   int total = 1;
   for (int d = 0; d < dim; ++d) total *= n_buckets;
   std::vector<std::vector<Index>> buckets(total);
+  const std::vector<CellBox<dim>> boxes = cell_boxes(source);
   for (Index cell = 0; cell < source.n_cells(); ++cell) {
-    Point<dim> cell_low = Point<dim>::Constant(std::numeric_limits<Real>::max());
-    Point<dim> cell_high = -cell_low;
-    for (int a = 0; a < source.nodes_per_cell(); ++a) {
-      cell_low = cell_low.cwiseMin(source.nodes.col(source.cells(a, cell)));
-      cell_high = cell_high.cwiseMax(source.nodes.col(source.cells(a, cell)));
-    }
-    const Point<dim> margin = 1e-6 * (cell_high - cell_low) + Point<dim>::Constant(1e-12);
-    cell_low -= margin, cell_high += margin;
+    const CellBox<dim>& box = boxes[static_cast<std::size_t>(cell)];
     std::array<int, dim> first, last, index;
     for (int d = 0; d < dim; ++d)
-      first[d] = bucket_of(cell_low, d), last[d] = bucket_of(cell_high, d);
+      first[d] = bucket_of(box.low, d), last[d] = bucket_of(box.high, d);
     index = first;
     while (true) {
       buckets[flat(index)].push_back(cell);
@@ -92,8 +126,7 @@ VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& so
   }
 
   VectorX result(target.n_nodes() * components);
-  VectorX values;
-  Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
+  InverseMapWork<dim> work;
   for (Index node = 0; node < target.n_nodes(); ++node) {
     const Point<dim> x = target.nodes.col(node);
     std::array<int, dim> index;
@@ -103,15 +136,23 @@ VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& so
     Index best_cell = -1;
     Point<dim> best_xi;
     Real best_outside = std::numeric_limits<Real>::max();
+    // First the cells whose box holds x (no other cell can contain it); the rest only
+    // when none does (a boundary node just outside a curved outline: the least outside).
+    bool boxes_only = true;
     auto try_cells = [&](const std::vector<Index>& cells) {
       for (Index cell : cells) {
+        if (boxes_only && !boxes[static_cast<std::size_t>(cell)].contains(x)) continue;
         Real outside = 0;
-        const Point<dim> xi = reference_coordinates(source, cell, x, outside);
+        const Point<dim> xi = reference_coordinates(source, cell, x, outside, work);
         if (outside < best_outside) best_outside = outside, best_cell = cell, best_xi = xi;
         if (outside <= 1e-9) return;
       }
     };
     try_cells(buckets[flat(index)]);
+    if (best_outside > 1e-9) {
+      boxes_only = false;
+      try_cells(buckets[flat(index)]);
+    }
     if (best_outside > 1e-9) {
       // The neighbouring buckets (a node just outside a curved source outline).
       std::array<int, dim> offset;
@@ -130,11 +171,11 @@ VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& so
       }
     }
     FF_ASSERT(best_cell >= 0, "every target node lies near some source cell");
-    tabulate_shape<dim>(source.order, best_xi, values, gradients);
+    tabulate_shape<dim>(source.order, best_xi, work.values, work.gradients);
     for (int c = 0; c < components; ++c) {
       Real value = 0;
       for (int a = 0; a < source.nodes_per_cell(); ++a)
-        value += values[a] * source_values[source.cells(a, best_cell) * components + c];
+        value += work.values[a] * source_values[source.cells(a, best_cell) * components + c];
       result[node * components + c] = value;
     }
   }
