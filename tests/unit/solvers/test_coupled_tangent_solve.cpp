@@ -3,6 +3,8 @@
 // system to its tolerance, and costs nothing extra when N = 0.
 #include "formflow/solvers/coupled_tangent_solve.hpp"
 
+#include "support/grid_laplacian.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,25 +15,9 @@
 namespace formflow::testing {
 namespace {
 
-/// Lower triangle of the 5-point Laplacian on an m×m grid (SPD, Dirichlet).
-assembly::SparseMatrix laplacian_lower(int m) {
-  std::vector<Eigen::Triplet<Real, Index>> entries;
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) {
-      const Index k = j * m + i;
-      entries.emplace_back(k, k, 4.0);
-      if (i > 0) entries.emplace_back(k, k - 1, -1.0);
-      if (j > 0) entries.emplace_back(k, k - m, -1.0);
-    }
-  assembly::SparseMatrix lower(m * m, m * m);
-  lower.setFromTriplets(entries.begin(), entries.end());
-  lower.makeCompressed();
-  return lower;
-}
-
 TEST(CoupledTangentSolve, SolvesTheUnsymmetricSystemPreconditionedByTheSymmetricPart) {
   const int m = 20;
-  const assembly::SparseMatrix lower = laplacian_lower(m);
+  const assembly::SparseMatrix lower = grid_laplacian_lower(m);
   const Index n = lower.rows();
   // N = c dᵀ-type rank-two unsymmetric coupling, of the size of T's smallest modes.
   std::mt19937 generator(7);

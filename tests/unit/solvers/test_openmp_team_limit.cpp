@@ -4,12 +4,12 @@
 // size) in its supernodal loops, whatever OMP_NUM_THREADS says, and libgomp keeps those
 // threads for the life of the process.
 #include "formflow/solvers/linear_solver.hpp"
+#include "support/grid_laplacian.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <limits>
-#include <vector>
 
 namespace formflow::testing {
 namespace {
@@ -22,27 +22,11 @@ int threads_of_this_process() {
   return count;
 }
 
-/// The lower triangle of the 5-point Laplacian on an m×m grid: n = m² = 10 000 rows, far
-/// above the sizes at which CHOLMOD's loops open a team (it clears its n-long map in
-/// parallel once n > 128) and with supernodes of hundreds of columns.
-assembly::SparseMatrix grid_laplacian_lower(int m) {
-  std::vector<Eigen::Triplet<Real, Index>> lower;
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) {
-      const Index k = j * m + i;
-      lower.emplace_back(k, k, 4.0);
-      if (i > 0) lower.emplace_back(k, k - 1, -1.0);
-      if (j > 0) lower.emplace_back(k, k - m, -1.0);
-    }
-  assembly::SparseMatrix matrix(m * m, m * m);
-  matrix.setFromTriplets(lower.begin(), lower.end());
-  matrix.makeCompressed();
-  return matrix;
-}
-
 // Its own suite, so ctest runs it in a process of its own: no earlier test can have
 // started libgomp's pool already.
 TEST(CholmodOpenMpTeams, FactorisationStartsNoThreads) {
+  // n = 10 000 rows, far above the sizes at which CHOLMOD's loops open a team (it clears
+  // its n-long map in parallel once n > 128), with supernodes of hundreds of columns.
   const assembly::SparseMatrix matrix = grid_laplacian_lower(100);
   const int before = threads_of_this_process();
   auto solver = solvers::make_cholmod_solver();
