@@ -26,6 +26,22 @@ TomlPosition TomlLines::position(const toml::value& value) {
   return {line, offset - line_starts_[line - 1] + 1};
 }
 
+int line_of(TomlLines& lines, const toml::value& value) {
+  return static_cast<int>(lines.position(value).line);
+}
+
+std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table,
+                                                                      TomlLines& lines) {
+  std::vector<std::pair<TomlPosition, std::pair<std::string, const toml::value*>>> placed;
+  for (const auto& [name, value] : table.as_table())
+    placed.push_back({lines.position(value), {name, &value}});
+  std::sort(placed.begin(), placed.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::pair<std::string, const toml::value*>> entries;
+  for (auto& [position, entry] : placed) entries.push_back(std::move(entry));
+  return entries;
+}
+
 } // namespace formflow::io
 
 namespace formflow::io {

@@ -6,6 +6,8 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace formflow::io {
@@ -31,6 +33,14 @@ private:
   std::shared_ptr<const std::vector<char>> source_; ///< the source indexed, kept alive
   std::vector<std::size_t> line_starts_;            ///< offset of each line's first byte
 };
+
+/// The line `value` starts on (0 for a value with no source).
+int line_of(TomlLines& lines, const toml::value& value);
+
+/// The entries of `table` in the order they appear in the file: each position is
+/// found once (O(log n)), then the entries are sorted by it.
+std::vector<std::pair<std::string, const toml::value*>> in_file_order(const toml::value& table,
+                                                                      TomlLines& lines);
 
 } // namespace formflow::io
 
