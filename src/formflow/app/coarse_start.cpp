@@ -28,7 +28,7 @@ constexpr Real coarse_tolerance = 1e-2;
 
 /// Whether a structured channel mesh of `size` can be made for `geometry`: every
 /// length the generator divides is a multiple of it (the case validation's test
-/// for mesh.size, io/case_file.cpp) and the exit keeps fewer cells than the entry.
+/// for mesh.size, io/case_cross_checks.cpp) and the exit keeps fewer cells than the entry.
 bool structured_size_fits(const mesh::ChannelGeometry& g, Real size) {
   std::vector<Real> lengths = {g.container_length, g.entry_half_height, g.exit_length};
   if (g.die == mesh::DieShape::Square) lengths.push_back(g.exit_half_height);

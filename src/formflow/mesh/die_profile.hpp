@@ -13,7 +13,7 @@ namespace formflow::mesh {
 /// Wedge: straight, semi-angle α, length (H_in − H_out)/tan α. Arc: radius R,
 /// tangent to the exit direction at the die exit (a smooth exit into the land),
 /// length √(R² − (R − ΔH)²). Polyline: the given points.
-/// Precondition: the geometry passed the case validation (io/case_file.cpp).
+/// Precondition: the geometry passed the case validation (io/case_cross_checks.cpp).
 class DieProfile {
 public:
   explicit DieProfile(const ChannelGeometry& geometry);

@@ -166,7 +166,7 @@ struct FlowLawChoice {
 /// Checks condition (2.11), η1 ≤ σ_p′(ε̄̇) ≤ σ_p(ε̄̇)/ε̄̇ ≤ η2 with η1 > 0 (η1 = 0
 /// allowed for a rate-independent law only), on a logarithmic sweep over
 /// [rate1/10, 10 rate2] that includes the break points. Returns what is violated, or
-/// std::nullopt. A law that fails is refused at load time (io/case_file.cpp).
+/// std::nullopt. A law that fails is refused at load time (io/case_cross_checks.cpp).
 std::optional<std::string> check_flow_law(const FlowLaw& law);
 
 /// Condition (2.11) of a temperature-dependent law at every temperature of
