@@ -120,7 +120,8 @@ public:
       VecRestoreArray(rhs_, &values);
     }
     // A guess (set_initial_guess) in the unknowns PETSc solves for: y = Qᵀ x, laid out.
-    const bool guessed = !distributed_ && guess_.size() == rhs.size();
+    // (Not for a direct solve: PETSc's preonly refuses a nonzero initial guess.)
+    const bool guessed = !distributed_ && guess_.size() == rhs.size() && is_iterative();
     if (guessed) {
       VectorX rotated = std::move(guess_);
       assembly::to_frames(frames_, rotated);
@@ -213,18 +214,23 @@ public:
   }
 
 private:
-  /// Whether set_solve_tolerance may loosen the solves: an iterative method, and
-  /// -formflow_inexact_steps (read here, so it counts as used) not 0.
-  bool inexact_allowed() {
-    if (inexact_allowed_) return *inexact_allowed_;
-    if (!ksp_) return true; // decided at the first solve
+  /// Whether the KSP iterates (anything but preonly: a direct solve).
+  bool is_iterative() const {
     KSPType type = nullptr;
     KSPGetType(ksp_, &type);
     PetscBool preonly = PETSC_FALSE;
     PetscStrcmp(type, KSPPREONLY, &preonly);
+    return !preonly;
+  }
+
+  /// Whether set_solve_tolerance may loosen the solves: an iterative method, and
+  /// -formflow_inexact_steps (read here, so it counts as used) not 0.
+  bool inexact_allowed() {
+    if (inexact_allowed_) return *inexact_allowed_;
+    if (!ksp_) return true; // decided at the first factorisation
     PetscBool wanted = PETSC_TRUE, given = PETSC_FALSE;
     PetscOptionsGetBool(nullptr, nullptr, "-formflow_inexact_steps", &wanted, &given);
-    inexact_allowed_ = !preonly && wanted;
+    inexact_allowed_ = is_iterative() && wanted;
     return *inexact_allowed_;
   }
 
