@@ -51,11 +51,12 @@ namespace {
 /// Started from the last iterate uⁿ, the solve's initial residual b(uⁿ) − A(uⁿ) uⁿ is
 /// the nonlinear residual F(uⁿ) of the secant map's fixed point; the exact step would
 /// remove all of it, a loose one leaves η ‖F(uⁿ)‖. The inexact map uⁿ⁺¹ = S(uⁿ) + eₙ
-/// then contracts at about ρ + η κ (κ: how much an error left in the residual moves the
-/// iterate, relative to the step) instead of ρ; with ρ ≈ 0.8–0.9 (3D, 2D: the changes
-/// fall 10–20 % per step) η must keep η κ a small part of 1 − ρ ≈ 0.1. η = 1e-2 is
-/// Eisenstat–Walker's η_max = 0.9 made ten to a hundred times stricter for a contraction
-/// this slow; measured to leave the step counts unchanged (docs/benchmarks.md "Scale").
+/// then contracts at about ρ + η κ instead of ρ (κ: how far a residual left behind moves
+/// the iterate, relative to the step). The secant loop contracts slowly, ρ ≈ 0.85 in 3D
+/// to 0.98 in 2D (its changes fall 2–15 % per step), so η κ must stay well below
+/// 1 − ρ ≥ 0.02: η = 1e-2 with κ of order one (Newton's Eisenstat–Walker forcing allows
+/// up to 0.9, for a loop that contracts fast). Measured: the step counts did not change
+/// (docs/benchmarks.md "Scale").
 constexpr Real inexact_forcing = 1e-2;
 /// A step whose predicted change is below this multiple of δ may stop the loop: exact.
 /// A loose step that lands below δ all the same costs one more (exact) step, since it
@@ -81,6 +82,7 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
                                const IterationObserver& on_iteration, const VectorX* start) {
   SecantOutcome outcome;
   outcome.velocity = problem.prescribed_values(); // u = 0 except prescribed values
+  lagged.loosen(0); // the start is solved exactly (a solver may come from another loop)
   if (start) {
     outcome.velocity = *start;
   } else if (const LaggedStep first = lagged.solve(nullptr, outcome.velocity); first.stop) {
