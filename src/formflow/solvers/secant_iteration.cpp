@@ -52,10 +52,11 @@ namespace {
 /// the nonlinear residual F(uⁿ) of the secant map's fixed point; the exact step would
 /// remove all of it, a loose one leaves η ‖F(uⁿ)‖. The inexact map uⁿ⁺¹ = S(uⁿ) + eₙ
 /// then contracts at about ρ + η κ instead of ρ (κ: how far a residual left behind moves
-/// the iterate, relative to the step). The secant loop contracts slowly, ρ ≈ 0.85 in 3D
-/// to 0.98 in 2D (its changes fall 2–15 % per step), so η κ must stay well below
-/// 1 − ρ ≥ 0.02: η = 1e-2 with κ of order one (Newton's Eisenstat–Walker forcing allows
-/// up to 0.9, for a loop that contracts fast). Measured: the step counts did not change
+/// the iterate, relative to the step). The secant loop's tail contracts slowly, ρ ≈
+/// 0.88–0.92 on the 3D round quarter and 0.97 on the 2D paper case (measured: the last
+/// changes of the runs in docs/benchmarks.md), so η κ must stay well below 1 − ρ ≥ 0.03:
+/// η = 1e-2 with κ of order one (Newton's Eisenstat–Walker forcing allows up to 0.9, for
+/// a loop that contracts fast). Measured: the step counts did not change
 /// (docs/benchmarks.md "Scale").
 constexpr Real inexact_forcing = 1e-2;
 /// A step whose predicted change is below this multiple of δ may stop the loop: exact.
