@@ -185,7 +185,7 @@ int run_case(const Options& options) {
                results.adapt.cycles.size(), case_.adapt.target_error);
   }
   if (show && !results.coarse_iterations.empty())
-    fmt::print("coarse start (solver.coarse_levels): mesh.size {} took {} Newton iterations "
+    fmt::print("coarse start (solver.coarse_levels): mesh.size {} took {} iterations "
                "(not counted above; their time is in the solver phases)\n",
                fmt::join(results.coarse_mesh_sizes, ", "),
                fmt::join(results.coarse_iterations, ", "));

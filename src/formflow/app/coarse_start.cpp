@@ -11,6 +11,7 @@
 #include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/newton_iteration.hpp"
+#include "formflow/solvers/saddle_point_iteration.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,30 @@ bool structured_size_fits(const mesh::ChannelGeometry& g, Real size) {
   return mesh::cells_along(g.exit_half_height, size) < mesh::cells_along(g.entry_half_height, size);
 }
 
+/// How the coarse levels solve the case (the fine mesh's loop is the plan's).
+enum class CoarseLoop {
+  /// Newton with the case's linear solver: the case's own loop is Newton.
+  Newton,
+  /// A discontinuous pressure kept as a saddle point, d > 0 and d_N > 0: the same discrete
+  /// problem with the pressure condensed cell by cell (exact: p = (1/d) M⁻¹ B u per cell),
+  /// by Newton on CHOLMOD. Why not the saddle point itself: Newton takes 6–9 steps where
+  /// the secant loop takes 18–26 (3D) or 60–136 (2D), and a CHOLMOD factorisation of a
+  /// level with 1/8 (3D) of the fine dofs costs a tenth of an AMG-preconditioned Krylov
+  /// solve there (docs/benchmarks.md "Crossover": 2.5 s against 21 s for the whole run at
+  /// 7 137 dofs, 27 s against 410 s at 48 825).
+  CondensedNewton,
+  /// The saddle point's own secant loop with the case's solver (d = 0 or d_N = 0: no
+  /// pressure to condense, or contact multipliers; Taylor–Hood never comes here).
+  SaddlePointSecant,
+};
+
+CoarseLoop coarse_loop(const SolvePlan& plan) {
+  if (plan.loop != solvers::LoopKind::SaddlePointSecant) return CoarseLoop::Newton;
+  return plan.shape.exact_incompressibility || plan.shape.exact_contact
+             ? CoarseLoop::SaddlePointSecant
+             : CoarseLoop::CondensedNewton;
+}
+
 } // namespace
 
 bool size_fits(const mesh::MeshSpec& spec, Real size) {
@@ -57,12 +82,18 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
     ++levels;
   if (levels == 0) return std::nullopt;
   CoarseStart start;
+  const SolvePlan plan = make_solve_plan(case_);
+  const CoarseLoop loop = coarse_loop(plan);
   // The levels' iteration control: no nesting of their own, a looser tolerance.
   solvers::IterationControl control = case_.solver;
   control.coarse_levels = 0;
   control.tolerance = std::max(case_.solver.tolerance, coarse_tolerance);
-  // The discrete problem is the case's on every level: only the mesh differs.
+  // The discrete problem is the case's on every level: only the mesh differs (and how a
+  // discontinuous pressure is solved, which does not change the problem).
   const assembly::ProblemSettings settings = problem_settings(case_);
+  assembly::Formulation formulation = case_.formulation;
+  if (loop == CoarseLoop::CondensedNewton)
+    formulation.discontinuous = assembly::DiscontinuousPressure::Condensed;
   mesh::Mesh<dim> previous_mesh;
   VectorX previous_velocity;
   for (int level = levels; level >= 1; --level) {
@@ -77,22 +108,31 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
       mesh = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec)); // one source, one dimension
       problem = std::make_unique<assembly::FormingProblem<dim>>(mesh, settings);
       // The same discrete problem on the coarse mesh: the mixed formulation keeps its
-      // condensed pressure (Newton runs mixed cases only with d > 0, d_N > 0).
+      // pressure (condensed for Newton, which runs mixed cases only with d > 0, d_N > 0).
       if (case_.formulation.type == assembly::FormulationType::Mixed) {
         mixed_pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-            mesh, case_.penalty, case_.formulation, problem->full_rule(),
-            problem->n_contact_points());
+            mesh, case_.penalty, formulation, problem->full_rule(), problem->n_contact_points());
         problem->attach_multipliers(mixed_pressure.get());
       }
       if (level < levels)
         guess = fem::interpolate_nodal_field(previous_mesh, previous_velocity, dim, mesh);
     }
-    auto solver = solvers::make_linear_solver(make_solve_plan(case_).linear,
-                                              solvers::MatrixStorage::SymmetricLower,
-                                              case_.solver.petsc_options);
+    const VectorX* level_start = level < levels ? &guess : nullptr;
     solvers::FormingNonlinearProblem<dim> nonlinear(*problem);
-    solvers::SecantOutcome outcome = solvers::newton_iteration(
-        nonlinear, *solver, control, {}, times, level < levels ? &guess : nullptr);
+    solvers::SecantOutcome outcome;
+    if (loop == CoarseLoop::SaddlePointSecant) {
+      auto solver = solvers::make_linear_solver(plan.linear, solvers::MatrixStorage::Full,
+                                                case_.solver.petsc_options);
+      solvers::TimedLinearStep linear(*solver, times);
+      solvers::SaddlePointSolve<dim> saddle(nonlinear, linear);
+      outcome = solvers::secant_iteration(nonlinear, saddle, control, {}, level_start);
+    } else {
+      const solvers::LinearSolverKind kind =
+          loop == CoarseLoop::CondensedNewton ? solvers::LinearSolverKind::Cholmod : plan.linear;
+      auto solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower,
+                                                case_.solver.petsc_options);
+      outcome = solvers::newton_iteration(nonlinear, *solver, control, {}, times, level_start);
+    }
     start.mesh_sizes.push_back(spec.size);
     start.iterations.push_back(static_cast<int>(outcome.history.size()));
     start.converged = start.converged && outcome.stop_reason == solvers::StopReason::Converged;

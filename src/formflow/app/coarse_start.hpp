@@ -16,7 +16,8 @@ namespace formflow::app {
 struct CoarseStart {
   VectorX velocity;             ///< the coarse solution at the fine mesh's nodes
   std::vector<Real> mesh_sizes; ///< coarsest first
-  std::vector<int> iterations;  ///< Newton iterations per coarse level, coarsest first
+  std::vector<int> iterations;  ///< iterations per coarse level (Newton's, or the saddle
+                                ///< point's secant steps), coarsest first
   bool converged = true;        ///< every coarse level reached δ
 };
 
@@ -34,6 +35,11 @@ bool size_fits(const mesh::MeshSpec& spec, Real size);
 /// refinement (the plastic zones settle over 5–6 damped steps, docs/benchmarks.md);
 /// from a 2h solution the plastic zones are nearly in place (measured: 6 fine
 /// iterations at 77 762 dofs for L = 2, against 11–14).
+/// The secant loop of a discontinuous pressure kept as a saddle point (the iterative
+/// PETSc path) is sequenced too: with d > 0 and d_N > 0 its levels solve the same
+/// problem with the pressure condensed, by Newton on CHOLMOD (6–9 steps of a small
+/// factorisation against 18–136 secant steps of Krylov solves); with d = 0 or d_N = 0
+/// by the saddle point's own secant loop and solver.
 /// Each coarse level stops at max(δ, 1e-2) (finer is wasted: the levels' solutions
 /// differ by more). Only the levels whose mesh the geometry admits are used
 /// (2^L h must divide its lengths; mesh II, h = 1, has none). All phases are timed into `times`

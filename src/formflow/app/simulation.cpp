@@ -170,7 +170,7 @@ run_loop(const SolvePlan& plan, const io::Case& case_, const assembly::FormingPr
     // Taylor–Hood: a continuous pressure cannot be condensed; the saddle-point
     // system is indefinite (an LU back-end, solvers/capabilities.hpp).
     solvers::SaddlePointSolve<dim> saddle(nonlinear, linear);
-    return solvers::secant_iteration(nonlinear, saddle, case_.solver, on_iteration);
+    return solvers::secant_iteration(nonlinear, saddle, case_.solver, on_iteration, start_velocity);
   }
   case solvers::LoopKind::UzawaSecant: {
     solvers::SecantSolve uzawa(nonlinear, linear, /*uzawa_steps=*/true);
@@ -236,11 +236,12 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
     problem->attach_multipliers(constraint_multipliers.get());
   }
   const SolvePlan plan = make_solve_plan(case_);
-  // Mesh sequencing (solver.coarse_levels) for the Newton loops: start from the coarse
-  // solution. Exact friction's coarse levels solve the Coulomb law with λ̂ = 0, i.e.
-  // stick penalty r (the multipliers live at the fine Γ3 points only).
+  // Mesh sequencing (solver.coarse_levels) for the Newton loops and the discontinuous
+  // saddle point's secant loop: start from the coarse solution. Exact friction's coarse
+  // levels solve the Coulomb law with λ̂ = 0, i.e. stick penalty r (the multipliers live
+  // at the fine Γ3 points only).
   std::optional<CoarseStart> coarse;
-  if (plan.is_newton() && mesh_from_case && !start_velocity) {
+  if (plan.sequences_meshes() && mesh_from_case && !start_velocity) {
     coarse = coarse_start(case_, mesh, results.timing);
     if (coarse) {
       results.coarse_iterations = coarse->iterations;

@@ -17,7 +17,7 @@ SolvePlan make_solve_plan(const io::Case& case_) {
                   ? std::get<solvers::LoopKind>(choice)
                   : solvers::LoopKind::Secant;
   plan.linear = solvers::linear_solver_for(plan.loop, plan.shape);
-  plan.coarse_levels = plan.is_newton() ? case_.solver.coarse_levels : 0;
+  plan.coarse_levels = plan.sequences_meshes() ? case_.solver.coarse_levels : 0;
   plan.friction_augmentation = plan.loop == solvers::LoopKind::AugmentedNewton
                                    ? case_.friction.newton_augmentation
                                    : case_.friction.augmentation;

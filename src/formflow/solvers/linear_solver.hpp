@@ -77,6 +77,22 @@ public:
   virtual void set_local_frames(std::vector<assembly::LocalFrame> frames) {
     static_cast<void>(frames);
   }
+  /// A guess of the next solve's solution (a secant step's previous iterate): an iterative
+  /// back-end starts its Krylov method from it instead of zero. Its stop test stays
+  /// relative to the right-hand side's norm (PETSc's default), so the solution is as
+  /// accurate as from zero, in fewer iterations when the guess is close. Serves the next
+  /// solve only. A direct back-end has no use for it.
+  virtual void set_initial_guess(VectorX guess) { static_cast<void>(guess); }
+  /// Inexact solves: the next solves may stop once they have reduced the residual of
+  /// their start (the guess of set_initial_guess, else zero) by the factor `reduction`,
+  /// where that is looser than the back-end's own tolerance (-ksp_rtol relative to the
+  /// right-hand side; never tighter than it); 0 restores the own tolerance. Returns
+  /// whether the solves are now looser than the own tolerance (false for a direct
+  /// back-end, which is exact).
+  virtual bool set_solve_tolerance(Real reduction) {
+    static_cast<void>(reduction);
+    return false;
+  }
   /// The node of each velocity row of the saddle point whose fields set_fields gave:
   /// `dof_of_velocity[i]` = node·components + component of velocity row i. An AMG that
   /// coarsens node by node (BoomerAMG's nodal options, GAMG's aggregates with the

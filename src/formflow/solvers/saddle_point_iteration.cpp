@@ -63,6 +63,15 @@ template <int dim> LaggedStep SaddlePointSolve<dim>::solve(const VectorX* w, Vec
       if (const auto stop = linear_.factorize(saddle.matrix())) return {stop, false};
     }
     const VectorX& pressure = multipliers.global_pressure();
+    if (w && step == 0) {
+      // The step's solution is (uⁿ⁺¹, δp): uⁿ and no correction is within the last
+      // change of it, which an iterative back-end's Krylov method need not rebuild.
+      VectorX guess = VectorX::Zero(saddle.n_velocity() + saddle.n_pressure());
+      const assembly::ScatterPlan& plan = problem_.plan();
+      for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+        if (const Index row = plan.free_index(dof); row >= 0) guess[row] = (*w)[dof];
+      linear_.solver().set_initial_guess(std::move(guess));
+    }
     VectorX solution;
     if (const auto stop = linear_.solve(saddle.rhs(system_, pressure), solution))
       return {stop, false};

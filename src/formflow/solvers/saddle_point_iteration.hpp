@@ -20,12 +20,16 @@ namespace formflow::solvers {
 /// nothing else. With d_N = 0 the contact multipliers get Uzawa steps around the
 /// same factorisation (as SecantSolve's), and the step counts as converged only
 /// when they have settled. The pressure ends in the multipliers (global_pressure).
+/// Each step's first solve starts from (w, 0): the lagged velocity and no pressure
+/// correction (LinearSolver::set_initial_guess; an iterative back-end's Krylov start).
 /// Building the saddle-point structure is timed as "setup".
 template <int dim> class SaddlePointSolve final : public LaggedSolve {
 public:
   SaddlePointSolve(FormingNonlinearProblem<dim>& problem, TimedLinearStep& linear);
   LaggedStep solve(const VectorX* w, VectorX& next) override;
   const assembly::LinearSystem& system() const override { return system_; }
+  /// An iterative back-end's solves loosened (LinearSolver::set_solve_tolerance).
+  bool loosen(Real reduction) override { return linear_.solver().set_solve_tolerance(reduction); }
 
 private:
   FormingNonlinearProblem<dim>& problem_;

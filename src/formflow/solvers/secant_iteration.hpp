@@ -41,6 +41,14 @@ public:
   virtual LaggedStep solve(const VectorX* w, VectorX& next) = 0;
   /// The system of the last solve, whose reaction (loads included) is the driven force.
   virtual const assembly::LinearSystem& system() const = 0;
+  /// An inexact next step: its linear solves may stop once they have reduced the
+  /// residual of their start by `reduction` (0: as accurate as the back-end's own
+  /// tolerance). Returns whether the step is then less accurate than the own tolerance
+  /// (only an iterative back-end can be; the loop does not stop on such a step).
+  virtual bool loosen(Real reduction) {
+    static_cast<void>(reduction);
+    return false;
+  }
 };
 
 /// K(w) u = F: assemble, factorise once, solve. With `uzawa_steps` (the problem has
@@ -65,6 +73,12 @@ private:
 /// uⁿ⁺¹ = solve(uⁿ) until ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < δ, the lagged solve's constraints
 /// settled and the problem's after-iteration hook settled. Each iteration is
 /// recorded with the pressure read from the lagged solve's system.
+/// Inexact steps (a lagged solve whose back-end is iterative, LaggedSolve::loosen):
+/// while the change is far from δ, a step's linear solve only reduces the residual of
+/// its start (the last iterate: the nonlinear residual there) by inexact_forcing, an
+/// Eisenstat–Walker-type forcing; the first step and those that may stop the loop
+/// (predicted change ρ cₙ below 2 δ, ρ = cₙ/cₙ₋₁ the last contraction) are solved to
+/// the back-end's own tolerance, and a loose step never stops the loop.
 SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
                                const IterationControl& control,
                                const IterationObserver& on_iteration,

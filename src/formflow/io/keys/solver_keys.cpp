@@ -77,11 +77,11 @@ std::vector<CaseKey> solver_keys() {
           "solver.coarse_levels", 2, [](auto& c) -> auto& { return c.solver.coarse_levels; })
           .at_least(0)
           .at_most(6)
-          .doc(
-              "newton only: first solve on this many coarser meshes (mesh.size times 2^L, ..., 2), "
-              "each started from the previous one, and start from the last; 0: from the "
-              "constant-viscosity solution; levels the geometry does not admit (or a mesh from a "
-              "file) are skipped, and summary.json coarse_mesh_sizes lists those used"),
+          .doc("newton, and secant on a discontinuous pressure kept as a saddle point, only: first "
+               "solve on this many coarser meshes (mesh.size times 2^L, ..., 2), each started from "
+               "the previous one, and start from the last; 0: from the constant-viscosity "
+               "solution; levels the geometry does not admit (or a mesh from a file) are skipped, "
+               "and summary.json coarse_mesh_sizes lists those used"),
       enum_key(
           "solver.load_error", "none",
           {{"refined", solvers::LoadErrorMethod::Refined},

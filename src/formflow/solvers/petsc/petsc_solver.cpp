@@ -13,6 +13,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -72,6 +73,7 @@ public:
       if (splits == PETSC_ERR_ARG_UNKNOWN_TYPE || splits == PETSC_ERR_ARG_WRONG)
         refuse(capture.message(), "give a type PETSc 3.18 has for that split");
       if (splits != 0) return false;
+      inexact_allowed(); // reads -formflow_inexact_steps before the unused-option check
       refuse_unused(options_scope_.unused());
     }
     PCFailedReason failed = PC_NOERROR;
@@ -117,6 +119,21 @@ public:
       }
       VecRestoreArray(rhs_, &values);
     }
+    // A guess (set_initial_guess) in the unknowns PETSc solves for: y = Qᵀ x, laid out.
+    // (Not for a direct solve: PETSc's preonly refuses a nonzero initial guess.)
+    const bool guessed = !distributed_ && guess_.size() == rhs.size() && is_iterative();
+    if (guessed) {
+      VectorX rotated = std::move(guess_);
+      assembly::to_frames(frames_, rotated);
+      if (!layout_.empty()) rotated = layout_.embed(rotated);
+      PetscScalar* values = nullptr;
+      VecGetArray(solution_, &values);
+      std::copy(rotated.data(), rotated.data() + rotated.size(), values);
+      VecRestoreArray(solution_, &values);
+    }
+    guess_.resize(0);
+    KSPSetInitialGuessNonzero(ksp_, guessed ? PETSC_TRUE : PETSC_FALSE);
+    apply_solve_tolerance(guessed);
     if (KSPSolve(ksp_, rhs_, solution_) != 0) return false;
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
     KSPGetConvergedReason(ksp_, &reason);
@@ -180,6 +197,16 @@ public:
     frame_matrix_ = {};
   }
 
+  void set_initial_guess(VectorX guess) override {
+    if (distributed_) return; // the saddle point, its one user, is refused on several ranks
+    guess_ = std::move(guess);
+  }
+
+  bool set_solve_tolerance(Real reduction) override {
+    asked_reduction_ = reduction;
+    return reduction > 0 && inexact_allowed();
+  }
+
   void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
     if (distributed_) return; // the saddle point, their one user, is refused on several ranks
     components_ = components;
@@ -187,6 +214,53 @@ public:
   }
 
 private:
+  /// Whether the KSP iterates (anything but preonly: a direct solve).
+  bool is_iterative() const {
+    KSPType type = nullptr;
+    KSPGetType(ksp_, &type);
+    PetscBool preonly = PETSC_FALSE;
+    PetscStrcmp(type, KSPPREONLY, &preonly);
+    return !preonly;
+  }
+
+  /// Whether set_solve_tolerance may loosen the solves: an iterative method, and
+  /// -formflow_inexact_steps (read here, so it counts as used) not 0.
+  bool inexact_allowed() {
+    if (inexact_allowed_) return *inexact_allowed_;
+    if (!ksp_) return true; // decided at the first factorisation
+    PetscBool wanted = PETSC_TRUE, given = PETSC_FALSE;
+    PetscOptionsGetBool(nullptr, nullptr, "-formflow_inexact_steps", &wanted, &given);
+    inexact_allowed_ = is_iterative() && wanted;
+    return *inexact_allowed_;
+  }
+
+  /// The solve's relative residual (to the right-hand side's norm, PETSc's default test):
+  /// the own one (formflow's default or -ksp_rtol, read once after the options), or where
+  /// a loop asked for a reduction of the start's residual (set_solve_tolerance) that
+  /// reduction times ‖b − A x₀‖/‖b‖ if looser. Needs rhs_ and the start in solution_.
+  void apply_solve_tolerance(bool guessed) {
+    PetscReal rtol = 0, abstol = 0, dtol = 0;
+    PetscInt max_iterations = 0;
+    KSPGetTolerances(ksp_, &rtol, &abstol, &dtol, &max_iterations);
+    if (own_tolerance_ <= 0) own_tolerance_ = rtol;
+    Real wanted = own_tolerance_;
+    if (asked_reduction_ > 0 && inexact_allowed()) {
+      PetscReal rhs_norm = 0, start_norm = 0;
+      VecNorm(rhs_, NORM_2, &rhs_norm);
+      start_norm = rhs_norm;
+      if (guessed) {
+        Vec residual = nullptr;
+        VecDuplicate(rhs_, &residual);
+        MatMult(matrix_, solution_, residual);
+        VecAYPX(residual, -1.0, rhs_); // b − A x₀
+        VecNorm(residual, NORM_2, &start_norm);
+        VecDestroy(&residual);
+      }
+      if (rhs_norm > 0) wanted = std::max(wanted, asked_reduction_ * start_norm / rhs_norm);
+    }
+    if (wanted != rtol) KSPSetTolerances(ksp_, wanted, abstol, dtol, max_iterations);
+  }
+
   /// The KSP with formflow's defaults, then the options database over them.
   bool make_ksp(petsc::ErrorCapture& capture) {
     if (KSPCreate(distributed_ ? PETSC_COMM_WORLD : PETSC_COMM_SELF, &ksp_) != 0) return false;
@@ -509,6 +583,10 @@ private:
   petsc::DefaultOptions defaults_; ///< the saddle-point defaults in the database
   long iterations_ = 0;
   bool checked_unused_ = false;
+  VectorX guess_;                       ///< the next solve's start (set_initial_guess)
+  Real own_tolerance_ = 0;              ///< -ksp_rtol as configured (0: not read yet)
+  Real asked_reduction_ = 0;            ///< set_solve_tolerance's, 0: the own tolerance
+  std::optional<bool> inexact_allowed_; ///< decided at the first solve
 };
 
 } // namespace
