@@ -89,8 +89,9 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
   const Index size = n_velocity_ + n_pressure_;
   matrix_ = from_triplets(size, size, entries);
 
-  static_values_.assign(static_cast<std::size_t>(matrix_.nonZeros()), 0.0);
-  for (const auto& entry : fixed) static_values_[slot(entry.row(), entry.col())] += entry.value();
+  fixed_entries_.reserve(fixed.size());
+  for (const auto& entry : fixed)
+    fixed_entries_.emplace_back(slot(entry.row(), entry.col()), entry.value());
   for (Index column = 0; column < lower.outerSize(); ++column)
     for (Index k = lower.outerIndexPtr()[column]; k < lower.outerIndexPtr()[column + 1]; ++k) {
       const Index row = lower.innerIndexPtr()[k];
@@ -111,7 +112,8 @@ template <int dim> void SaddlePointSystem<dim>::fill_matrix(const LinearSystem& 
   FF_ASSERT(velocity.matrix.nonZeros() == static_cast<Index>(lower_slot_.size()),
             "the velocity matrix keeps the pattern it was built with");
   Real* values = matrix_.valuePtr();
-  std::copy(static_values_.begin(), static_values_.end(), values);
+  std::fill(values, values + matrix_.nonZeros(), 0.0);
+  for (const auto& [slot, value] : fixed_entries_) values[slot] += value;
   const Real* lower = velocity.matrix.valuePtr();
   for (std::size_t k = 0; k < lower_slot_.size(); ++k) {
     values[lower_slot_[k]] += lower[k];
