@@ -60,15 +60,21 @@ TEST(ExactFrictionGridOthers, AxisymmetricStickZoneUpToTheRam) {
   check_grid_case(c, 1e-4, true);
 }
 
-TEST(ExactFrictionGridOthers, Q1WithTheOnePointRule) {
+/// A plane Q1 case with the one-point rule and the sticking ram on the exact law's default
+/// path (friction.stick = "exact").
+FrictionGridCase q1_one_point_sticking(Real size, Real mu) {
   FrictionGridCase c;
-  c.exact_stick = true; // the exact law's default path
+  c.exact_stick = true;
   c.ram = RamCondition::Sticking;
-  c.size = 0.5;
-  c.mu = 0.2;
+  c.size = size;
+  c.mu = mu;
   c.element = fem::ElementKind::Q1;
   c.volumetric_points = 1;
-  check_grid_case(c, 1e-4, true);
+  return c;
+}
+
+TEST(ExactFrictionGridOthers, Q1WithTheOnePointRule) {
+  check_grid_case(q1_one_point_sticking(0.5, 0.2), 1e-4, true);
 }
 
 // Case 228 of the long test's grid (plane Q1 1×1, sticking ram, h = 0.25, μ = 0.3). Session
@@ -83,13 +89,7 @@ TEST(ExactFrictionGridOthers, Q1WithTheOnePointRule) {
 // session 11 main's binary no longer reached the false stop on this case, so this guards
 // the case, while the held residual itself is tested in test_friction_residual.cpp.
 TEST(ExactFrictionGridOthers, HeldNodeWhoseReactionLeavesTheCoulombDiskIsReleased) {
-  FrictionGridCase c;
-  c.exact_stick = true; // the exact law's default path
-  c.ram = RamCondition::Sticking;
-  c.size = 0.25;
-  c.mu = 0.3;
-  c.element = fem::ElementKind::Q1;
-  c.volumetric_points = 1;
+  const FrictionGridCase c = q1_one_point_sticking(0.25, 0.3);
   constexpr double tolerance = 1e-8;
   SCOPED_TRACE(grid_case_name(c));
   const post::Results exact = app::simulate(grid_case(c, true, tolerance)).results;

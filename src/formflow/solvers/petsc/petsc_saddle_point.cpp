@@ -100,4 +100,16 @@ PetscErrorCode set_up_splits(PC preconditioner) {
   return first;
 }
 
+void orthonormalize(std::vector<Vec>& vectors) {
+  for (std::size_t k = 0; k < vectors.size(); ++k) {
+    for (std::size_t j = 0; j < k; ++j) {
+      PetscScalar projection = 0;
+      VecDot(vectors[k], vectors[j], &projection);
+      VecAXPY(vectors[k], -projection, vectors[j]);
+    }
+    PetscReal norm = 0;
+    VecNormalize(vectors[k], &norm);
+  }
+}
+
 } // namespace formflow::solvers::petsc

@@ -56,4 +56,8 @@ void attach_schur_matrix(PC preconditioner, Mat pressure_matrix);
 /// Nothing for another PC type. Returns the first failed setup's error code (0: none).
 PetscErrorCode set_up_splits(PC preconditioner);
 
+/// Modified Gram–Schmidt on `vectors`, in place (MatNullSpaceCreate wants an
+/// orthonormal basis: the velocity split's rigid-body modes).
+void orthonormalize(std::vector<Vec>& vectors);
+
 } // namespace formflow::solvers::petsc

@@ -4,6 +4,9 @@
 
 #include "formflow/core/error.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <memory>
 
 namespace formflow::solvers::petsc {
@@ -152,6 +155,21 @@ OptionsScope::Unused OptionsScope::unused() const {
     return names;
   };
   return {unused_of(case_options_), unused_of(command_line_options())};
+}
+
+void OptionsScope::refuse_unused(const char* case_key) const {
+  const Unused names = unused();
+  constexpr const char* hint =
+      "check the spelling (-ksp_type, -pc_type, -pc_factor_mat_solver_type, ...) and that the "
+      "option belongs to the solver and preconditioner in use";
+  const auto text = [](const std::vector<std::string>& options) {
+    return fmt::format("{} {} read by no PETSc object of this solve", fmt::join(options, " "),
+                       options.size() == 1 ? "was" : "were");
+  };
+  if (!names.from_command_line.empty())
+    throw InputError("command line", 0, names.from_command_line.front(),
+                     text(names.from_command_line), hint);
+  if (!names.from_case.empty()) throw InputError("", 0, case_key, text(names.from_case), hint);
 }
 
 ErrorCapture::ErrorCapture() {

@@ -70,6 +70,9 @@ public:
     std::vector<std::string> from_case, from_command_line;
   };
   Unused unused() const;
+  /// Throws InputError for the first unused option: the command line's named as itself,
+  /// the case's blamed on `case_key` (solver.petsc_options). Returns if none is unused.
+  void refuse_unused(const char* case_key) const;
 
 private:
   std::vector<PetscOption> case_options_;

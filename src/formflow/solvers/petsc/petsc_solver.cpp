@@ -4,6 +4,8 @@
 #include "formflow/solvers/petsc/petsc_solver.hpp"
 
 #include "formflow/core/error.hpp"
+#include "formflow/solvers/petsc/distributed_numbering.hpp"
+#include "formflow/solvers/petsc/krylov_start.hpp"
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
@@ -73,8 +75,8 @@ public:
       if (splits == PETSC_ERR_ARG_UNKNOWN_TYPE || splits == PETSC_ERR_ARG_WRONG)
         refuse(capture.message(), "give a type PETSc 3.18 has for that split");
       if (splits != 0) return false;
-      inexact_allowed(); // reads -formflow_inexact_steps before the unused-option check
-      refuse_unused(options_scope_.unused());
+      krylov_start_.inexact_allowed(ksp_);       // reads -formflow_inexact_steps before the check
+      options_scope_.refuse_unused(options_key); // what nothing read by now
     }
     PCFailedReason failed = PC_NOERROR;
     PC preconditioner = nullptr;
@@ -107,33 +109,15 @@ public:
       VecAssemblyBegin(rhs_);
       VecAssemblyEnd(rhs_);
     } else {
-      PetscScalar* values = nullptr;
-      VecGetArray(rhs_, &values);
-      if (frames_.empty() && layout_.empty()) {
-        std::copy(rhs.data(), rhs.data() + n, values);
-      } else { // Qᵀ b: the system is Qᵀ K Q y = Qᵀ b (set_local_frames), then laid out
-        VectorX rotated = rhs;
-        assembly::to_frames(frames_, rotated);
-        if (!layout_.empty()) rotated = layout_.embed(rotated);
-        std::copy(rotated.data(), rotated.data() + rotated.size(), values);
-      }
-      VecRestoreArray(rhs_, &values);
+      write(rhs_, in_solved_unknowns(rhs)); // Qᵀ b: the system is Qᵀ K Q y = Qᵀ b
     }
-    // A guess (set_initial_guess) in the unknowns PETSc solves for: y = Qᵀ x, laid out.
-    // (Not for a direct solve: PETSc's preonly refuses a nonzero initial guess.)
-    const bool guessed = !distributed_ && guess_.size() == rhs.size() && is_iterative();
-    if (guessed) {
-      VectorX rotated = std::move(guess_);
-      assembly::to_frames(frames_, rotated);
-      if (!layout_.empty()) rotated = layout_.embed(rotated);
-      PetscScalar* values = nullptr;
-      VecGetArray(solution_, &values);
-      std::copy(rotated.data(), rotated.data() + rotated.size(), values);
-      VecRestoreArray(solution_, &values);
-    }
-    guess_.resize(0);
+    // A guess (set_initial_guess), also in the unknowns PETSc solves for. Not for a
+    // direct solve: PETSc's preonly refuses a nonzero initial guess.
+    std::optional<VectorX> guess = krylov_start_.take_guess(rhs.size());
+    const bool guessed = guess && !distributed_ && petsc::is_iterative(ksp_);
+    if (guessed) write(solution_, in_solved_unknowns(std::move(*guess)));
     KSPSetInitialGuessNonzero(ksp_, guessed ? PETSC_TRUE : PETSC_FALSE);
-    apply_solve_tolerance(guessed);
+    krylov_start_.apply_tolerance(ksp_, matrix_, rhs_, solution_, guessed);
     if (KSPSolve(ksp_, rhs_, solution_) != 0) return false;
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
     KSPGetConvergedReason(ksp_, &reason);
@@ -199,12 +183,12 @@ public:
 
   void set_initial_guess(VectorX guess) override {
     if (distributed_) return; // the saddle point, its one user, is refused on several ranks
-    guess_ = std::move(guess);
+    krylov_start_.set_guess(std::move(guess));
   }
 
   bool set_solve_tolerance(Real reduction) override {
-    asked_reduction_ = reduction;
-    return reduction > 0 && inexact_allowed();
+    krylov_start_.ask_reduction(reduction);
+    return reduction > 0 && krylov_start_.inexact_allowed(ksp_);
   }
 
   void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
@@ -214,51 +198,19 @@ public:
   }
 
 private:
-  /// Whether the KSP iterates (anything but preonly: a direct solve).
-  bool is_iterative() const {
-    KSPType type = nullptr;
-    KSPGetType(ksp_, &type);
-    PetscBool preonly = PETSC_FALSE;
-    PetscStrcmp(type, KSPPREONLY, &preonly);
-    return !preonly;
+  /// x in the unknowns PETSc solves for: y = Qᵀ x (set_local_frames), laid out node by
+  /// node (lay_out_nodes) where it is.
+  VectorX in_solved_unknowns(VectorX x) const {
+    assembly::to_frames(frames_, x);
+    return layout_.empty() ? x : layout_.embed(x);
   }
 
-  /// Whether set_solve_tolerance may loosen the solves: an iterative method, and
-  /// -formflow_inexact_steps (read here, so it counts as used) not 0.
-  bool inexact_allowed() {
-    if (inexact_allowed_) return *inexact_allowed_;
-    if (!ksp_) return true; // decided at the first factorisation
-    PetscBool wanted = PETSC_TRUE, given = PETSC_FALSE;
-    PetscOptionsGetBool(nullptr, nullptr, "-formflow_inexact_steps", &wanted, &given);
-    inexact_allowed_ = is_iterative() && wanted;
-    return *inexact_allowed_;
-  }
-
-  /// The solve's relative residual (to the right-hand side's norm, PETSc's default test):
-  /// the own one (formflow's default or -ksp_rtol, read once after the options), or where
-  /// a loop asked for a reduction of the start's residual (set_solve_tolerance) that
-  /// reduction times ‖b − A x₀‖/‖b‖ if looser. Needs rhs_ and the start in solution_.
-  void apply_solve_tolerance(bool guessed) {
-    PetscReal rtol = 0, abstol = 0, dtol = 0;
-    PetscInt max_iterations = 0;
-    KSPGetTolerances(ksp_, &rtol, &abstol, &dtol, &max_iterations);
-    if (own_tolerance_ <= 0) own_tolerance_ = rtol;
-    Real wanted = own_tolerance_;
-    if (asked_reduction_ > 0 && inexact_allowed()) {
-      PetscReal rhs_norm = 0, start_norm = 0;
-      VecNorm(rhs_, NORM_2, &rhs_norm);
-      start_norm = rhs_norm;
-      if (guessed) {
-        Vec residual = nullptr;
-        VecDuplicate(rhs_, &residual);
-        MatMult(matrix_, solution_, residual);
-        VecAYPX(residual, -1.0, rhs_); // b − A x₀
-        VecNorm(residual, NORM_2, &start_norm);
-        VecDestroy(&residual);
-      }
-      if (rhs_norm > 0) wanted = std::max(wanted, asked_reduction_ * start_norm / rhs_norm);
-    }
-    if (wanted != rtol) KSPSetTolerances(ksp_, wanted, abstol, dtol, max_iterations);
+  /// Copies `values` into the sequential vector `target`.
+  static void write(Vec target, Eigen::Ref<const VectorX> values) {
+    PetscScalar* entries = nullptr;
+    VecGetArray(target, &entries);
+    std::copy(values.data(), values.data() + values.size(), entries);
+    VecRestoreArray(target, &entries);
   }
 
   /// The KSP with formflow's defaults, then the options database over them.
@@ -319,13 +271,10 @@ private:
           padded.head(n_first_) = mode;
           mode = layout_.embed(padded);
         }
-        PetscScalar* values = nullptr;
-        VecGetArray(modes[k], &values);
-        std::copy(mode.data(), mode.data() + n_first, values);
-        VecRestoreArray(modes[k], &values);
+        write(modes[k], mode.head(n_first));
       }
       // MatNullSpaceCreate wants an orthonormal basis.
-      orthonormalize(modes);
+      petsc::orthonormalize(modes);
       MatNullSpace space = nullptr;
       MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(modes.size()),
                          modes.data(), &space);
@@ -371,17 +320,13 @@ private:
     return !layout_.empty();
   }
 
-  /// Modified Gram–Schmidt, in place.
-  static void orthonormalize(std::vector<Vec>& vectors) {
-    for (std::size_t k = 0; k < vectors.size(); ++k) {
-      for (std::size_t j = 0; j < k; ++j) {
-        PetscScalar projection = 0;
-        VecDot(vectors[k], vectors[j], &projection);
-        VecAXPY(vectors[k], -projection, vectors[j]);
-      }
-      PetscReal norm = 0;
-      VecNormalize(vectors[k], &norm);
-    }
+  /// Whether `matrix` (compressed, either storage order) has the pattern of the last copy.
+  template <class Matrix> bool has_copied_pattern(const Matrix& matrix) const {
+    const auto n = static_cast<std::size_t>(matrix.outerSize());
+    return pattern_outer_.size() == n + 1 &&
+           std::equal(pattern_outer_.begin(), pattern_outer_.end(), matrix.outerIndexPtr()) &&
+           pattern_inner_.size() == static_cast<std::size_t>(matrix.nonZeros()) &&
+           std::equal(pattern_inner_.begin(), pattern_inner_.end(), matrix.innerIndexPtr());
   }
 
   /// Copies `matrix` (its lower triangle for SymmetricLower) into the AIJ matrix,
@@ -404,11 +349,7 @@ private:
       rows = layout_.embed(rows, petsc::mean_absolute_diagonal(rows, n_first_));
     rows.makeCompressed();
     const auto n = static_cast<PetscInt>(rows.rows());
-    const bool same_pattern =
-        matrix_ && pattern_outer_.size() == static_cast<std::size_t>(n + 1) &&
-        std::equal(pattern_outer_.begin(), pattern_outer_.end(), rows.outerIndexPtr()) &&
-        pattern_inner_.size() == static_cast<std::size_t>(rows.nonZeros()) &&
-        std::equal(pattern_inner_.begin(), pattern_inner_.end(), rows.innerIndexPtr());
+    const bool same_pattern = matrix_ && has_copied_pattern(rows);
     if (same_pattern) {
       PetscScalar* values = nullptr;
       MatSeqAIJGetArray(matrix_, &values);
@@ -449,11 +390,7 @@ private:
   void copy_distributed(const assembly::SparseMatrix& matrix) {
     const auto n = static_cast<PetscInt>(matrix.rows());
     const bool symmetric_lower = storage_ == MatrixStorage::SymmetricLower;
-    const bool same_pattern =
-        matrix_ && pattern_outer_.size() == static_cast<std::size_t>(n + 1) &&
-        std::equal(pattern_outer_.begin(), pattern_outer_.end(), matrix.outerIndexPtr()) &&
-        pattern_inner_.size() == static_cast<std::size_t>(matrix.nonZeros()) &&
-        std::equal(pattern_inner_.begin(), pattern_inner_.end(), matrix.innerIndexPtr());
+    const bool same_pattern = matrix_ && has_copied_pattern(matrix);
     int rebuild = same_pattern ? 0 : 1;
     MPI_Allreduce(MPI_IN_PLACE, &rebuild, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
     if (rebuild) {
@@ -464,45 +401,17 @@ private:
       if (all_) VecDestroy(&all_);
       pattern_outer_.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + n + 1);
       pattern_inner_.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
-      PetscMPIInt rank = 0, size = 1;
-      MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-      MPI_Comm_size(PETSC_COMM_WORLD, &size);
-      // Owner of dof i: the lowest rank whose share has the diagonal entry (i, i).
-      std::vector<int> owner(static_cast<std::size_t>(n), size);
-      for (PetscInt column = 0; column < n; ++column)
-        for (auto k = pattern_outer_[column]; k < pattern_outer_[column + 1]; ++k)
-          if (pattern_inner_[k] == column) owner[column] = rank;
-      MPI_Allreduce(MPI_IN_PLACE, owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN,
-                    PETSC_COMM_WORLD);
-      std::vector<PetscInt> first(static_cast<std::size_t>(size) + 1, 0);
-      for (const int o : owner) {
-        FF_ASSERT(o < size, "every free dof is a dof of some rank's cells");
-        ++first[o + 1];
-      }
-      for (int r = 0; r < size; ++r) first[r + 1] += first[r];
-      std::vector<PetscInt> next(first.begin(), first.end() - 1);
-      petsc_index_.resize(static_cast<std::size_t>(n));
-      for (PetscInt i = 0; i < n; ++i) petsc_index_[i] = next[owner[i]]++;
-      // The COO entries of this share: both triangles of the symmetric matrix.
-      std::vector<PetscInt> rows, columns;
-      coo_source_.clear();
-      for (PetscInt column = 0; column < n; ++column)
-        for (auto k = pattern_outer_[column]; k < pattern_outer_[column + 1]; ++k) {
-          const PetscInt row = pattern_inner_[k];
-          rows.push_back(petsc_index_[row]);
-          columns.push_back(petsc_index_[column]);
-          coo_source_.push_back(k);
-          if (symmetric_lower && row != column) {
-            rows.push_back(petsc_index_[column]);
-            columns.push_back(petsc_index_[row]);
-            coo_source_.push_back(k);
-          }
-        }
-      const PetscInt owned = first[rank + 1] - first[rank];
+      petsc::DistributedNumbering numbering =
+          petsc::number_by_owner(pattern_outer_, pattern_inner_);
+      petsc_index_ = std::move(numbering.petsc_index);
+      const PetscInt owned = numbering.owned;
+      petsc::CooEntries coo =
+          petsc::coo_entries(pattern_outer_, pattern_inner_, petsc_index_, symmetric_lower);
+      coo_source_ = std::move(coo.source);
       if (MatCreate(PETSC_COMM_WORLD, &matrix_) != 0 ||
           MatSetSizes(matrix_, owned, owned, n, n) != 0 || MatSetType(matrix_, MATMPIAIJ) != 0 ||
-          MatSetPreallocationCOO(matrix_, static_cast<PetscCount>(rows.size()), rows.data(),
-                                 columns.data()) != 0) {
+          MatSetPreallocationCOO(matrix_, static_cast<PetscCount>(coo.rows.size()), coo.rows.data(),
+                                 coo.columns.data()) != 0) {
         if (matrix_) MatDestroy(&matrix_);
         return;
       }
@@ -529,23 +438,6 @@ private:
       if (const PetscInt row = petsc_index_[i]; row >= low && row < high)
         values[row - low] = rhs[i];
     VecRestoreArray(rhs_, &values);
-  }
-
-  /// Options that nothing read by the first factorisation: the case's blamed on
-  /// solver.petsc_options, the command line's on themselves.
-  static void refuse_unused(const petsc::OptionsScope::Unused& unused) {
-    constexpr const char* hint =
-        "check the spelling (-ksp_type, -pc_type, -pc_factor_mat_solver_type, ...) and that the "
-        "option belongs to the solver and preconditioner in use";
-    const auto text = [](const std::vector<std::string>& names) {
-      return fmt::format("{} {} read by no PETSc object of this solve", fmt::join(names, " "),
-                         names.size() == 1 ? "was" : "were");
-    };
-    if (!unused.from_command_line.empty())
-      throw InputError("command line", 0, unused.from_command_line.front(),
-                       text(unused.from_command_line), hint);
-    if (!unused.from_case.empty())
-      throw InputError("", 0, options_key, text(unused.from_case), hint);
   }
 
   [[noreturn]] void refuse(const std::string& message, const std::string& hint) const {
@@ -583,10 +475,7 @@ private:
   petsc::DefaultOptions defaults_; ///< the saddle-point defaults in the database
   long iterations_ = 0;
   bool checked_unused_ = false;
-  VectorX guess_;                       ///< the next solve's start (set_initial_guess)
-  Real own_tolerance_ = 0;              ///< -ksp_rtol as configured (0: not read yet)
-  Real asked_reduction_ = 0;            ///< set_solve_tolerance's, 0: the own tolerance
-  std::optional<bool> inexact_allowed_; ///< decided at the first solve
+  petsc::KrylovStart krylov_start_; ///< the next solve's guess and tolerance
 };
 
 } // namespace
