@@ -35,6 +35,10 @@ public:
   Index n_rows() const { return static_cast<Index>(position_.size()); }
   Index n_embedded() const { return n_embedded_; }
   Index n_velocity_embedded() const { return n_velocity_embedded_; }
+  /// The layout's row of system row `row`.
+  Index position(Index row) const { return position_[static_cast<std::size_t>(row)]; }
+  /// The layout's rows that no system row fills (each gets a decoupled diagonal entry).
+  std::span<const Index> holes() const { return holes_; }
 
   /// The system's matrix (n_rows square, row-major) moved to the layout's rows; each
   /// unused slot gets the diagonal entry `hole`. The pattern depends on the layout only.

@@ -9,6 +9,7 @@
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
+#include "formflow/solvers/petsc/value_map.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -17,6 +18,7 @@
 #include <algorithm>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 namespace formflow::solvers {
@@ -244,7 +246,8 @@ private:
   /// the rigid-body modes go with "u" as its near-null space (fieldsplit hands a
   /// "nearnullspace" composed on a split's IS to that split's matrix, which GAMG reads).
   bool split_fields(PC preconditioner) {
-    const auto n = static_cast<PetscInt>(pattern_outer_.size()) - 1;
+    PetscInt n = 0;
+    MatGetSize(matrix_, &n, nullptr);
     if (n_first_ <= 0 || n_first_ >= (layout_.empty() ? n : layout_.n_rows()))
       refuse("-pc_type fieldsplit needs a saddle point (velocity and pressure fields), and "
              "this loop's systems have the velocity only",
@@ -320,7 +323,8 @@ private:
     return !layout_.empty();
   }
 
-  /// Whether `matrix` (compressed, either storage order) has the pattern of the last copy.
+  /// Whether `matrix` (compressed, either storage order) has the pattern of the last
+  /// distributed copy.
   template <class Matrix> bool has_copied_pattern(const Matrix& matrix) const {
     const auto n = static_cast<std::size_t>(matrix.outerSize());
     return pattern_outer_.size() == n + 1 &&
@@ -330,12 +334,23 @@ private:
   }
 
   /// Copies `matrix` (its lower triangle for SymmetricLower) into the AIJ matrix,
-  /// made on the first call and rebuilt only if the pattern changes.
+  /// made on the first call and rebuilt only if the pattern changes. On the same pattern
+  /// the values go straight into PETSc's array (petsc::ValueMap), with no copy of the
+  /// matrix in between.
   void copy(const assembly::SparseMatrix& matrix) {
     if (distributed_) {
       copy_distributed(matrix);
       return;
     }
+    if (matrix_ && value_map_.matches(matrix)) {
+      PetscScalar* values = nullptr;
+      MatSeqAIJGetArray(matrix_, &values);
+      value_map_.fill(matrix, std::span<Real>(values, output_nonzeros_));
+      MatSeqAIJRestoreArray(matrix_, &values); // raises the state: the PC sets up anew
+      return;
+    }
+    // A new pattern: P Qᵀ K Q Pᵀ once through Eigen (its pattern is PETSc's), then the map.
+    value_map_ = {};
     RowMatrix rows;
     if (storage_ == MatrixStorage::SymmetricLower) {
       const assembly::SparseMatrix strict = matrix.triangularView<Eigen::StrictlyLower>();
@@ -345,28 +360,18 @@ private:
     } else {
       rows = in_frames(matrix);
     }
+    const Index n_velocity = n_first_ > 0 ? n_first_ : rows.rows();
     if (lay_out_nodes(rows.rows()))
-      rows = layout_.embed(rows, petsc::mean_absolute_diagonal(rows, n_first_));
+      rows = layout_.embed(rows, petsc::mean_absolute_diagonal(rows, n_velocity));
     rows.makeCompressed();
     const auto n = static_cast<PetscInt>(rows.rows());
-    const bool same_pattern = matrix_ && has_copied_pattern(rows);
-    if (same_pattern) {
-      PetscScalar* values = nullptr;
-      MatSeqAIJGetArray(matrix_, &values);
-      std::copy(rows.valuePtr(), rows.valuePtr() + rows.nonZeros(), values);
-      MatSeqAIJRestoreArray(matrix_, &values);
-      return;
-    }
     if (matrix_) MatDestroy(&matrix_);
     if (rhs_) VecDestroy(&rhs_);
     if (solution_) VecDestroy(&solution_);
-    pattern_outer_.assign(rows.outerIndexPtr(), rows.outerIndexPtr() + n + 1);
-    pattern_inner_.assign(rows.innerIndexPtr(), rows.innerIndexPtr() + rows.nonZeros());
-    // The CSR arrays are copied into the matrix (MatCreateSeqAIJWithArrays would
-    // keep pointers into `rows`).
+    // MatSeqAIJSetPreallocationCSR copies the CSR arrays into the matrix.
     if (MatCreate(PETSC_COMM_SELF, &matrix_) != 0 || MatSetSizes(matrix_, n, n, n, n) != 0 ||
         MatSetType(matrix_, MATSEQAIJ) != 0 ||
-        MatSeqAIJSetPreallocationCSR(matrix_, pattern_outer_.data(), pattern_inner_.data(),
+        MatSeqAIJSetPreallocationCSR(matrix_, rows.outerIndexPtr(), rows.innerIndexPtr(),
                                      rows.valuePtr()) != 0) {
       if (matrix_) MatDestroy(&matrix_);
       return;
@@ -376,6 +381,14 @@ private:
       MatSetOption(matrix_, MAT_SPD, PETSC_TRUE);
     }
     MatCreateVecs(matrix_, &solution_, &rhs_);
+    static_assert(std::is_same_v<PetscInt, Index>, "PETSc's CSR indices are formflow's");
+    const auto n_values = static_cast<std::size_t>(rows.nonZeros());
+    value_map_ = petsc::ValueMap(
+        matrix, storage_ == MatrixStorage::SymmetricLower,
+        frames_.empty() ? assembly::SparseMatrix() : frame_matrix_, layout_,
+        std::span<const Index>(rows.outerIndexPtr(), static_cast<std::size_t>(n) + 1),
+        std::span<const Index>(rows.innerIndexPtr(), n_values), n_velocity);
+    output_nonzeros_ = n_values;
   }
 
   /// A distributed run (issue 20; app/main.cpp said so, and PETSC_COMM_WORLD has more
@@ -455,7 +468,9 @@ private:
   Mat matrix_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
-  std::vector<PetscInt> pattern_outer_, pattern_inner_;
+  petsc::ValueMap value_map_;       ///< sequential: where PETSc's values come from
+  std::size_t output_nonzeros_ = 0; ///< sequential: the values of matrix_
+  std::vector<PetscInt> pattern_outer_, pattern_inner_; ///< distributed: the share's pattern
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
   std::vector<PetscInt> petsc_index_; ///< distributed: free dof → PETSc's row
   std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
