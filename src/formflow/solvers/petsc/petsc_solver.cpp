@@ -9,6 +9,7 @@
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
+#include "formflow/solvers/petsc/saddle_point_nest.hpp"
 #include "formflow/solvers/petsc/value_map.hpp"
 
 #include <fmt/format.h>
@@ -16,16 +17,16 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
 namespace formflow::solvers {
 
 namespace {
-
-using RowMatrix = Eigen::SparseMatrix<Real, Eigen::RowMajor, PetscInt>;
 
 constexpr const char* options_key = "solver.petsc_options";
 
@@ -292,17 +293,6 @@ private:
     return true;
   }
 
-  /// Qᵀ K Q for the full matrix K (set_local_frames; K itself without frames). Q's
-  /// pattern is fixed and the product keeps every structural entry, so the pattern
-  /// stays the same from one factorisation to the next.
-  RowMatrix in_frames(const assembly::SparseMatrix& full) {
-    if (frames_.empty()) return RowMatrix(full);
-    if (frame_matrix_.rows() != full.rows())
-      frame_matrix_ = assembly::frame_matrix(frames_, full.rows());
-    const assembly::SparseMatrix transposed = frame_matrix_.transpose();
-    return RowMatrix(transposed * full * frame_matrix_);
-  }
-
   /// Whether the velocity block is laid out node by node (NodeBlockLayout), for a saddle
   /// point whose velocity nodes set_velocity_nodes gave: by default where the iterative
   /// default serves (a block-diagonal Schur matrix, make_ksp), since BoomerAMG then
@@ -333,62 +323,94 @@ private:
            std::equal(pattern_inner_.begin(), pattern_inner_.end(), matrix.innerIndexPtr());
   }
 
-  /// Copies `matrix` (its lower triangle for SymmetricLower) into the AIJ matrix,
-  /// made on the first call and rebuilt only if the pattern changes. On the same pattern
-  /// the values go straight into PETSc's array (petsc::ValueMap), with no copy of the
+  /// Whether the saddle point goes to PETSc as four blocks (petsc::SaddlePointNest): where
+  /// the iterative default serves (a block-diagonal Schur matrix, make_ksp) and the
+  /// options do not ask for another preconditioner than fieldsplit (a direct solver
+  /// needs one AIJ matrix); -formflow_saddle_point_nest 0 says otherwise. Decided at the
+  /// first copy, after lay_out_nodes.
+  bool nest_the_saddle_point() {
+    if (distributed_ || n_first_ <= 0 || schur_block_ <= 0 || !schur_matrix_) return false;
+    PetscBool wanted = PETSC_TRUE, given = PETSC_FALSE;
+    PetscOptionsGetBool(nullptr, nullptr, "-formflow_saddle_point_nest", &wanted, &given);
+    char type[64] = "";
+    PetscBool typed = PETSC_FALSE;
+    PetscOptionsGetString(nullptr, nullptr, "-pc_type", type, sizeof type, &typed);
+    return wanted && (!typed || std::string_view(type) == PCFIELDSPLIT);
+  }
+
+  /// Copies `matrix` (its lower triangle for SymmetricLower) into PETSc's matrix, made on
+  /// the first call and rebuilt only if the pattern changes. On the same pattern the
+  /// values go straight into PETSc's arrays (petsc::ValueMap), with no copy of the
   /// matrix in between.
   void copy(const assembly::SparseMatrix& matrix) {
     if (distributed_) {
       copy_distributed(matrix);
       return;
     }
-    if (matrix_ && value_map_.matches(matrix)) {
-      PetscScalar* values = nullptr;
-      MatSeqAIJGetArray(matrix_, &values);
-      value_map_.fill(matrix, std::span<Real>(values, output_nonzeros_));
-      MatSeqAIJRestoreArray(matrix_, &values); // raises the state: the PC sets up anew
+    if (!(matrix_ && input_pattern_.matches(matrix)) && !make_sequential(matrix)) return;
+    if (nest_) {
+      nest_->fill(matrix);
       return;
     }
-    // A new pattern: P Qᵀ K Q Pᵀ once through Eigen (its pattern is PETSc's), then the map.
+    PetscScalar* values = nullptr;
+    MatSeqAIJGetArray(matrix_, &values);
+    value_map_.fill(matrix, std::span<Real>(values, output_nonzeros_));
+    MatSeqAIJRestoreArray(matrix_, &values); // raises the state: the PC sets up anew
+  }
+
+  /// PETSc's sequential matrix (one AIJ, or the saddle point's nest) with the pattern of
+  /// P Qᵀ K Q Pᵀ for K = `matrix`, its values not yet set; false if PETSc refused.
+  bool make_sequential(const assembly::SparseMatrix& matrix) {
     value_map_ = {};
-    RowMatrix rows;
-    if (storage_ == MatrixStorage::SymmetricLower) {
-      const assembly::SparseMatrix strict = matrix.triangularView<Eigen::StrictlyLower>();
-      assembly::SparseMatrix full = matrix;
-      full += assembly::SparseMatrix(strict.transpose());
-      rows = in_frames(full);
-    } else {
-      rows = in_frames(matrix);
-    }
-    const Index n_velocity = n_first_ > 0 ? n_first_ : rows.rows();
-    if (lay_out_nodes(rows.rows()))
-      rows = layout_.embed(rows, petsc::mean_absolute_diagonal(rows, n_velocity));
-    rows.makeCompressed();
-    const auto n = static_cast<PetscInt>(rows.rows());
+    input_pattern_ = {};
+    nest_.reset();
     if (matrix_) MatDestroy(&matrix_);
     if (rhs_) VecDestroy(&rhs_);
     if (solution_) VecDestroy(&solution_);
+    const Index n_rows = matrix.rows();
+    if (!frames_.empty() && frame_matrix_.rows() != n_rows)
+      frame_matrix_ = assembly::frame_matrix(frames_, n_rows);
+    const assembly::SparseMatrix no_frames;
+    const assembly::SparseMatrix& frames = frames_.empty() ? no_frames : frame_matrix_;
+    lay_out_nodes(n_rows);
+    const bool lower_only = storage_ == MatrixStorage::SymmetricLower;
+    const Index n_velocity = n_first_ > 0 ? n_first_ : n_rows;
+    const petsc::CsrPattern pattern = petsc::solved_pattern(matrix, lower_only, frames, layout_);
+    const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
+    if (nest_the_saddle_point()) {
+      nest_ = std::make_unique<petsc::SaddlePointNest>();
+      const Index n_first = layout_.empty() ? n_first_ : layout_.n_velocity_embedded();
+      if (!nest_->build(pattern, n_first, layout_.empty() ? 1 : layout_.components(), matrix,
+                        lower_only, frames, layout_, n_velocity)) {
+        nest_.reset();
+        return false;
+      }
+      matrix_ = nest_->matrix();
+      PetscObjectReference(reinterpret_cast<PetscObject>(matrix_));
+      VecCreateSeq(PETSC_COMM_SELF, n, &rhs_); // plain vectors, not the nest's VECNEST
+      VecDuplicate(rhs_, &solution_);
+      input_pattern_ = petsc::InputPattern(matrix);
+      return true;
+    }
     // MatSeqAIJSetPreallocationCSR copies the CSR arrays into the matrix.
+    static_assert(std::is_same_v<PetscInt, Index>, "PETSc's CSR indices are formflow's");
     if (MatCreate(PETSC_COMM_SELF, &matrix_) != 0 || MatSetSizes(matrix_, n, n, n, n) != 0 ||
         MatSetType(matrix_, MATSEQAIJ) != 0 ||
-        MatSeqAIJSetPreallocationCSR(matrix_, rows.outerIndexPtr(), rows.innerIndexPtr(),
-                                     rows.valuePtr()) != 0) {
+        MatSeqAIJSetPreallocationCSR(matrix_, pattern.outer.data(), pattern.inner.data(),
+                                     nullptr) != 0) {
       if (matrix_) MatDestroy(&matrix_);
-      return;
+      return false;
     }
-    if (storage_ == MatrixStorage::SymmetricLower) {
+    if (lower_only) {
       MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE);
       MatSetOption(matrix_, MAT_SPD, PETSC_TRUE);
     }
     MatCreateVecs(matrix_, &solution_, &rhs_);
-    static_assert(std::is_same_v<PetscInt, Index>, "PETSc's CSR indices are formflow's");
-    const auto n_values = static_cast<std::size_t>(rows.nonZeros());
-    value_map_ = petsc::ValueMap(
-        matrix, storage_ == MatrixStorage::SymmetricLower,
-        frames_.empty() ? assembly::SparseMatrix() : frame_matrix_, layout_,
-        std::span<const Index>(rows.outerIndexPtr(), static_cast<std::size_t>(n) + 1),
-        std::span<const Index>(rows.innerIndexPtr(), n_values), n_velocity);
-    output_nonzeros_ = n_values;
+    value_map_ = petsc::ValueMap(matrix, lower_only, frames, layout_, pattern.outer, pattern.inner,
+                                 n_velocity);
+    output_nonzeros_ = pattern.inner.size();
+    input_pattern_ = petsc::InputPattern(matrix);
+    return true;
   }
 
   /// A distributed run (issue 20; app/main.cpp said so, and PETSC_COMM_WORLD has more
@@ -468,8 +490,10 @@ private:
   Mat matrix_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
-  petsc::ValueMap value_map_;       ///< sequential: where PETSc's values come from
-  std::size_t output_nonzeros_ = 0; ///< sequential: the values of matrix_
+  petsc::ValueMap value_map_;                    ///< sequential: where PETSc's values come from
+  petsc::InputPattern input_pattern_;            ///< sequential: the pattern of the last copy
+  std::unique_ptr<petsc::SaddlePointNest> nest_; ///< sequential: the saddle point's blocks
+  std::size_t output_nonzeros_ = 0;              ///< sequential: the values of matrix_
   std::vector<PetscInt> pattern_outer_, pattern_inner_; ///< distributed: the share's pattern
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
   std::vector<PetscInt> petsc_index_; ///< distributed: free dof → PETSc's row

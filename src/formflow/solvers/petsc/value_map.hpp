@@ -14,6 +14,24 @@
 
 namespace formflow::solvers::petsc {
 
+/// A row-major (CSR) pattern.
+struct CsrPattern {
+  std::vector<Index> outer{0}, inner;
+};
+
+/// The pattern of P Qᵀ K Q Pᵀ (ValueMap below) from K's alone (`input`, values unused;
+/// `lower_only`, `frames`, `layout` as for ValueMap): row by row, with no matrix product
+/// and no values, so that the first copy of a large matrix is as lean as the later ones.
+/// A slot of the layout holds its diagonal only.
+CsrPattern solved_pattern(const assembly::SparseMatrix& input, bool lower_only,
+                          const assembly::SparseMatrix& frames, const NodeBlockLayout& layout);
+
+/// Where PETSc's matrix (or one block of it) sits in P Qᵀ K Q Pᵀ (ValueMap): its row r
+/// and column c are the layout's row first_row + r and column first_column + c.
+struct MatrixBlock {
+  Index first_row = 0, first_column = 0;
+};
+
 /// PETSc solves P Qᵀ K Q Pᵀ y = P Qᵀ b: K is formflow's matrix (compressed column-major,
 /// both triangles or, for a symmetric matrix, the lower one), Q the local frames' change
 /// of basis (a few unknowns per Γ3 node, identity elsewhere) and P the node-block layout
@@ -30,17 +48,18 @@ public:
   ValueMap() = default;
   /// `input`: K's pattern (values unused). `frames`: Q (n × n, compressed), or empty for
   /// none. `layout`: P, or empty for the identity. `outer`, `inner`: the CSR pattern of
-  /// PETSc's matrix (row-major, in the layout's rows), which must contain the pattern of
-  /// P Qᵀ K Q Pᵀ. `n_velocity`: the velocity rows of a saddle point (the hole value is the
-  /// mean |diagonal| over them), or every row.
+  /// PETSc's matrix (row-major, in the layout's rows; `block` says which part of it),
+  /// which must contain that part's pattern of P Qᵀ K Q Pᵀ. `n_velocity`: the velocity
+  /// rows of a saddle point (the hole value is the mean |diagonal| over them), or every
+  /// row; a block holding slots holds the velocity rows' diagonal too.
   ValueMap(const assembly::SparseMatrix& input, bool lower_only,
            const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
-           std::span<const Index> outer, std::span<const Index> inner, Index n_velocity);
+           std::span<const Index> outer, std::span<const Index> inner, Index n_velocity,
+           MatrixBlock block = MatrixBlock());
 
   bool empty() const { return source_.empty(); }
-  /// Whether `input` has the pattern the map was made for.
-  bool matches(const assembly::SparseMatrix& input) const;
-  /// PETSc's values (`output`, as many as the pattern has) from K's.
+  /// PETSc's values (`output`, as many as the pattern has) from K's, which must have the
+  /// pattern the map was made for (the caller checks: InputPattern).
   void fill(const assembly::SparseMatrix& input, std::span<Real> output) const;
 
 private:
@@ -51,7 +70,18 @@ private:
   std::vector<Index> velocity_diagonal_;       ///< output indices of the velocity rows' diagonal
   std::vector<Index> holes_;                   ///< output indices of the layout's slots
   Index n_velocity_ = 0;
-  std::vector<Index> input_outer_, input_inner_; ///< K's pattern
+  Index n_input_values_ = 0;
+};
+
+/// K's pattern at the last copy, to tell whether a refactorisation keeps it.
+class InputPattern {
+public:
+  InputPattern() = default;
+  explicit InputPattern(const assembly::SparseMatrix& input);
+  bool matches(const assembly::SparseMatrix& input) const;
+
+private:
+  std::vector<Index> outer_, inner_;
 };
 
 } // namespace formflow::solvers::petsc
