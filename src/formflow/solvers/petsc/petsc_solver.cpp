@@ -200,6 +200,14 @@ public:
     dof_of_velocity_ = std::move(dof_of_velocity);
   }
 
+  bool take_saddle_point_blocks(const assembly::SparseMatrix& coupling,
+                                const assembly::SparseMatrix& pressure_block) override {
+    if (matrix_ || !nest_the_saddle_point()) return false;
+    coupling_ = coupling;
+    pressure_block_ = pressure_block;
+    return true;
+  }
+
 private:
   /// x in the unknowns PETSc solves for: y = Qᵀ x (set_local_frames), laid out node by
   /// node (lay_out_nodes) where it is.
@@ -323,11 +331,11 @@ private:
            std::equal(pattern_inner_.begin(), pattern_inner_.end(), matrix.innerIndexPtr());
   }
 
-  /// Whether the saddle point goes to PETSc as four blocks (petsc::SaddlePointNest): where
-  /// the iterative default serves (a block-diagonal Schur matrix, make_ksp) and the
-  /// options do not ask for another preconditioner than fieldsplit (a direct solver
-  /// needs one AIJ matrix); -formflow_saddle_point_nest 0 says otherwise. Decided at the
-  /// first copy, after lay_out_nodes.
+  /// Whether the saddle point goes to PETSc as four blocks (petsc::SaddlePointNest,
+  /// take_saddle_point_blocks): where the iterative default serves (a block-diagonal
+  /// Schur matrix, make_ksp) and the options do not ask for another preconditioner than
+  /// fieldsplit (a direct solver needs one AIJ matrix); -formflow_saddle_point_nest 0
+  /// says otherwise (one AIJ matrix of the whole saddle point, as before session 13).
   bool nest_the_saddle_point() {
     if (distributed_ || n_first_ <= 0 || schur_block_ <= 0 || !schur_matrix_) return false;
     PetscBool wanted = PETSC_TRUE, given = PETSC_FALSE;
@@ -349,13 +357,28 @@ private:
     }
     if (!(matrix_ && input_pattern_.matches(matrix)) && !make_sequential(matrix)) return;
     if (nest_) {
-      nest_->fill(matrix);
+      nest_->fill(matrix); // A alone (take_saddle_point_blocks)
       return;
     }
     PetscScalar* values = nullptr;
     MatSeqAIJGetArray(matrix_, &values);
     value_map_.fill(matrix, std::span<Real>(values, output_nonzeros_));
     MatSeqAIJRestoreArray(matrix_, &values); // raises the state: the PC sets up anew
+  }
+
+  /// The nest as the solver's matrix, with plain vectors of `n` rows (not the nest's
+  /// VECNEST: the rest of the solver reads and writes them as arrays).
+  bool adopt_nest(const assembly::SparseMatrix& matrix, Index n) {
+    matrix_ = nest_->matrix();
+    PetscObjectReference(reinterpret_cast<PetscObject>(matrix_));
+    VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(n), &rhs_);
+    VecDuplicate(rhs_, &solution_);
+    input_pattern_ = petsc::InputPattern(matrix);
+    return true;
+  }
+  bool fail_nest() {
+    nest_.reset();
+    return false;
   }
 
   /// PETSc's sequential matrix (one AIJ, or the saddle point's nest) with the pattern of
@@ -367,31 +390,29 @@ private:
     if (matrix_) MatDestroy(&matrix_);
     if (rhs_) VecDestroy(&rhs_);
     if (solution_) VecDestroy(&solution_);
-    const Index n_rows = matrix.rows();
-    if (!frames_.empty() && frame_matrix_.rows() != n_rows)
-      frame_matrix_ = assembly::frame_matrix(frames_, n_rows);
+    const bool lower_only = storage_ == MatrixStorage::SymmetricLower;
+    const bool blocks = coupling_.rows() > 0; // take_saddle_point_blocks: `matrix` is A
+    const Index n_rows = matrix.rows() + (blocks ? coupling_.rows() : 0);
+    if (!frames_.empty() && frame_matrix_.rows() != matrix.rows())
+      frame_matrix_ = assembly::frame_matrix(frames_, matrix.rows());
     const assembly::SparseMatrix no_frames;
     const assembly::SparseMatrix& frames = frames_.empty() ? no_frames : frame_matrix_;
     lay_out_nodes(n_rows);
-    const bool lower_only = storage_ == MatrixStorage::SymmetricLower;
+    if (blocks) {
+      // The velocity block's own layout: the same rows as the saddle point's layout gives
+      // the velocity (they depend on the velocity's nodes alone), no pressure rows.
+      const petsc::NodeBlockLayout velocity_layout =
+          layout_.empty() ? petsc::NodeBlockLayout()
+                          : petsc::NodeBlockLayout(components_, dof_of_velocity_, matrix.rows());
+      nest_ = std::make_unique<petsc::SaddlePointNest>();
+      if (!nest_->build_from_blocks(matrix, coupling_, pressure_block_, frames, velocity_layout,
+                                    layout_.empty() ? 1 : layout_.components()))
+        return fail_nest();
+      return adopt_nest(matrix, layout_.empty() ? n_rows : layout_.n_embedded());
+    }
     const Index n_velocity = n_first_ > 0 ? n_first_ : n_rows;
     const petsc::CsrPattern pattern = petsc::solved_pattern(matrix, lower_only, frames, layout_);
     const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
-    if (nest_the_saddle_point()) {
-      nest_ = std::make_unique<petsc::SaddlePointNest>();
-      const Index n_first = layout_.empty() ? n_first_ : layout_.n_velocity_embedded();
-      if (!nest_->build(pattern, n_first, layout_.empty() ? 1 : layout_.components(), matrix,
-                        lower_only, frames, layout_, n_velocity)) {
-        nest_.reset();
-        return false;
-      }
-      matrix_ = nest_->matrix();
-      PetscObjectReference(reinterpret_cast<PetscObject>(matrix_));
-      VecCreateSeq(PETSC_COMM_SELF, n, &rhs_); // plain vectors, not the nest's VECNEST
-      VecDuplicate(rhs_, &solution_);
-      input_pattern_ = petsc::InputPattern(matrix);
-      return true;
-    }
     // MatSeqAIJSetPreallocationCSR copies the CSR arrays into the matrix.
     static_assert(std::is_same_v<PetscInt, Index>, "PETSc's CSR indices are formflow's");
     if (MatCreate(PETSC_COMM_SELF, &matrix_) != 0 || MatSetSizes(matrix_, n, n, n, n) != 0 ||
@@ -490,10 +511,11 @@ private:
   Mat matrix_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
-  petsc::ValueMap value_map_;                    ///< sequential: where PETSc's values come from
-  petsc::InputPattern input_pattern_;            ///< sequential: the pattern of the last copy
-  std::unique_ptr<petsc::SaddlePointNest> nest_; ///< sequential: the saddle point's blocks
-  std::size_t output_nonzeros_ = 0;              ///< sequential: the values of matrix_
+  petsc::ValueMap value_map_;                        ///< sequential: where PETSc's values come from
+  petsc::InputPattern input_pattern_;                ///< sequential: the pattern of the last copy
+  std::unique_ptr<petsc::SaddlePointNest> nest_;     ///< sequential: the saddle point's blocks
+  assembly::SparseMatrix coupling_, pressure_block_; ///< take_saddle_point_blocks' B and C
+  std::size_t output_nonzeros_ = 0;                  ///< sequential: the values of matrix_
   std::vector<PetscInt> pattern_outer_, pattern_inner_; ///< distributed: the share's pattern
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
   std::vector<PetscInt> petsc_index_; ///< distributed: free dof → PETSc's row

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The saddle point as a MATNEST of four AIJ blocks filled through ValueMaps.
+// The saddle point as a MATNEST of four AIJ blocks, the velocity's filled through a ValueMap.
 #include "formflow/solvers/petsc/saddle_point_nest.hpp"
 
 #include "formflow/core/error.hpp"
+
+#include <Eigen/SparseCore>
 
 #include <span>
 #include <type_traits>
@@ -16,48 +18,74 @@ SaddlePointNest::~SaddlePointNest() {
     if (block) MatDestroy(&block);
 }
 
-bool SaddlePointNest::build(const CsrPattern& pattern, Index n_first, PetscInt block_size,
-                            const assembly::SparseMatrix& input, bool lower_only,
-                            const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
-                            Index n_velocity) {
-  const auto n = static_cast<Index>(pattern.outer.size()) - 1;
-  FF_ASSERT(n_first > 0 && n_first < n, "a saddle point with both fields");
-  static_assert(std::is_same_v<PetscInt, Index>, "PETSc's CSR indices are formflow's");
-  const std::array<Index, 2> first = {0, n_first}, size = {n_first, n - n_first};
-  for (int b = 0; b < 4; ++b) {
-    const int row_field = b / 2, column_field = b % 2;
-    const Index r0 = first[row_field], c0 = first[column_field];
-    const Index c1 = c0 + size[column_field];
-    CsrPattern part;
-    for (Index row = r0; row < r0 + size[row_field]; ++row) {
-      bool diagonal = false;
-      for (Index s = pattern.outer[row]; s < pattern.outer[row + 1]; ++s) {
-        const Index column = pattern.inner[s];
-        if (column < c0 || column >= c1) continue;
-        // The pressure block keeps every diagonal entry (zero where C has none, as with
-        // d = 0), so that it is never an empty matrix: fieldsplit's Schur complement
-        // reads it.
-        if (b == 3 && !diagonal && column >= row) {
-          diagonal = true;
-          if (column > row) part.inner.push_back(row - c0);
-        }
-        part.inner.push_back(column - c0);
-      }
-      if (b == 3 && !diagonal) part.inner.push_back(row - c0);
-      part.outer.push_back(static_cast<Index>(part.inner.size()));
-    }
-    const auto m = static_cast<PetscInt>(size[row_field]);
-    const auto k = static_cast<PetscInt>(size[column_field]);
-    if (MatCreate(PETSC_COMM_SELF, &blocks_[b]) != 0 || MatSetSizes(blocks_[b], m, k, m, k) != 0 ||
-        (b == 0 && block_size > 1 && MatSetBlockSize(blocks_[b], block_size) != 0) ||
-        MatSetType(blocks_[b], MATSEQAIJ) != 0 ||
-        MatSeqAIJSetPreallocationCSR(blocks_[b], part.outer.data(), part.inner.data(), nullptr) !=
-            0)
-      return false;
-    maps_[b] = ValueMap(input, lower_only, frames, layout, part.outer, part.inner, n_velocity,
-                        MatrixBlock{r0, c0});
-    values_[b] = part.inner.size();
-  }
+namespace {
+
+using RowMatrix = Eigen::SparseMatrix<Real, Eigen::RowMajor, Index>;
+
+CsrPattern pattern_of(const RowMatrix& rows) {
+  CsrPattern pattern;
+  pattern.outer.assign(rows.outerIndexPtr(), rows.outerIndexPtr() + rows.rows() + 1);
+  pattern.inner.assign(rows.innerIndexPtr(), rows.innerIndexPtr() + rows.nonZeros());
+  return pattern;
+}
+
+} // namespace
+
+bool SaddlePointNest::build_from_blocks(const assembly::SparseMatrix& velocity_lower,
+                                        const assembly::SparseMatrix& coupling,
+                                        const assembly::SparseMatrix& pressure_block,
+                                        const assembly::SparseMatrix& frames,
+                                        const NodeBlockLayout& layout, PetscInt block_size) {
+  const Index n_v = velocity_lower.rows(), n_p = pressure_block.rows();
+  FF_ASSERT(coupling.rows() == n_p && coupling.cols() == n_v, "B is n_p × n_v");
+  const CsrPattern a = solved_pattern(velocity_lower, true, frames, layout);
+  const auto n_first = static_cast<Index>(a.outer.size()) - 1;
+  if (!make_block(0, n_first, n_first, a, nullptr, block_size)) return false;
+  velocity_map_ = ValueMap(velocity_lower, true, frames, layout, a.outer, a.inner, n_v);
+  // Bᵀ in the solved unknowns, P Qᵀ Bᵀ (n_first × n_p), and B Q Pᵀ, its transpose: B is
+  // a small part of the saddle point's nonzeros, made once through Eigen.
+  assembly::SparseMatrix framed = coupling.transpose();
+  if (frames.size() != 0) framed = assembly::SparseMatrix(frames.transpose() * framed);
+  std::vector<Eigen::Triplet<Real, Index>> entries;
+  entries.reserve(static_cast<std::size_t>(framed.nonZeros()));
+  for (Index column = 0; column < framed.outerSize(); ++column)
+    for (assembly::SparseMatrix::InnerIterator it(framed, column); it; ++it)
+      entries.emplace_back(layout.empty() ? it.row() : layout.position(it.row()), column,
+                           it.value());
+  RowMatrix upper(n_first, n_p);
+  upper.setFromTriplets(entries.begin(), entries.end());
+  upper.makeCompressed();
+  RowMatrix lower = upper.transpose();
+  lower.makeCompressed();
+  // C with every diagonal entry (zero where C has none, as with d = 0): fieldsplit's
+  // Schur complement reads the block, which must not be an empty matrix.
+  entries.clear();
+  for (Index column = 0; column < pressure_block.outerSize(); ++column)
+    for (assembly::SparseMatrix::InnerIterator it(pressure_block, column); it; ++it)
+      entries.emplace_back(it.row(), column, it.value());
+  for (Index i = 0; i < n_p; ++i) entries.emplace_back(i, i, 0.0);
+  RowMatrix c(n_p, n_p);
+  c.setFromTriplets(entries.begin(), entries.end());
+  c.makeCompressed();
+  if (!make_block(1, n_first, n_p, pattern_of(upper), upper.valuePtr(), 1) ||
+      !make_block(2, n_p, n_first, pattern_of(lower), lower.valuePtr(), 1) ||
+      !make_block(3, n_p, n_p, pattern_of(c), c.valuePtr(), 1))
+    return false;
+  return nest(n_first, n_first + n_p);
+}
+
+bool SaddlePointNest::make_block(int b, Index rows, Index columns, const CsrPattern& pattern,
+                                 const Real* values, PetscInt block_size) {
+  const auto m = static_cast<PetscInt>(rows), k = static_cast<PetscInt>(columns);
+  if (b == 0) velocity_values_ = pattern.inner.size();
+  return MatCreate(PETSC_COMM_SELF, &blocks_[b]) == 0 && MatSetSizes(blocks_[b], m, k, m, k) == 0 &&
+         (block_size <= 1 || MatSetBlockSize(blocks_[b], block_size) == 0) &&
+         MatSetType(blocks_[b], MATSEQAIJ) == 0 &&
+         MatSeqAIJSetPreallocationCSR(blocks_[b], pattern.outer.data(), pattern.inner.data(),
+                                      values) == 0;
+}
+
+bool SaddlePointNest::nest(Index n_first, Index n) {
   IS fields[2] = {nullptr, nullptr};
   ISCreateStride(PETSC_COMM_SELF, static_cast<PetscInt>(n_first), 0, 1, &fields[0]);
   ISCreateStride(PETSC_COMM_SELF, static_cast<PetscInt>(n - n_first),
@@ -69,13 +97,11 @@ bool SaddlePointNest::build(const CsrPattern& pattern, Index n_first, PetscInt b
   return made == 0;
 }
 
-void SaddlePointNest::fill(const assembly::SparseMatrix& input) {
-  for (int b = 0; b < 4; ++b) {
-    PetscScalar* values = nullptr;
-    MatSeqAIJGetArray(blocks_[b], &values);
-    maps_[b].fill(input, std::span<Real>(values, values_[b]));
-    MatSeqAIJRestoreArray(blocks_[b], &values);
-  }
+void SaddlePointNest::fill(const assembly::SparseMatrix& velocity_lower) {
+  PetscScalar* values = nullptr;
+  MatSeqAIJGetArray(blocks_[0], &values);
+  velocity_map_.fill(velocity_lower, std::span<Real>(values, velocity_values_));
+  MatSeqAIJRestoreArray(blocks_[0], &values);
   // The nest's own state: the outer preconditioner sets up anew when it has risen.
   MatAssemblyBegin(nest_, MAT_FINAL_ASSEMBLY);
   MatAssemblyEnd(nest_, MAT_FINAL_ASSEMBLY);

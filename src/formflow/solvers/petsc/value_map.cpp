@@ -86,8 +86,7 @@ CsrPattern solved_pattern(const assembly::SparseMatrix& input, bool lower_only,
 
 ValueMap::ValueMap(const assembly::SparseMatrix& input, bool lower_only,
                    const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
-                   std::span<const Index> outer, std::span<const Index> inner, Index n_velocity,
-                   MatrixBlock block) {
+                   std::span<const Index> outer, std::span<const Index> inner, Index n_velocity) {
   FF_ASSERT(input.isCompressed() && input.rows() == input.cols(), "a compressed square matrix");
   const Index n = input.rows();
   FF_ASSERT(frames.size() == 0 || (frames.rows() == n && frames.isCompressed()),
@@ -114,12 +113,12 @@ ValueMap::ValueMap(const assembly::SparseMatrix& input, bool lower_only,
   source_.resize(inner.size());
   std::vector<std::pair<Index, Real>> column_i, column_j, sum;
   for (Index row = 0; row < n_output; ++row) {
-    const Index i = system_row[block.first_row + row];
+    const Index i = system_row[row];
     if (i >= 0) frame_column(frames, i, column_i);
     for (Index s = outer[row]; s < outer[row + 1]; ++s) {
-      const Index column = block.first_column + inner[s];
+      const Index column = inner[s];
       if (i < 0) {
-        FF_ASSERT(column == block.first_row + row, "a slot of the layout holds its diagonal only");
+        FF_ASSERT(column == row, "a slot of the layout holds its diagonal only");
         source_[s] = hole;
         holes_.push_back(s);
         continue;

@@ -26,12 +26,6 @@ struct CsrPattern {
 CsrPattern solved_pattern(const assembly::SparseMatrix& input, bool lower_only,
                           const assembly::SparseMatrix& frames, const NodeBlockLayout& layout);
 
-/// Where PETSc's matrix (or one block of it) sits in P Qᵀ K Q Pᵀ (ValueMap): its row r
-/// and column c are the layout's row first_row + r and column first_column + c.
-struct MatrixBlock {
-  Index first_row = 0, first_column = 0;
-};
-
 /// PETSc solves P Qᵀ K Q Pᵀ y = P Qᵀ b: K is formflow's matrix (compressed column-major,
 /// both triangles or, for a symmetric matrix, the lower one), Q the local frames' change
 /// of basis (a few unknowns per Γ3 node, identity elsewhere) and P the node-block layout
@@ -48,14 +42,12 @@ public:
   ValueMap() = default;
   /// `input`: K's pattern (values unused). `frames`: Q (n × n, compressed), or empty for
   /// none. `layout`: P, or empty for the identity. `outer`, `inner`: the CSR pattern of
-  /// PETSc's matrix (row-major, in the layout's rows; `block` says which part of it),
-  /// which must contain that part's pattern of P Qᵀ K Q Pᵀ. `n_velocity`: the velocity
-  /// rows of a saddle point (the hole value is the mean |diagonal| over them), or every
-  /// row; a block holding slots holds the velocity rows' diagonal too.
+  /// PETSc's matrix (row-major, in the layout's rows), which must contain the pattern of
+  /// P Qᵀ K Q Pᵀ. `n_velocity`: the velocity rows of a saddle point (the hole value is the
+  /// mean |diagonal| over them), or every row.
   ValueMap(const assembly::SparseMatrix& input, bool lower_only,
            const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
-           std::span<const Index> outer, std::span<const Index> inner, Index n_velocity,
-           MatrixBlock block = MatrixBlock());
+           std::span<const Index> outer, std::span<const Index> inner, Index n_velocity);
 
   bool empty() const { return source_.empty(); }
   /// PETSc's values (`output`, as many as the pattern has) from K's, which must have the
