@@ -70,17 +70,21 @@ public:
                                   "option's family) or leave the key unset for direct MUMPS");
       return false;
     }
+    // The splits' own set-up (the velocity AMG hierarchy) here, not at the first
+    // application inside the solve: on the saddle point's nest the outer set-up leaves
+    // it to them, and the phases' times should say where it went.
+    PC outer = nullptr;
+    KSPGetPC(ksp_, &outer);
+    const PetscErrorCode splits = petsc::set_up_splits(outer);
     if (!checked_unused_) {
       checked_unused_ = true;
-      PC outer = nullptr;
-      KSPGetPC(ksp_, &outer);
-      const PetscErrorCode splits = petsc::set_up_splits(outer);
       if (splits == PETSC_ERR_ARG_UNKNOWN_TYPE || splits == PETSC_ERR_ARG_WRONG)
         refuse(capture.message(), "give a type PETSc 3.18 has for that split");
       if (splits != 0) return false;
       krylov_start_.inexact_allowed(ksp_);       // reads -formflow_inexact_steps before the check
       options_scope_.refuse_unused(options_key); // what nothing read by now
     }
+    if (splits != 0) return false;
     PCFailedReason failed = PC_NOERROR;
     PC preconditioner = nullptr;
     KSPGetPC(ksp_, &preconditioner);
