@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Solve on 2^L h, ..., 2h, interpolating each solution to the next mesh.
 #include "formflow/app/coarse_start.hpp"
+
 #include "formflow/app/solve_plan.hpp"
 
 #include "formflow/app/simulation.hpp"
+#include "formflow/assembly/contact_normal_velocity.hpp"
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
@@ -63,6 +65,18 @@ CoarseLoop coarse_loop(const SolvePlan& plan) {
              : CoarseLoop::CondensedNewton;
 }
 
+/// A coarse level's velocity on the next mesh: interpolated, with its Γ3 nodes' normal
+/// velocity interpolated as a scalar of its own and set on the next mesh's Γ3 nodes
+/// (assembly::set_contact_normal_velocity says why).
+template <int dim>
+VectorX carried_over(const mesh::Mesh<dim>& from, const VectorX& velocity,
+                     const VectorX& normal_velocity, const assembly::Discretisation<dim>& to) {
+  VectorX carried = fem::interpolate_nodal_field(from, velocity, dim, to.mesh());
+  const VectorX normal = fem::interpolate_nodal_field(from, normal_velocity, 1, to.mesh());
+  assembly::set_contact_normal_velocity(to, normal, carried);
+  return carried;
+}
+
 } // namespace
 
 bool size_fits(const mesh::MeshSpec& spec, Real size) {
@@ -71,8 +85,8 @@ bool size_fits(const mesh::MeshSpec& spec, Real size) {
 }
 
 template <int dim>
-std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<dim>& fine,
-                                        PhaseTimes& times) {
+std::optional<CoarseStart>
+coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, PhaseTimes& times) {
   if (case_.mesh.source == mesh::MeshSource::File) return std::nullopt;
   // As many of the asked levels as the geometry admits (2^L h must divide its lengths).
   int levels = 0;
@@ -95,7 +109,7 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
   if (loop == CoarseLoop::CondensedNewton)
     formulation.discontinuous = assembly::DiscontinuousPressure::Condensed;
   mesh::Mesh<dim> previous_mesh;
-  VectorX previous_velocity;
+  VectorX previous_velocity, previous_normal_velocity;
   for (int level = levels; level >= 1; --level) {
     mesh::MeshSpec spec = case_.mesh;
     spec.size = case_.mesh.size * std::ldexp(1.0, level);
@@ -115,7 +129,8 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
         problem->attach_multipliers(mixed_pressure.get());
       }
       if (level < levels)
-        guess = fem::interpolate_nodal_field(previous_mesh, previous_velocity, dim, mesh);
+        guess = carried_over(previous_mesh, previous_velocity, previous_normal_velocity,
+                             problem->discretisation());
     }
     const VectorX* level_start = level < levels ? &guess : nullptr;
     solvers::FormingNonlinearProblem<dim> nonlinear(*problem);
@@ -136,17 +151,19 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
     start.mesh_sizes.push_back(spec.size);
     start.iterations.push_back(static_cast<int>(outcome.history.size()));
     start.converged = start.converged && outcome.stop_reason == solvers::StopReason::Converged;
+    previous_normal_velocity =
+        assembly::contact_normal_velocity(problem->discretisation(), outcome.velocity);
     previous_mesh = std::move(mesh);
     previous_velocity = std::move(outcome.velocity);
   }
   ScopedTimer timer(times, "coarse start");
-  start.velocity = fem::interpolate_nodal_field(previous_mesh, previous_velocity, dim, fine);
+  start.velocity = carried_over(previous_mesh, previous_velocity, previous_normal_velocity, fine);
   return start;
 }
 
-template std::optional<CoarseStart> coarse_start<2>(const io::Case&, const mesh::Mesh<2>&,
-                                                    PhaseTimes&);
-template std::optional<CoarseStart> coarse_start<3>(const io::Case&, const mesh::Mesh<3>&,
-                                                    PhaseTimes&);
+template std::optional<CoarseStart>
+coarse_start<2>(const io::Case&, const assembly::Discretisation<2>&, PhaseTimes&);
+template std::optional<CoarseStart>
+coarse_start<3>(const io::Case&, const assembly::Discretisation<3>&, PhaseTimes&);
 
 } // namespace formflow::app

@@ -2,6 +2,7 @@
 // Mesh sequencing: Newton's first iterate from the solution on coarser meshes.
 #pragma once
 
+#include "formflow/assembly/discretisation.hpp"
 #include "formflow/core/timer.hpp"
 #include "formflow/io/case.hpp"
 #include "formflow/mesh/mesh.hpp"
@@ -47,10 +48,13 @@ bool size_fits(const mesh::MeshSpec& spec, Real size);
 /// interpolation as "coarse start"), so the solver time includes the coarse work.
 /// std::nullopt when no coarse level is used (L = 0, none fits, mesh from a file).
 /// Each level varies only the mesh spec (case_.mesh with a larger size) and the
-/// iteration control; the case itself is read, never copied. `fine` is of the
-/// dimension the case's mesh source makes, and so is every coarse level.
+/// iteration control; the case itself is read, never copied. `fine` is the case's
+/// discretisation, of the dimension the case's mesh source makes, and so is every
+/// coarse level. Each level's velocity goes to the next mesh by interpolation, its Γ3
+/// nodes' normal velocity (which carries the contact pressure) as a scalar of its own
+/// (assembly::set_contact_normal_velocity).
 template <int dim>
-std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<dim>& fine,
-                                        PhaseTimes& times);
+std::optional<CoarseStart>
+coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, PhaseTimes& times);
 
 } // namespace formflow::app

@@ -242,7 +242,7 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
   // at the fine Γ3 points only).
   std::optional<CoarseStart> coarse;
   if (plan.sequences_meshes() && mesh_from_case && !start_velocity) {
-    coarse = coarse_start(case_, mesh, results.timing);
+    coarse = coarse_start(case_, problem->discretisation(), results.timing);
     if (coarse) {
       results.coarse_iterations = coarse->iterations;
       results.coarse_mesh_sizes = coarse->mesh_sizes;

@@ -33,14 +33,13 @@ MatrixX basis_with_first_column(const VectorX& normal) {
 } // namespace
 
 template <int dim>
-std::vector<LocalFrame> contact_frames(const Discretisation<dim>& discretisation) {
-  std::vector<LocalFrame> frames;
+std::map<Index, Point<dim>> contact_node_normals(const Discretisation<dim>& discretisation) {
   const mesh::Mesh<dim>& mesh = discretisation.mesh();
   const std::vector<Index>& facets = discretisation.contact_facets();
   const std::vector<Point<dim>> normals =
       nodal_contact_normals<dim>(mesh, facets, discretisation.settings().contact.corner_angle);
   // The node of each Γ3 point (face-major, face-node order: nodal_contact_normals').
-  std::map<Index, Point<dim>> normal_sum; // ordered: the frames come out by node
+  std::map<Index, Point<dim>> normal_sum;
   std::size_t point = 0;
   for (const Index facet_index : facets) {
     const mesh::BoundaryFacet& facet = mesh.facets[facet_index];
@@ -50,6 +49,14 @@ std::vector<LocalFrame> contact_frames(const Discretisation<dim>& discretisation
       entry->second += normals[point++];
     }
   }
+  return normal_sum;
+}
+
+template <int dim>
+std::vector<LocalFrame> contact_frames(const Discretisation<dim>& discretisation) {
+  std::vector<LocalFrame> frames;
+  // Ordered by node: the frames come out by node.
+  const std::map<Index, Point<dim>> normal_sum = contact_node_normals(discretisation);
   const ScatterPlan& plan = discretisation.plan();
   for (const auto& [node, sum] : normal_sum) {
     LocalFrame frame;
@@ -69,6 +76,8 @@ std::vector<LocalFrame> contact_frames(const Discretisation<dim>& discretisation
   return frames;
 }
 
+template std::map<Index, Point<2>> contact_node_normals<2>(const Discretisation<2>&);
+template std::map<Index, Point<3>> contact_node_normals<3>(const Discretisation<3>&);
 template std::vector<LocalFrame> contact_frames<2>(const Discretisation<2>&);
 template std::vector<LocalFrame> contact_frames<3>(const Discretisation<3>&);
 

@@ -6,6 +6,7 @@
 #include "formflow/assembly/discretisation.hpp"
 #include "formflow/assembly/local_frame.hpp"
 
+#include <map>
 #include <vector>
 
 namespace formflow::assembly {
@@ -25,5 +26,11 @@ namespace formflow::assembly {
 /// node whose normal has one free component is already in its frame and gets none.
 template <int dim>
 std::vector<LocalFrame> contact_frames(const Discretisation<dim>& discretisation);
+
+/// Every Γ3 node with its nodal normal, unnormalised: the sum of the normals its faces
+/// give it (assembly::nodal_contact_normals; a real corner's faces keep their own, so
+/// there the sum is their bisector). Ordered by node.
+template <int dim>
+std::map<Index, Point<dim>> contact_node_normals(const Discretisation<dim>& discretisation);
 
 } // namespace formflow::assembly
