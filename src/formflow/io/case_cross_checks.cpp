@@ -74,6 +74,7 @@ void CaseBuilder::check_cross_keys() const {
   check_flow_law();
   check_formulation();
   check_linear_solver();
+  check_acceleration();
   check_verification();
   check_thermal();
   check_adapt();
@@ -201,6 +202,22 @@ void CaseBuilder::check_linear_solver() const {
   if (const auto problem = solvers::petsc_option_syntax_error(options))
     blame({"solver.petsc_options"}, *problem,
           "e.g. \"-ksp_type cg -pc_type gamg -ksp_rtol 1e-10\"");
+}
+
+/// Anderson acceleration mixes the secant loop's steps: Newton's loop has no such map
+/// (its steps converge quadratically; the secant steps it starts with are few), and a
+/// depth without acceleration would be read by nothing.
+void CaseBuilder::check_acceleration() const {
+  const bool anderson = case_.solver.acceleration == solvers::NonlinearAcceleration::Anderson;
+  if (anderson && case_.solver.method == solvers::NonlinearMethod::Newton)
+    blame({"solver.acceleration", "solver.method"},
+          "Anderson acceleration mixes the steps of the secant iteration; Newton's steps are "
+          "not a fixed-point map's",
+          "set solver.method = \"secant\", or solver.acceleration = \"none\"");
+  if (!anderson && origin("solver.acceleration_depth").order > 0)
+    blame({"solver.acceleration_depth", "solver.acceleration"},
+          "solver.acceleration_depth is read only by solver.acceleration = \"anderson\"",
+          "set solver.acceleration = \"anderson\", or remove solver.acceleration_depth");
 }
 
 /// What geometry.dimension = 3 cannot run yet, and solid-channel keys set in vain

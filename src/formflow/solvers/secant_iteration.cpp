@@ -4,6 +4,7 @@
 // viscosity is solved (a LaggedSolve), not in how iterations are recorded,
 // monitored and stopped.
 #include "formflow/solvers/secant_iteration.hpp"
+#include "formflow/solvers/anderson_acceleration.hpp"
 #include "formflow/solvers/stop_rule.hpp"
 #include "formflow/solvers/uzawa_update.hpp"
 
@@ -90,22 +91,36 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
     outcome.stop_reason = *first.stop;
     return outcome;
   }
+  std::optional<AndersonAcceleration> anderson;
+  if (control.acceleration == NonlinearAcceleration::Anderson)
+    anderson.emplace(control.acceleration_depth);
+  const assembly::ScatterPlan& plan = problem.plan();
+  // The iterate the next step lags its coefficients at: the last step's result, or with
+  // Anderson acceleration a mix of the last results. outcome.velocity is always the
+  // last step's result G(iterate), the velocity the system's reaction, the pressure of a
+  // saddle point and the after-iteration state were computed with.
+  VectorX iterate = outcome.velocity;
+  int mixed_columns = 0;
   Real change = 0, previous_change = 0; // the last two relative changes (0: none yet)
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start_time = std::chrono::steady_clock::now();
     VectorX next;
     const bool loose = lagged.loosen(inexact_reduction(change, previous_change, control.tolerance));
-    const LaggedStep step = lagged.solve(&outcome.velocity, next);
+    const LaggedStep step = lagged.solve(&iterate, next);
     if (step.stop) {
       outcome.stop_reason = *step.stop;
       return outcome;
     }
     previous_change = change;
-    change = (next - outcome.velocity).norm() / next.norm();
+    // The change of the map's step from the iterate it started at, mixed or not:
+    // ‖G(x) − x‖/‖G(x)‖ < δ bounds G(x)'s distance to the fixed point by ρ/(1 − ρ) δ
+    // for any x (ρ: G's contraction), so the stop keeps its meaning with acceleration.
+    change = (next - iterate).norm() / next.norm();
     IterationRecord record;
     record.iteration = iteration;
     record.relative_change = change;
     record.pressure = problem.driven_force(lagged.system(), next) / problem.driven_height();
+    record.mixed_columns = mixed_columns;
     record.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
     outcome.velocity = std::move(next);
@@ -120,6 +135,31 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
       outcome.stop_reason = *stop;
       return outcome;
     }
+    if (!anderson) {
+      iterate = outcome.velocity;
+      continue;
+    }
+    // Pairs made under constraint multipliers that moved during the step (an unsettled
+    // Uzawa loop), or before the after-iteration hook updated the problem (exact
+    // friction's λ̂, updated when the inner loop converged but the hook did not settle),
+    // belong to another map than the next step's: mix none of them.
+    // The next pair starts a new history.
+    if (!step.constraints_converged ||
+        (own == StopReason::Converged && problem.changes_after_iteration())) {
+      anderson->forget();
+      mixed_columns = 0;
+      iterate = outcome.velocity;
+      continue;
+    }
+    // A loose step's image errs by about η ‖f‖ (inexact_forcing): it is not mixed, the
+    // next step starts from it as without acceleration, but it still enters the history
+    // (the columns' relative error η/(1 − ρ) moves the weights far less than the
+    // mix gains; a mix it spoils is caught by the residual safeguard).
+    const VectorX mixed =
+        anderson->next(plan.free_values(iterate), plan.free_values(outcome.velocity), !loose);
+    mixed_columns = anderson->last_columns();
+    iterate =
+        mixed_columns > 0 ? plan.expand(mixed, problem.prescribed_values()) : outcome.velocity;
   }
   outcome.stop_reason = StopReason::MaxIterations;
   return outcome;
