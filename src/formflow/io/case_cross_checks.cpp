@@ -206,7 +206,8 @@ void CaseBuilder::check_linear_solver() const {
 
 /// Anderson acceleration mixes the secant loop's steps: Newton's loop has no such map
 /// (its steps converge quadratically; the secant steps it starts with are few), and a
-/// depth without acceleration would be read by nothing.
+/// depth other than the default without acceleration would be read by nothing (the
+/// default is accepted: a resolved case, every key written, must load again).
 void CaseBuilder::check_acceleration() const {
   const bool anderson = case_.solver.acceleration == solvers::NonlinearAcceleration::Anderson;
   if (anderson && case_.solver.method == solvers::NonlinearMethod::Newton)
@@ -214,7 +215,7 @@ void CaseBuilder::check_acceleration() const {
           "Anderson acceleration mixes the steps of the secant iteration; Newton's steps are "
           "not a fixed-point map's",
           "set solver.method = \"secant\", or solver.acceleration = \"none\"");
-  if (!anderson && origin("solver.acceleration_depth").order > 0)
+  if (!anderson && case_.solver.acceleration_depth != Case{}.solver.acceleration_depth)
     blame({"solver.acceleration_depth", "solver.acceleration"},
           "solver.acceleration_depth is read only by solver.acceleration = \"anderson\"",
           "set solver.acceleration = \"anderson\", or remove solver.acceleration_depth");

@@ -66,6 +66,16 @@ constexpr Real inexact_forcing = 1e-2;
 /// the loop (17 steps per decade in 3D) exactly.
 constexpr Real exact_margin = 2;
 
+/// Whether a loose step's result is mixed like an exact one's (Anderson acceleration).
+/// Its image errs by about η ‖f‖ (inexact_forcing), which moves the difference columns
+/// by η/(1 − ρ) of their size (≈ 0.1 in the 3D tail) and the mixing weights by about as
+/// much: the mix still gains far more than that, and a mix it spoils is caught by the
+/// residual safeguard (solvers/anderson_acceleration.hpp). Measured (docs/benchmarks.md
+/// "Anderson acceleration"): loose steps unmixed, the 3D round quarter at h = 0.25 took 25
+/// fine steps against 26 plain (most of its steps are loose), mixed 19; the 2D iterative
+/// path at h = 0.625 38 against 60, mixed 26. Loose steps never stop the loop, mixed or not.
+constexpr bool mix_loose_steps = true;
+
 /// The residual reduction step n + 1 needs from its linear solve (0: the back-end's own
 /// tolerance), from the last two relative changes cₙ, cₙ₋₁ (0 when not yet known).
 /// The steps that may end the loop keep the own tolerance (today's accuracy): the
@@ -102,10 +112,16 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
   VectorX iterate = outcome.velocity;
   int mixed_columns = 0;
   Real change = 0, previous_change = 0; // the last two relative changes (0: none yet)
+  bool exact_tail = false;              // a step was predicted to land near δ
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start_time = std::chrono::steady_clock::now();
     VectorX next;
-    const bool loose = lagged.loosen(inexact_reduction(change, previous_change, control.tolerance));
+    Real reduction = inexact_reduction(change, previous_change, control.tolerance);
+    // Mixed steps do not contract at a steady rate: once the tail was predicted, a ratio
+    // of two mixed changes must not send the loop back to loose steps, which cannot stop it.
+    if (anderson && exact_tail) reduction = 0;
+    if (reduction == 0 && change > 0 && previous_change > 0) exact_tail = true;
+    const bool loose = lagged.loosen(reduction);
     const LaggedStep step = lagged.solve(&iterate, next);
     if (step.stop) {
       outcome.stop_reason = *step.stop;
@@ -142,8 +158,8 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
     // Pairs made under constraint multipliers that moved during the step (an unsettled
     // Uzawa loop), or before the after-iteration hook updated the problem (exact
     // friction's λ̂, updated when the inner loop converged but the hook did not settle),
-    // belong to another map than the next step's: mix none of them.
-    // The next pair starts a new history.
+    // belong to another map than the next step's: forget them; the next pair starts a
+    // new history.
     if (!step.constraints_converged ||
         (own == StopReason::Converged && problem.changes_after_iteration())) {
       anderson->forget();
@@ -151,12 +167,8 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
       iterate = outcome.velocity;
       continue;
     }
-    // A loose step's image errs by about η ‖f‖ (inexact_forcing): it is not mixed, the
-    // next step starts from it as without acceleration, but it still enters the history
-    // (the columns' relative error η/(1 − ρ) moves the weights far less than the
-    // mix gains; a mix it spoils is caught by the residual safeguard).
-    const VectorX mixed =
-        anderson->next(plan.free_values(iterate), plan.free_values(outcome.velocity), !loose);
+    const VectorX mixed = anderson->next(
+        plan.free_values(iterate), plan.free_values(outcome.velocity), mix_loose_steps || !loose);
     mixed_columns = anderson->last_columns();
     iterate =
         mixed_columns > 0 ? plan.expand(mixed, problem.prescribed_values()) : outcome.velocity;

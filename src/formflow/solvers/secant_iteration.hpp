@@ -84,8 +84,9 @@ private:
 /// instead of the last result. The change tested against δ is always that of one exact
 /// step of the map from the iterate it started at, and the returned velocity is that
 /// step's result (with the pressure and multipliers it was solved with). Loose steps are
-/// not mixed (they enter the history), and a step whose constraint multipliers did not
-/// settle, or after which the problem's hook changed the problem, voids the history.
+/// mixed too (mix_loose_steps); once a step was predicted near δ every later one is
+/// exact; a step whose constraint multipliers did not settle, or after which the
+/// problem's hook changed the problem, voids the history.
 SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
                                const IterationControl& control,
                                const IterationObserver& on_iteration,
