@@ -38,9 +38,18 @@ std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size)
   return "no size near this one fits every length: make the lengths multiples of one size";
 }
 
+/// Whether the discontinuous pressure kept as a saddle point, solved by the secant loop
+/// (the 3D iterative path, issue 20), takes solver.acceleration = "anderson" when the key
+/// is not set. Off: the lead decides (docs/benchmarks.md "Anderson acceleration": at
+/// h = 0.125 29 -> 18 fine steps, 360 -> 186 Krylov iterations, the load within the
+/// stop's reach of δ). On, a case that sets the key keeps its value and the resolved case
+/// (summary.json) records the choice.
+constexpr bool anderson_by_default_on_saddle_point_secant = false;
+
 } // namespace
 
-/// Keys whose default depends on another key's value: integration.volumetric
+/// Keys whose default depends on another key's value: solver.acceleration on the
+/// saddle point's secant loop (anderson_by_default_on_saddle_point_secant); integration.volumetric
 /// is the element's reduced rule unless set (the complete rule locks Q1,
 /// paper Remark 5.1); an explicit complete rule with Q1 gets a warning.
 void CaseBuilder::resolve_dependent_defaults() {
@@ -48,6 +57,12 @@ void CaseBuilder::resolve_dependent_defaults() {
   case_.material.parameters_of<physics::SellarsTegart>().absolute_offset =
       physics::absolute_offset(case_.thermal.unit);
   if (auto note = face_points_note(case_)) case_.warnings.push_back(std::move(*note));
+  if (anderson_by_default_on_saddle_point_secant && origin("solver.acceleration").order == 0 &&
+      case_.solver.method == solvers::NonlinearMethod::Secant &&
+      case_.formulation.type == assembly::FormulationType::Mixed &&
+      fem::is_discontinuous(case_.formulation.pressure) &&
+      case_.formulation.discontinuous == assembly::DiscontinuousPressure::SaddlePoint)
+    case_.solver.acceleration = solvers::NonlinearAcceleration::Anderson;
   const bool q1 = case_.element == fem::ElementKind::Q1;
   if (origin("integration.volumetric").order == 0) {
     case_.volumetric_points = q1 ? 1 : 2;
