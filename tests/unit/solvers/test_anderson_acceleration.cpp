@@ -59,10 +59,11 @@ AndersonRun iterate_linear_map(const AndersonLinearMap& map, int depth, Real tol
   return run;
 }
 
-/// The change an exact Anderson iterate can still show: the mixing weights carry a
-/// relative error up to cond · ε with cond ≤ anderson_max_condition (beyond it the history
-/// is dropped), the mixed iterate that times ‖x‖ (the images' differences are bounded by
-/// ‖x‖ here), and ‖G(x) − x‖ = ‖(A − I) e‖ ≤ 2 ‖e‖.
+/// The change an exact Anderson iterate can still show, per difference column mixed:
+/// the mixing weights carry a relative error up to cond · ε with cond ≤
+/// anderson_max_condition (beyond it the history is dropped), each column's share of the
+/// mixed iterate that times ‖x‖ (the images' differences are bounded by ‖x‖ here), and
+/// ‖G(x) − x‖ = ‖(A − I) e‖ ≤ 2 ‖e‖ for eigenvalues in [0, 1).
 const Real anderson_roundoff_change =
     2 * anderson_max_condition * std::numeric_limits<Real>::epsilon();
 
@@ -75,7 +76,7 @@ TEST(AndersonAcceleration, LinearMapOfDimensionAtMostTheDepthConvergesInDimensio
   const AndersonLinearMap map(eigenvalues);
   const int n = static_cast<int>(eigenvalues.size());
   const Real rho = 0.9;
-  const Real tolerance = 10 * anderson_roundoff_change;
+  const Real tolerance = (n + 1) * anderson_roundoff_change; // n + 1 columns at most
   const AndersonRun plain = iterate_linear_map(map, 0, tolerance);
   const AndersonRun mixed = iterate_linear_map(map, n + 1, tolerance);
   EXPECT_LE(mixed.images, n + 2);
@@ -156,6 +157,7 @@ TEST(AndersonAcceleration, UnmixedStepsFeedTheHistoryAndForgetEmptiesIt) {
   EXPECT_EQ(x, image);
   x = anderson.next(x, map(x));
   EXPECT_EQ(anderson.last_columns(), 2); // the unmixed pair's column is one of them
+  // Two columns, ‖x‖ ≈ 2: the error is at most 2 · 2 · anderson_roundoff_change / 2.
   EXPECT_NEAR(x[0], 2.0, 4 * anderson_roundoff_change);
   EXPECT_NEAR(x[1], 4.0 / 3.0, 4 * anderson_roundoff_change);
   anderson.forget();
