@@ -109,6 +109,9 @@ void bind_values(py::module_& module) {
                     "coupling records: |pᵏ − pᵏ⁻¹|/|pᵏ|")
       .def_readonly("max_temperature", &solvers::IterationRecord::max_temperature,
                     "coupling records: max T")
+      .def_readonly("mixed_columns", &solvers::IterationRecord::mixed_columns,
+                    "solver.acceleration = \"anderson\": the difference columns mixed into "
+                    "the iterate this step started from (0: a plain step)")
       .def("__repr__", [](const solvers::IterationRecord& record) {
         return fmt::format("Iteration({}, relative_change={:.6g}, pressure={:.6g})",
                            record.iteration, record.relative_change, record.pressure);

@@ -14,7 +14,7 @@
 namespace formflow {
 namespace {
 
-post::Results solve(std::vector<io::Override> edits) {
+post::Results solve_by_linear_solver(std::vector<io::Override> edits) {
   edits.insert(edits.begin(), {{"mesh.size", "2.5"}, {"solver.tolerance", "1e-10"}});
   const post::Results results = app::simulate(io::load_case("", edits)).results;
   EXPECT_TRUE(results.converged()) << solvers::stop_reason_name(results.stop_reason);
@@ -29,7 +29,8 @@ TEST_P(EveryLoop, UmfpackGivesCholmodsReaction) {
   std::vector<io::Override> cholmod = GetParam(), umfpack = GetParam();
   cholmod.emplace_back("solver.linear", "cholmod");
   umfpack.emplace_back("solver.linear", "umfpack");
-  const post::Results by_cholmod = solve(cholmod), by_umfpack = solve(umfpack);
+  const post::Results by_cholmod = solve_by_linear_solver(cholmod),
+                      by_umfpack = solve_by_linear_solver(umfpack);
   EXPECT_NEAR(by_umfpack.pressure.ram_reaction, by_cholmod.pressure.ram_reaction,
               1e-9 * std::abs(by_cholmod.pressure.ram_reaction));
   EXPECT_EQ(by_umfpack.method, by_cholmod.method);
@@ -46,7 +47,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(LinearSolverChoice, TaylorHoodTakesAnLuUnlessCholeskyIsAskedFor) {
   const std::vector<io::Override> taylor_hood = {{"formulation.type", "mixed"},
                                                  {"formulation.pressure", "Q1"}};
-  const post::Results by_default = solve(taylor_hood);
+  const post::Results by_default = solve_by_linear_solver(taylor_hood);
   EXPECT_EQ(by_default.method, "saddle point (umfpack) around secant");
   std::vector<io::Override> cholesky = taylor_hood;
   cholesky.emplace_back("solver.linear", "cholmod");

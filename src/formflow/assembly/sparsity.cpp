@@ -136,4 +136,11 @@ VectorX ScatterPlan::expand(const VectorX& free_values, const VectorX& prescribe
   return full;
 }
 
+VectorX ScatterPlan::free_values(const VectorX& full) const {
+  VectorX values(n_free_);
+  for (Index dof = 0; dof < n_dofs(); ++dof)
+    if (free_index_[dof] >= 0) values[free_index_[dof]] = full[dof];
+  return values;
+}
+
 } // namespace formflow::assembly

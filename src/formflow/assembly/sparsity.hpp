@@ -73,6 +73,8 @@ public:
 
   /// Full dof vector from the free solution and the prescribed values.
   VectorX expand(const VectorX& free_values, const VectorX& prescribed_values) const;
+  /// The free dofs' values of a full dof vector (expand's inverse on the free rows).
+  VectorX free_values(const VectorX& full) const;
 
 private:
   struct ReactionSlot {

@@ -74,6 +74,7 @@ private:
   std::optional<std::string> non_finite_law() const;
   void check_formulation() const;
   void check_linear_solver() const;
+  void check_acceleration() const;
   void check_solid() const;
   void check_mesh_source() const;
   void check_verification() const;

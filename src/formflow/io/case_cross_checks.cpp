@@ -38,9 +38,18 @@ std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size)
   return "no size near this one fits every length: make the lengths multiples of one size";
 }
 
+/// Whether the discontinuous pressure kept as a saddle point, solved by the secant loop
+/// (the 3D iterative path, issue 20), takes solver.acceleration = "anderson" when the key
+/// is not set. Off: the lead decides (docs/benchmarks.md "Anderson acceleration": at
+/// h = 0.125 29 -> 18–19 fine steps, 360 -> 186–252 Krylov iterations, the load within
+/// the stop's reach of δ). On, a case that sets the key keeps its value and the resolved case
+/// (summary.json) records the choice.
+constexpr bool anderson_by_default_on_saddle_point_secant = false;
+
 } // namespace
 
-/// Keys whose default depends on another key's value: integration.volumetric
+/// Keys whose default depends on another key's value: solver.acceleration on the
+/// saddle point's secant loop (anderson_by_default_on_saddle_point_secant); integration.volumetric
 /// is the element's reduced rule unless set (the complete rule locks Q1,
 /// paper Remark 5.1); an explicit complete rule with Q1 gets a warning.
 void CaseBuilder::resolve_dependent_defaults() {
@@ -48,6 +57,12 @@ void CaseBuilder::resolve_dependent_defaults() {
   case_.material.parameters_of<physics::SellarsTegart>().absolute_offset =
       physics::absolute_offset(case_.thermal.unit);
   if (auto note = face_points_note(case_)) case_.warnings.push_back(std::move(*note));
+  if (anderson_by_default_on_saddle_point_secant && origin("solver.acceleration").order == 0 &&
+      case_.solver.method == solvers::NonlinearMethod::Secant &&
+      case_.formulation.type == assembly::FormulationType::Mixed &&
+      fem::is_discontinuous(case_.formulation.pressure) &&
+      case_.formulation.discontinuous == assembly::DiscontinuousPressure::SaddlePoint)
+    case_.solver.acceleration = solvers::NonlinearAcceleration::Anderson;
   const bool q1 = case_.element == fem::ElementKind::Q1;
   if (origin("integration.volumetric").order == 0) {
     case_.volumetric_points = q1 ? 1 : 2;
@@ -74,6 +89,7 @@ void CaseBuilder::check_cross_keys() const {
   check_flow_law();
   check_formulation();
   check_linear_solver();
+  check_acceleration();
   check_verification();
   check_thermal();
   check_adapt();
@@ -201,6 +217,23 @@ void CaseBuilder::check_linear_solver() const {
   if (const auto problem = solvers::petsc_option_syntax_error(options))
     blame({"solver.petsc_options"}, *problem,
           "e.g. \"-ksp_type cg -pc_type gamg -ksp_rtol 1e-10\"");
+}
+
+/// Anderson acceleration mixes the secant loop's steps: Newton's loop has no such map
+/// (its steps converge quadratically; the secant steps it starts with are few), and a
+/// depth other than the default without acceleration would be read by nothing (the
+/// default is accepted: a resolved case, every key written, must load again).
+void CaseBuilder::check_acceleration() const {
+  const bool anderson = case_.solver.acceleration == solvers::NonlinearAcceleration::Anderson;
+  if (anderson && case_.solver.method == solvers::NonlinearMethod::Newton)
+    blame({"solver.acceleration", "solver.method"},
+          "Anderson acceleration mixes the steps of the secant iteration; Newton's steps are "
+          "not a fixed-point map's",
+          "set solver.method = \"secant\", or solver.acceleration = \"none\"");
+  if (!anderson && case_.solver.acceleration_depth != Case{}.solver.acceleration_depth)
+    blame({"solver.acceleration_depth", "solver.acceleration"},
+          "solver.acceleration_depth is read only by solver.acceleration = \"anderson\"",
+          "set solver.acceleration = \"anderson\", or remove solver.acceleration_depth");
 }
 
 /// What geometry.dimension = 3 cannot run yet, and solid-channel keys set in vain

@@ -235,6 +235,16 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["coarse_iterations"] = results.coarse_iterations;
   out["coarse_mesh_sizes"] = results.coarse_mesh_sizes;
   out["method"] = results.method;
+  // The secant loop's acceleration (solver.acceleration) and how many of the recorded
+  // steps started from a mixed iterate (the rest: plain, loose, or after a restart).
+  const bool anderson = case_.solver.acceleration == solvers::NonlinearAcceleration::Anderson;
+  long mixed_steps = 0;
+  for (const auto& record : results.history)
+    if (record.mixed_columns > 0) ++mixed_steps;
+  out["acceleration"] = {
+      {"method", anderson ? "anderson" : "none"},
+      {"depth", anderson ? json(case_.solver.acceleration_depth) : json(nullptr)},
+      {"mixed_steps", mixed_steps}};
   out["pressure"] = pressure_json(case_, results);
   out["power"] = power_json(results.power);
   out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;

@@ -25,14 +25,6 @@ constexpr int max_line_search_steps = 8;
 /// −1e-3 of what it was, so r |u_T| ≪ 2 τ_f and its trial falls inside the Coulomb disk.
 constexpr Real kink_overshoot = 1e-3;
 
-/// The free components of a full dof vector.
-VectorX free_part(const assembly::ScatterPlan& plan, const VectorX& full) {
-  VectorX free_values(plan.n_free());
-  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-    if (plan.free_index(dof) >= 0) free_values[plan.free_index(dof)] = full[dof];
-  return free_values;
-}
-
 /// GMRES on the unsymmetric Jacobian: the inexact-Newton forcing term η (relative
 /// preconditioned residual) is the last relative change clamped to [1e-3, 1e-2]:
 /// early steps need little accuracy, and on fine meshes the tail contracts by only
@@ -80,7 +72,7 @@ Real slope_at(NewtonWork& work, const VectorX& velocity, const VectorX& step, Re
               const VectorX& free_step) {
   const VectorX trial = velocity + t * step;
   work.problem.assemble_newton(trial, *work.duals, work.force, nullptr);
-  return free_step.dot(free_part(work.problem.plan(), work.force));
+  return free_step.dot(work.problem.plan().free_values(work.force));
 }
 
 /// One Newton step from `velocity`; std::nullopt when the tangent is not positive
@@ -93,7 +85,7 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     work.problem.assemble_newton(velocity, *work.duals, work.force, &work.tangent);
   }
   work.tangent_ready = false;
-  const VectorX gradient = free_part(plan, work.force);
+  const VectorX gradient = plan.free_values(work.force);
   // Exact constraints on the step (exact friction's stuck nodes): δ = g + z, z = P z,
   // solved on the condensed tangent (solvers/exact_stick.hpp). One rank only: the
   // condensation of a rank's share of T is not its share of the condensed matrix (exact
@@ -185,7 +177,7 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     }
     ScopedTimer timer(work.linear.times(), "assembly");
     work.problem.assemble_newton(trial, *trial_duals, work.force, &work.tangent);
-    slope = free_step.dot(free_part(plan, work.force));
+    slope = free_step.dot(plan.free_values(work.force));
     if (acceptable(slope, 0)) {
       work.duals = std::move(trial_duals);
       work.tangent_ready = true;
@@ -252,7 +244,7 @@ SecantOutcome newton_iteration(NonlinearProblem& problem, LinearSolver& solver,
   }
   if (initial) {
     outcome.velocity =
-        problem.plan().expand(free_part(problem.plan(), *initial), problem.prescribed_values());
+        problem.plan().expand(problem.plan().free_values(*initial), problem.prescribed_values());
   } else if (auto stop = secant_step(work, nullptr, outcome.velocity)) {
     outcome.stop_reason = *stop;
     return outcome;

@@ -79,6 +79,14 @@ private:
 /// Eisenstat–Walker-type forcing; the first step and those that may stop the loop
 /// (predicted change ρ cₙ below 2 δ, ρ = cₙ/cₙ₋₁ the last contraction) are solved to
 /// the back-end's own tolerance, and a loose step never stops the loop.
+/// Anderson acceleration (control.acceleration): the next step lags its coefficients at
+/// a mix of the last steps' results on the free dofs (solvers/anderson_acceleration.hpp)
+/// instead of the last result. The change tested against δ is always that of one exact
+/// step of the map from the iterate it started at, and the returned velocity is that
+/// step's result (with the pressure and multipliers it was solved with). Loose steps are
+/// mixed too (mix_loose_steps); once a step was predicted near δ every later one is
+/// exact; a step whose constraint multipliers did not settle, or after which the
+/// problem's hook changed the problem, voids the history.
 SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
                                const IterationControl& control,
                                const IterationObserver& on_iteration,

@@ -41,6 +41,11 @@ inline std::string_view stop_reason_name(StopReason reason) {
 /// Newton–Raphson with the consistent tangent (solvers/newton_iteration.hpp).
 enum class NonlinearMethod { Secant, Newton };
 
+/// Acceleration of the secant loop's fixed-point map (solver.acceleration): none, or
+/// Anderson mixing of the last solver.acceleration_depth steps
+/// (solvers/anderson_acceleration.hpp).
+enum class NonlinearAcceleration { None, Anderson };
+
 /// Stopping rule of the secant iteration (SPEC §3): ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < tolerance.
 /// Newton uses the same rule on its (damped) steps, so counts are comparable.
 /// The load's error estimate: none; the adjoint at the solution prolonged to the
@@ -53,6 +58,10 @@ struct IterationControl {
   int max_iterations = 500; ///< iteration limit; reaching it is a stop reason, not an error
   Real initial_rate = 1.0;  ///< ε̄̇ whose secant viscosity starts the iteration
   NonlinearMethod method = NonlinearMethod::Newton;
+  /// Secant only: how the loop's next iterate is made from the last steps.
+  NonlinearAcceleration acceleration = NonlinearAcceleration::None;
+  /// Anderson's depth m: difference columns mixed at most.
+  int acceleration_depth = 5;
   /// Newton only: secant steps are taken while the relative change exceeds this.
   Real newton_start = 0.5;
   /// Newton only: solve first on this many coarser meshes (sizes 2^L h, ..., 2h)
@@ -84,6 +93,9 @@ struct IterationRecord {
   /// solver.linear = "petsc"; a direct KSP "preonly" counts 1 per solve); −1 where the
   /// back-end has none (CHOLMOD, UMFPACK).
   long linear_iterations = -1;
+  /// Anderson acceleration: the difference columns mixed into the iterate this step
+  /// started from (0: a plain step, the last step's result).
+  int mixed_columns = 0;
 };
 
 } // namespace formflow::solvers

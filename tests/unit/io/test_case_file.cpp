@@ -382,6 +382,8 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"solver.initial_rate", "0.5"},
       {"solver.linear", "\"umfpack\""},
       {"solver.method", "\"secant\""},
+      {"solver.acceleration", "\"anderson\""},
+      {"solver.acceleration_depth", "3"},
       {"solver.newton_start", "0.2"},
       {"solver.coarse_levels", "2"},
       // thermal.enabled stays false: hybrid friction above is refused with it (its

@@ -12,7 +12,7 @@
 namespace formflow::io {
 namespace {
 
-InputError error_in(const std::string& text, const std::string& key, int line) {
+InputError thermal_error_in(const std::string& text, const std::string& key, int line) {
   try {
     load_case_text(text, "hot.toml", {});
   } catch (const InputError& error) {
@@ -38,7 +38,7 @@ TEST(ThermalKeys, EnabledTakesATomlBooleanAndTheString) {
   EXPECT_TRUE(load_case_text("[thermal]\nenabled = true\n", "hot.toml", {}).thermal.enabled);
   EXPECT_TRUE(load_case_text("", "hot.toml", {{"thermal.enabled", "true"}}).thermal.enabled);
   EXPECT_TRUE(load_case_text("[thermal]\nenabled = \"true\"\n", "hot.toml", {}).thermal.enabled);
-  error_in("[thermal]\nenabled = 1\n", "thermal.enabled", 2);
+  thermal_error_in("[thermal]\nenabled = 1\n", "thermal.enabled", 2);
 }
 
 TEST(ThermalKeys, EnabledIsAJsonBooleanInTheCaseEcho) {
@@ -65,15 +65,15 @@ TEST(ThermalKeys, TheUnitSetsSellarsTegartsAbsoluteTemperature) {
 }
 
 TEST(ThermalKeys, MaxTemperatureMustExceedThePrescribedOnes) {
-  const InputError error = error_in("[thermal]\nenabled = true\nbillet_temperature = 450\n"
-                                    "max_temperature = 400\n",
-                                    "thermal.max_temperature", 4);
+  const InputError error = thermal_error_in("[thermal]\nenabled = true\nbillet_temperature = 450\n"
+                                            "max_temperature = 400\n",
+                                            "thermal.max_temperature", 4);
   EXPECT_NE(std::string(error.what()).find("450"), std::string::npos) << error.what();
 }
 
 TEST(ThermalKeys, ASharesIsAFraction) {
-  error_in("[thermal]\nfriction_share = 1.5\n", "thermal.friction_share", 2);
-  error_in("[thermal]\ntaylor_quinney = -0.1\n", "thermal.taylor_quinney", 2);
+  thermal_error_in("[thermal]\nfriction_share = 1.5\n", "thermal.friction_share", 2);
+  thermal_error_in("[thermal]\ntaylor_quinney = -0.1\n", "thermal.taylor_quinney", 2);
 }
 
 TEST(ThermalKeys, TrescaAndHybridWorkWithThermal) {
@@ -93,10 +93,10 @@ TEST(ThermalKeys, ConditionTwoElevenIsCheckedOverTheTemperatureRange) {
   const std::string law = "[material]\nlaw = \"hensel_spittel\"\nhs_m3 = 0.1\nhs_m8 = 0.002\n"
                           "temperature = 400\n";
   EXPECT_NO_THROW(load_case_text(law, "hot.toml", {}));
-  const InputError error =
-      error_in(law + "[thermal]\nenabled = true\nbillet_temperature = 400\ntool_temperature = "
-                     "400\nmax_temperature = 500\n",
-               "thermal.max_temperature", 10);
+  const InputError error = thermal_error_in(
+      law + "[thermal]\nenabled = true\nbillet_temperature = 400\ntool_temperature = "
+            "400\nmax_temperature = 500\n",
+      "thermal.max_temperature", 10);
   EXPECT_NE(std::string(error.what()).find("2.11"), std::string::npos) << error.what();
 }
 

@@ -67,6 +67,28 @@ std::vector<CaseKey> solver_keys() {
           [](auto& c) -> auto& { return c.solver.method; })
           .doc("newton: Newton–Raphson with the consistent tangent and a line search; "
                "secant: the paper's secant-modulus (Kachanov) iteration (eq. 5.2–5.3)"),
+      enum_key(
+          "solver.acceleration", "none",
+          {{"none", solvers::NonlinearAcceleration::None},
+           {"anderson", solvers::NonlinearAcceleration::Anderson}},
+          [](auto& c) -> auto& { return c.solver.acceleration; })
+          .constraint("secant only (solver.method = \"secant\"): Newton's steps are not a "
+                      "fixed-point map's")
+          .doc("secant only: none = each step lags the coefficients at the last step's result; "
+               "anderson = at a mix of the last solver.acceleration_depth results that "
+               "minimises the mixed step's change (Anderson acceleration, Walker–Ni; restarted "
+               "when the mix is ill-conditioned or does not reduce the change). The stop is "
+               "still ‖G(u) − u‖/‖G(u)‖ < δ of one unmixed step (docs/benchmarks.md \"Anderson "
+               "acceleration\")"),
+      integer_key(
+          "solver.acceleration_depth", 5,
+          [](auto& c) -> auto& { return c.solver.acceleration_depth; })
+          .at_least(1)
+          .at_most(10)
+          .constraint("only with solver.acceleration = \"anderson\"")
+          .doc("Anderson's depth m: the last m steps' differences are mixed (memory 2m free "
+               "velocity vectors); beyond 10 the columns are nearly dependent and the mix is "
+               "restarted anyway"),
       real_key(
           "solver.newton_start", 0.5, [](auto& c) -> auto& { return c.solver.newton_start; })
           .within(1e-15, 1e6)
