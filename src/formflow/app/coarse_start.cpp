@@ -127,10 +127,15 @@ std::optional<CoarseStart> coarse_start(const io::Case& case_, const mesh::Mesh<
       solvers::SaddlePointSolve<dim> saddle(nonlinear, linear);
       outcome = solvers::secant_iteration(nonlinear, saddle, control, {}, level_start);
     } else {
+      // On several ranks CHOLMOD cannot take a rank's share: the case's back-end (PETSc),
+      // without the case's options, which are the saddle point's (direct MUMPS Cholesky).
+      const bool condensed = loop == CoarseLoop::CondensedNewton;
+      const bool distributed = settings.distribution.distributed();
       const solvers::LinearSolverKind kind =
-          loop == CoarseLoop::CondensedNewton ? solvers::LinearSolverKind::Cholmod : plan.linear;
-      auto solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower,
-                                                case_.solver.petsc_options);
+          condensed && !distributed ? solvers::LinearSolverKind::Cholmod : plan.linear;
+      auto solver =
+          solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower,
+                                      condensed ? std::string() : case_.solver.petsc_options);
       outcome = solvers::newton_iteration(nonlinear, *solver, control, {}, times, level_start);
     }
     start.mesh_sizes.push_back(spec.size);

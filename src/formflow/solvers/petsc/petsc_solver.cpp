@@ -5,6 +5,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/petsc/distributed_numbering.hpp"
+#include "formflow/solvers/petsc/distributed_saddle_point.hpp"
 #include "formflow/solvers/petsc/krylov_start.hpp"
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
@@ -15,6 +16,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -35,6 +37,7 @@ public:
     if (ksp_) KSPDestroy(&ksp_);
     for (IS& field : fields_)
       if (field) ISDestroy(&field);
+    distributed_fields_.reset();
     if (matrix_) MatDestroy(&matrix_);
     if (schur_matrix_) MatDestroy(&schur_matrix_);
     if (rhs_) VecDestroy(&rhs_);
@@ -99,13 +102,15 @@ public:
     petsc::ErrorCapture capture;
     const auto n = static_cast<PetscInt>(rhs.size());
     if (distributed_ && whole) {
-      load_whole_rhs(rhs);
+      write_owned_rows(rhs_, in_solved_unknowns(rhs));
     } else if (distributed_) {
       // The rank's rhs is its own cells' loads: PETSc's stash sends each entry to the
-      // rank that owns its row, where they add up.
+      // rank that owns its row, where they add up. In the frames: Qᵀ of a share is the
+      // share of Qᵀ b (Q is node-local).
+      const VectorX share = in_solved_unknowns(rhs);
       VecSet(rhs_, 0.0);
       for (PetscInt i = 0; i < n; ++i)
-        if (rhs[i] != 0.0) VecSetValue(rhs_, petsc_index_[i], rhs[i], ADD_VALUES);
+        if (share[i] != 0.0) VecSetValue(rhs_, petsc_index_[i], share[i], ADD_VALUES);
       VecAssemblyBegin(rhs_);
       VecAssemblyEnd(rhs_);
     } else {
@@ -114,8 +119,13 @@ public:
     // A guess (set_initial_guess), also in the unknowns PETSc solves for. Not for a
     // direct solve: PETSc's preonly refuses a nonzero initial guess.
     std::optional<VectorX> guess = krylov_start_.take_guess(rhs.size());
-    const bool guessed = guess && !distributed_ && petsc::is_iterative(ksp_);
-    if (guessed) write(solution_, in_solved_unknowns(std::move(*guess)));
+    // Distributed: the guess is whole on every rank (the replicated velocity), and each
+    // rank writes its own rows.
+    const bool guessed = guess && petsc::is_iterative(ksp_);
+    if (guessed && distributed_)
+      write_owned_rows(solution_, in_solved_unknowns(std::move(*guess)));
+    else if (guessed)
+      write(solution_, in_solved_unknowns(std::move(*guess)));
     KSPSetInitialGuessNonzero(ksp_, guessed ? PETSC_TRUE : PETSC_FALSE);
     krylov_start_.apply_tolerance(ksp_, matrix_, rhs_, solution_, guessed);
     if (KSPSolve(ksp_, rhs_, solution_) != 0) return false;
@@ -136,6 +146,7 @@ public:
       VecGetArrayRead(all_, &result);
       for (PetscInt i = 0; i < n; ++i) solution[i] = result[petsc_index_[i]];
       VecRestoreArrayRead(all_, &result);
+      assembly::from_frames(frames_, solution); // x = Q y
       return true;
     }
     VecGetArrayRead(solution_, &result);
@@ -169,22 +180,25 @@ public:
   }
 
   void set_schur_preconditioner(const assembly::SparseMatrix& matrix, Index cell_block) override {
-    if (distributed_) return; // a distributed saddle point is refused (app/distributed_run)
+    if (distributed_) {
+      // The rank's share (its own cells' blocks), copied once the saddle point's rows
+      // are numbered (copy_distributed).
+      schur_block_ = cell_block;
+      schur_share_ = matrix;
+      schur_share_.makeCompressed();
+      return;
+    }
     petsc::ErrorCapture capture;
     schur_block_ = cell_block;
     petsc::copy_schur_matrix(matrix, cell_block, &schur_matrix_);
   }
 
   void set_local_frames(std::vector<assembly::LocalFrame> frames) override {
-    if (distributed_) return; // the saddle point, their one user, is refused on several ranks
     frames_ = std::move(frames);
     frame_matrix_ = {};
   }
 
-  void set_initial_guess(VectorX guess) override {
-    if (distributed_) return; // the saddle point, its one user, is refused on several ranks
-    krylov_start_.set_guess(std::move(guess));
-  }
+  void set_initial_guess(VectorX guess) override { krylov_start_.set_guess(std::move(guess)); }
 
   bool set_solve_tolerance(Real reduction) override {
     krylov_start_.ask_reduction(reduction);
@@ -192,7 +206,9 @@ public:
   }
 
   void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
-    if (distributed_) return; // the saddle point, their one user, is refused on several ranks
+    // Distributed: no node layout yet (a node's components would have to be owned by one
+    // rank); the velocity block keeps the free numbering (scalar BoomerAMG).
+    if (distributed_) return;
     components_ = components;
     dof_of_velocity_ = std::move(dof_of_velocity);
   }
@@ -250,6 +266,7 @@ private:
              "this loop's systems have the velocity only",
              "use fieldsplit with formulation.type = \"mixed\" and formulation.pressure = "
              "\"Q1\"; for the velocity systems try -pc_type gamg or the default");
+    if (distributed_) return split_distributed_fields(preconditioner);
     const auto n_first =
         static_cast<PetscInt>(layout_.empty() ? n_first_ : layout_.n_velocity_embedded());
     ISCreateStride(PETSC_COMM_SELF, n_first, 0, 1, &fields_[0]);
@@ -285,6 +302,27 @@ private:
     }
     PCFieldSplitSetIS(preconditioner, "u", fields_[0]);
     PCFieldSplitSetIS(preconditioner, "p", fields_[1]);
+    if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
+    return true;
+  }
+
+  /// split_fields on several ranks: the splits' index sets in PETSc's distributed rows
+  /// (each rank its own), the modes as distributed vectors and the Schur matrix as
+  /// MPIAIJ, all made by copy_distributed.
+  bool split_distributed_fields(PC preconditioner) {
+    FF_ASSERT(distributed_fields_, "the fields are numbered at the first copy");
+    if (!near_null_space_.empty()) {
+      std::vector<VectorX> modes = near_null_space_;
+      for (VectorX& mode : modes) {
+        VectorX padded = VectorX::Zero(static_cast<Index>(petsc_index_.size()));
+        padded.head(n_first_) = mode;
+        assembly::to_frames(frames_, padded); // y = Qᵀ x, as the matrix
+        mode = padded.head(n_first_);
+      }
+      petsc::attach_distributed_near_null_space(modes, *distributed_fields_);
+    }
+    PCFieldSplitSetIS(preconditioner, "u", distributed_fields_->velocity());
+    PCFieldSplitSetIS(preconditioner, "p", distributed_fields_->pressure());
     if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
     return true;
   }
@@ -387,7 +425,15 @@ private:
   /// entries (MatSetPreallocationCOO: off-rank rows go to their owners); every call then
   /// hands the values over with MatSetValuesCOO, which sums the ranks' duplicates. No
   /// rank holds more than its share and its own rows.
-  void copy_distributed(const assembly::SparseMatrix& matrix) {
+  void copy_distributed(const assembly::SparseMatrix& given) {
+    // In the contact nodes' frames (set_local_frames): the share of Qᵀ K Q.
+    assembly::SparseMatrix rotated;
+    if (!frames_.empty()) {
+      if (frame_matrix_.rows() != given.rows())
+        frame_matrix_ = assembly::frame_matrix(frames_, given.rows());
+      rotated = petsc::rotated_share(given, frame_matrix_);
+    }
+    const assembly::SparseMatrix& matrix = frames_.empty() ? given : rotated;
     const auto n = static_cast<PetscInt>(matrix.rows());
     const bool symmetric_lower = storage_ == MatrixStorage::SymmetricLower;
     const bool same_pattern = matrix_ && has_copied_pattern(matrix);
@@ -399,6 +445,8 @@ private:
       if (solution_) VecDestroy(&solution_);
       if (to_all_) VecScatterDestroy(&to_all_);
       if (all_) VecDestroy(&all_);
+      if (schur_matrix_) MatDestroy(&schur_matrix_);
+      distributed_fields_.reset();
       pattern_outer_.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + n + 1);
       pattern_inner_.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
       petsc::DistributedNumbering numbering =
@@ -421,23 +469,36 @@ private:
       }
       MatCreateVecs(matrix_, &solution_, &rhs_);
       VecScatterCreateToAll(solution_, &to_all_, &all_);
+      if (n_first_ > 0 && n_first_ < n) {
+        // A saddle point: its fields in PETSc's rows (each rank its own).
+        PetscInt low = 0, high = 0;
+        MatGetOwnershipRange(matrix_, &low, &high);
+        distributed_fields_ =
+            std::make_unique<petsc::DistributedFields>(petsc_index_, low, high, n_first_);
+      }
     }
     std::vector<PetscScalar> values(coo_source_.size());
     for (std::size_t s = 0; s < values.size(); ++s) values[s] = matrix.valuePtr()[coo_source_[s]];
     if (MatSetValuesCOO(matrix_, values.data(), INSERT_VALUES) != 0) MatDestroy(&matrix_);
+    // The Schur matrix's share given for this step (set_schur_preconditioner).
+    if (distributed_fields_ && schur_share_.rows() == n - n_first_) {
+      petsc::copy_distributed_schur_matrix(schur_share_, *distributed_fields_, schur_block_,
+                                           &schur_matrix_);
+      schur_share_ = {};
+    }
   }
 
-  /// Distributed: a right-hand side that every rank holds whole (Newton's residual, the
-  /// GMRES vectors): each rank writes its own rows, no message sent.
-  void load_whole_rhs(const VectorX& rhs) {
+  /// Distributed: a vector that every rank holds whole (Newton's residual, the GMRES
+  /// vectors, a Krylov guess) into `target`: each rank writes its own rows, no message sent.
+  void write_owned_rows(Vec target, const VectorX& whole) const {
     PetscInt low = 0, high = 0;
-    VecGetOwnershipRange(rhs_, &low, &high);
+    VecGetOwnershipRange(target, &low, &high);
     PetscScalar* values = nullptr;
-    VecGetArray(rhs_, &values);
-    for (Index i = 0; i < rhs.size(); ++i)
+    VecGetArray(target, &values);
+    for (Index i = 0; i < whole.size(); ++i)
       if (const PetscInt row = petsc_index_[i]; row >= low && row < high)
-        values[row - low] = rhs[i];
-    VecRestoreArray(rhs_, &values);
+        values[row - low] = whole[i];
+    VecRestoreArray(target, &values);
   }
 
   [[noreturn]] void refuse(const std::string& message, const std::string& hint) const {
@@ -461,10 +522,12 @@ private:
   std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
   VecScatter to_all_ = nullptr;       ///< distributed: the solution to every rank
   Vec all_ = nullptr;
-  Index n_first_ = 0;                        ///< velocity dofs of a saddle point (set_fields)
-  std::vector<VectorX> near_null_space_;     ///< the velocity block's rigid-body modes
-  IS fields_[2] = {nullptr, nullptr};        ///< fieldsplit's "u" and "p"
-  Mat schur_matrix_ = nullptr;               ///< the Schur complement's preconditioning matrix
+  Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)
+  std::vector<VectorX> near_null_space_; ///< the velocity block's rigid-body modes
+  IS fields_[2] = {nullptr, nullptr};    ///< fieldsplit's "u" and "p"
+  Mat schur_matrix_ = nullptr;           ///< the Schur complement's preconditioning matrix
+  assembly::SparseMatrix schur_share_;   ///< distributed: its share, until copied
+  std::unique_ptr<petsc::DistributedFields> distributed_fields_; ///< distributed saddle point
   Index schur_block_ = 0;                    ///< its cell block size (0: not block diagonal)
   std::vector<assembly::LocalFrame> frames_; ///< PETSc solves for y, x = Q y (set_local_frames)
   assembly::SparseMatrix frame_matrix_;      ///< Q, made at the first copy
