@@ -116,4 +116,34 @@ assembly::SparseMatrix rotated_share(const assembly::SparseMatrix& share,
   return rotated;
 }
 
+assembly::SparseMatrix embedded_share(const NodeBlockLayout& layout,
+                                      const assembly::SparseMatrix& share, Index n_velocity,
+                                      Real hole) {
+  const Index n_rows = layout.n_rows();
+  FF_ASSERT(share.rows() == n_rows && share.cols() == n_rows, "a share of the laid-out system");
+  // The layout's row of each system row, read off an embedded vector of row numbers + 1
+  // (0 marks an unused slot).
+  const VectorX numbers = VectorX::LinSpaced(n_rows, 1.0, static_cast<Real>(n_rows));
+  const VectorX embedded = layout.embed(numbers);
+  std::vector<Index> position(static_cast<std::size_t>(n_rows));
+  for (Index e = 0; e < embedded.size(); ++e)
+    if (embedded[e] > 0) position[static_cast<Index>(embedded[e]) - 1] = e;
+  const int components = layout.components();
+  std::vector<bool> touched(static_cast<std::size_t>(layout.n_velocity_embedded() / components),
+                            false);
+  std::vector<Eigen::Triplet<Real, Index>> entries;
+  entries.reserve(static_cast<std::size_t>(share.nonZeros()));
+  for (Index column = 0; column < share.outerSize(); ++column)
+    for (assembly::SparseMatrix::InnerIterator it(share, column); it; ++it) {
+      entries.emplace_back(position[it.row()], position[column], it.value());
+      if (it.row() == column && column < n_velocity) touched[position[column] / components] = true;
+    }
+  for (Index e = 0; e < layout.n_velocity_embedded(); ++e)
+    if (embedded[e] == 0 && touched[e / components]) entries.emplace_back(e, e, hole);
+  assembly::SparseMatrix result(layout.n_embedded(), layout.n_embedded());
+  result.setFromTriplets(entries.begin(), entries.end());
+  result.makeCompressed();
+  return result;
+}
+
 } // namespace formflow::solvers::petsc

@@ -109,7 +109,7 @@ public:
       // share of Qᵀ b (Q is node-local).
       const VectorX share = in_solved_unknowns(rhs);
       VecSet(rhs_, 0.0);
-      for (PetscInt i = 0; i < n; ++i)
+      for (Index i = 0; i < share.size(); ++i)
         if (share[i] != 0.0) VecSetValue(rhs_, petsc_index_[i], share[i], ADD_VALUES);
       VecAssemblyBegin(rhs_);
       VecAssemblyEnd(rhs_);
@@ -144,8 +144,12 @@ public:
       VecScatterBegin(to_all_, solution_, all_, INSERT_VALUES, SCATTER_FORWARD);
       VecScatterEnd(to_all_, solution_, all_, INSERT_VALUES, SCATTER_FORWARD);
       VecGetArrayRead(all_, &result);
-      for (PetscInt i = 0; i < n; ++i) solution[i] = result[petsc_index_[i]];
+      VectorX solved(static_cast<Index>(petsc_index_.size())); // laid out, if it is
+      for (Index i = 0; i < solved.size(); ++i) solved[i] = result[petsc_index_[i]];
       VecRestoreArrayRead(all_, &result);
+      solution = layout_.empty() ? std::move(solved)
+                                 : layout_.restrict(std::span<const Real>(
+                                       solved.data(), static_cast<std::size_t>(solved.size())));
       assembly::from_frames(frames_, solution); // x = Q y
       return true;
     }
@@ -206,9 +210,6 @@ public:
   }
 
   void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
-    // Distributed: no node layout yet (a node's components would have to be owned by one
-    // rank); the velocity block keeps the free numbering (scalar BoomerAMG).
-    if (distributed_) return;
     components_ = components;
     dof_of_velocity_ = std::move(dof_of_velocity);
   }
@@ -314,13 +315,17 @@ private:
     if (!near_null_space_.empty()) {
       std::vector<VectorX> modes = near_null_space_;
       for (VectorX& mode : modes) {
-        VectorX padded = VectorX::Zero(static_cast<Index>(petsc_index_.size()));
+        VectorX padded = VectorX::Zero(layout_.empty() ? static_cast<Index>(petsc_index_.size())
+                                                       : layout_.n_rows());
         padded.head(n_first_) = mode;
-        assembly::to_frames(frames_, padded); // y = Qᵀ x, as the matrix
-        mode = padded.head(n_first_);
+        // y = Qᵀ x laid out, as the matrix (zero on the unused slots).
+        mode = in_solved_unknowns(std::move(padded)).head(n_first_solved());
       }
       petsc::attach_distributed_near_null_space(modes, *distributed_fields_);
     }
+    // Laid out node by node: each rank owns whole nodes (embedded_share), so the split's
+    // index set has the block size that systems BoomerAMG reads.
+    if (!layout_.empty()) ISSetBlockSize(distributed_fields_->velocity(), layout_.components());
     PCFieldSplitSetIS(preconditioner, "u", distributed_fields_->velocity());
     PCFieldSplitSetIS(preconditioner, "p", distributed_fields_->pressure());
     if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
@@ -433,7 +438,23 @@ private:
         frame_matrix_ = assembly::frame_matrix(frames_, given.rows());
       rotated = petsc::rotated_share(given, frame_matrix_);
     }
-    const assembly::SparseMatrix& matrix = frames_.empty() ? given : rotated;
+    // Node by node (as lay_out_nodes serially, where the iterative default serves: the
+    // Schur matrix's share is given): the share moved to the layout's rows.
+    if (!layout_decided_) {
+      layout_decided_ = true;
+      PetscBool wanted = schur_block_ > 0 && schur_share_.rows() > 0 ? PETSC_TRUE : PETSC_FALSE;
+      PetscBool given_option = PETSC_FALSE;
+      PetscOptionsGetBool(nullptr, nullptr, "-formflow_velocity_node_blocks", &wanted,
+                          &given_option);
+      if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
+        layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, given.rows());
+    }
+    const assembly::SparseMatrix& in_frames = frames_.empty() ? given : rotated;
+    assembly::SparseMatrix laid_out;
+    if (!layout_.empty())
+      laid_out = petsc::embedded_share(layout_, in_frames, n_first_,
+                                       petsc::mean_absolute_diagonal(in_frames, n_first_));
+    const assembly::SparseMatrix& matrix = layout_.empty() ? in_frames : laid_out;
     const auto n = static_cast<PetscInt>(matrix.rows());
     const bool symmetric_lower = storage_ == MatrixStorage::SymmetricLower;
     const bool same_pattern = matrix_ && has_copied_pattern(matrix);
@@ -469,23 +490,28 @@ private:
       }
       MatCreateVecs(matrix_, &solution_, &rhs_);
       VecScatterCreateToAll(solution_, &to_all_, &all_);
-      if (n_first_ > 0 && n_first_ < n) {
+      if (n_first_ > 0 && n_first_solved() < n) {
         // A saddle point: its fields in PETSc's rows (each rank its own).
         PetscInt low = 0, high = 0;
         MatGetOwnershipRange(matrix_, &low, &high);
         distributed_fields_ =
-            std::make_unique<petsc::DistributedFields>(petsc_index_, low, high, n_first_);
+            std::make_unique<petsc::DistributedFields>(petsc_index_, low, high, n_first_solved());
       }
     }
     std::vector<PetscScalar> values(coo_source_.size());
     for (std::size_t s = 0; s < values.size(); ++s) values[s] = matrix.valuePtr()[coo_source_[s]];
     if (MatSetValuesCOO(matrix_, values.data(), INSERT_VALUES) != 0) MatDestroy(&matrix_);
     // The Schur matrix's share given for this step (set_schur_preconditioner).
-    if (distributed_fields_ && schur_share_.rows() == n - n_first_) {
+    if (distributed_fields_ && schur_share_.rows() == n - n_first_solved()) {
       petsc::copy_distributed_schur_matrix(schur_share_, *distributed_fields_, schur_block_,
                                            &schur_matrix_);
       schur_share_ = {};
     }
+  }
+
+  /// The velocity rows PETSc solves for: the free ones, or the layout's.
+  Index n_first_solved() const {
+    return layout_.empty() ? n_first_ : layout_.n_velocity_embedded();
   }
 
   /// Distributed: a vector that every rank holds whole (Newton's residual, the GMRES
@@ -518,7 +544,7 @@ private:
   KSP ksp_ = nullptr;
   std::vector<PetscInt> pattern_outer_, pattern_inner_;
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
-  std::vector<PetscInt> petsc_index_; ///< distributed: free dof → PETSc's row
+  std::vector<PetscInt> petsc_index_; ///< distributed: solved row (free or laid out) → PETSc's
   std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
   VecScatter to_all_ = nullptr;       ///< distributed: the solution to every rank
   Vec all_ = nullptr;
