@@ -5,8 +5,8 @@
 # H, the mixed Q2–P1disc problem kept as a saddle point with the settings of
 # bench/petsc_scale_step.sh, run to convergence (solver.tolerance's default) by one process
 # (systems BoomerAMG on the node layout, the default), one process without the layout
-# (scalar BoomerAMG, -formflow_velocity_node_blocks 0) and two ranks (scalar: no layout on
-# several ranks yet). Prints per run: secant steps, Krylov total and per step (min /
+# (scalar BoomerAMG, -formflow_velocity_node_blocks 0), and two ranks with and without it
+# (RUNS, default "np1 np1_scalar np2 np2_scalar", chooses). Prints per run: secant steps, Krylov total and per step (min /
 # median / max), the ram reaction and its difference from the first run, CPU (user + sys
 # of all ranks, one BLAS thread) and the largest rank's peak RSS.
 #   bench/distributed_saddle_point.sh [H]     (FORMFLOW_BINARY, default build/formflow;
@@ -33,15 +33,23 @@ run() { # name, petsc options, launcher words and the binary
     --set solver.linear=petsc --set solver.method=secant --set solver.max_iterations=500 \
     >/dev/null 2>&1 || true
 }
-run np1 "" "$binary"
-run np1_scalar "-formflow_velocity_node_blocks 0" "$binary"
-# shellcheck disable=SC2086 # $flags are several words
-run np2 "" "$mpiexec" $flags -n 2 "$binary"
-/usr/bin/python3 - "$work" <<'PY'
+runs=${RUNS:-np1 np1_scalar np2 np2_scalar}
+scalar="-formflow_velocity_node_blocks 0"
+for name in $runs; do
+  case $name in
+  np1) run np1 "" "$binary" ;;
+  np1_scalar) run np1_scalar "$scalar" "$binary" ;;
+  # shellcheck disable=SC2086 # $flags are several words
+  np2) run np2 "" "$mpiexec" $flags -n 2 "$binary" ;;
+  # shellcheck disable=SC2086
+  np2_scalar) run np2_scalar "$scalar" "$mpiexec" $flags -n 2 "$binary" ;;
+  esac
+done
+/usr/bin/python3 - "$work" $runs <<'PY'
 import json, statistics, sys
 work = sys.argv[1]
 reference = None
-for name in ("np1", "np1_scalar", "np2"):
+for name in sys.argv[2:]:
     s = json.load(open(f"{work}/{name}/summary.json"))
     user, system, rss = open(f"{work}/{name}.time").read().split()[-3:]
     steps = s["linear_algebra"]["iterations_per_step"]
