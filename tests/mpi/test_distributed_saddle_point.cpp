@@ -174,5 +174,15 @@ TEST(DistributedSaddlePoint, TaylorHoodIsRefusedNamingTheKey) {
   EXPECT_FALSE(std::filesystem::exists(scratch / "results"));
 }
 
+/// Exact contact (d_N = 0) around the saddle point takes Uzawa steps, which read every Γ3
+/// point's weight: not summed over the ranks yet, so refused naming the key.
+TEST(DistributedSaddlePoint, ExactContactIsRefusedNamingTheKey) {
+  testing::ScratchDirectory scratch("formflow-mpi-saddle");
+  const SaddleMpiRun run = run_saddle_mpi(paper_saddle, 2, scratch, {{"penalty.dN", "0"}});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("penalty.dN: on 2 MPI ranks"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(scratch / "results"));
+}
+
 } // namespace
 } // namespace formflow
