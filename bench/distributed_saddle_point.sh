@@ -35,16 +35,16 @@ run() { # name, petsc options, launcher words and the binary
 }
 runs=${RUNS:-np1 np1_scalar np2 np2_scalar}
 scalar="-formflow_velocity_node_blocks 0"
-for name in $runs; do
+for name in $runs; do # one word per run
+  # shellcheck disable=SC2086 # $flags are several words
   case $name in
   np1) run np1 "" "$binary" ;;
   np1_scalar) run np1_scalar "$scalar" "$binary" ;;
-  # shellcheck disable=SC2086 # $flags are several words
   np2) run np2 "" "$mpiexec" $flags -n 2 "$binary" ;;
-  # shellcheck disable=SC2086
   np2_scalar) run np2_scalar "$scalar" "$mpiexec" $flags -n 2 "$binary" ;;
   esac
 done
+# shellcheck disable=SC2086 # $runs: one argument per run
 /usr/bin/python3 - "$work" $runs <<'PY'
 import json, statistics, sys
 work = sys.argv[1]
