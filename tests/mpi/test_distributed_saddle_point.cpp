@@ -74,7 +74,8 @@ struct SaddleMpiRun {
 /// be inherited by the later mpirun's environment, which then fails.
 SaddleMpiRun run_saddle_mpi(const DistributedSaddleCase& c, int ranks,
                             const testing::ScratchDirectory& scratch,
-                            const std::vector<io::Override>& more = {}) {
+                            const std::vector<io::Override>& more = {},
+                            const std::string& command_line_options = {}) {
   std::string command = "OMPI_MCA_mpi_yield_when_idle=1 "
                         "OMPI_MCA_btl_vader_single_copy_mechanism=none ";
   if (ranks > 0)
@@ -86,8 +87,8 @@ SaddleMpiRun run_saddle_mpi(const DistributedSaddleCase& c, int ranks,
   std::vector<io::Override> edits = saddle_edits(c);
   edits.insert(edits.end(), more.begin(), more.end());
   for (const auto& [key, value] : edits) command += " --set " + testing::quoted(key + "=" + value);
-  command += " > " + testing::quoted((scratch / "out.txt").string()) + " 2> " +
-             testing::quoted((scratch / "err.txt").string());
+  command += " " + command_line_options + " > " + testing::quoted((scratch / "out.txt").string()) +
+             " 2> " + testing::quoted((scratch / "err.txt").string());
   const int status = std::system(command.c_str());
   SaddleMpiRun run;
   if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
@@ -172,6 +173,25 @@ TEST(DistributedSaddlePoint, TaylorHoodIsRefusedNamingTheKey) {
   ASSERT_NE(first, std::string::npos) << run.err;
   EXPECT_EQ(run.err.find(message, first + 1), std::string::npos) << "said once";
   EXPECT_FALSE(std::filesystem::exists(scratch / "results"));
+}
+
+/// A saddle-point option on the command line reaches the fine solve, not the coarse levels
+/// (condensed Newton on distributed MUMPS, whose solver reads only -coarse_* options), and
+/// a misspelt one is still refused (by the fine solve's check for unread options).
+TEST(DistributedSaddlePoint, CommandLineOptionsAreTheFineSolvesNotTheCoarseLevels) {
+  testing::ScratchDirectory scratch("formflow-mpi-saddle");
+  const SaddleMpiRun run = run_saddle_mpi(paper_saddle, 2, scratch, {{"solver.tolerance", "1e-4"}},
+                                          "-fieldsplit_u_pc_hypre_boomeramg_strong_threshold 0.5");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_GT(run.summary.at("coarse_iterations").size(), 0U) << "the coarse levels ran";
+  testing::ScratchDirectory misspelt_scratch("formflow-mpi-saddle");
+  const SaddleMpiRun misspelt =
+      run_saddle_mpi(paper_saddle, 2, misspelt_scratch, {{"solver.tolerance", "1e-4"}},
+                     "-fieldsplit_u_pc_hypre_boomeramg_strong_threshol 0.5");
+  EXPECT_EQ(misspelt.exit_code, 2) << misspelt.err;
+  EXPECT_NE(misspelt.err.find("-fieldsplit_u_pc_hypre_boomeramg_strong_threshol was read by no"),
+            std::string::npos)
+      << misspelt.err;
 }
 
 /// Exact contact (d_N = 0) around the saddle point takes Uzawa steps, which read every Γ3

@@ -103,6 +103,13 @@ public:
     static_cast<void>(components);
     static_cast<void>(dof_of_velocity);
   }
+  /// A helper's solver in a run whose own solver comes later (a distributed run's coarse
+  /// levels, app/coarse_start.cpp): it reads only the options under `prefix` (PETSc's
+  /// options prefix: "coarse_" reads -coarse_ksp_type, ...), so the run's options (the
+  /// saddle point's fieldsplit ones) do not reach it, and it leaves the check for unread
+  /// options to the run's own solver. Call before analyze. Back-ends without options
+  /// ignore it.
+  virtual void set_options_prefix(const std::string& prefix) { static_cast<void>(prefix); }
 };
 
 /// The key's spelling of `kind` ("cholmod", "umfpack").

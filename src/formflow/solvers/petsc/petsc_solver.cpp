@@ -78,8 +78,10 @@ public:
       if (splits == PETSC_ERR_ARG_UNKNOWN_TYPE || splits == PETSC_ERR_ARG_WRONG)
         refuse(capture.message(), "give a type PETSc 3.18 has for that split");
       if (splits != 0) return false;
-      krylov_start_.inexact_allowed(ksp_);       // reads -formflow_inexact_steps before the check
-      options_scope_.refuse_unused(options_key); // what nothing read by now
+      krylov_start_.inexact_allowed(ksp_); // reads -formflow_inexact_steps before the check
+      // What nothing read by now; a helper's solver (set_options_prefix) leaves it to the
+      // run's own one, which reads the options meant for it later.
+      if (options_prefix_.empty()) options_scope_.refuse_unused(options_key);
     }
     PCFailedReason failed = PC_NOERROR;
     PC preconditioner = nullptr;
@@ -209,6 +211,8 @@ public:
     return reduction > 0 && krylov_start_.inexact_allowed(ksp_);
   }
 
+  void set_options_prefix(const std::string& prefix) override { options_prefix_ = prefix; }
+
   void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
     components_ = components;
     dof_of_velocity_ = std::move(dof_of_velocity);
@@ -233,6 +237,7 @@ private:
   /// The KSP with formflow's defaults, then the options database over them.
   bool make_ksp(petsc::ErrorCapture& capture) {
     if (KSPCreate(distributed_ ? PETSC_COMM_WORLD : PETSC_COMM_SELF, &ksp_) != 0) return false;
+    if (!options_prefix_.empty()) KSPSetOptionsPrefix(ksp_, options_prefix_.c_str());
     PC preconditioner = nullptr;
     KSPGetPC(ksp_, &preconditioner);
     KSPSetType(ksp_, KSPPREONLY);
@@ -564,6 +569,7 @@ private:
   petsc::DefaultOptions defaults_; ///< the saddle-point defaults in the database
   long iterations_ = 0;
   bool checked_unused_ = false;
+  std::string options_prefix_;      ///< a helper's solver: its options' prefix (set_options_prefix)
   petsc::KrylovStart krylov_start_; ///< the next solve's guess and tolerance
 };
 
