@@ -153,6 +153,32 @@ TEST(DiscontinuousSaddlePoint, TheNodeLayoutIsARenumberingAndCanBeSwitchedOff) {
   EXPECT_NEAR(laid_out.results.iterations, free_numbering.results.iterations, 1);
 }
 
+/// The saddle point goes to PETSc as four blocks (MATNEST, so that fieldsplit takes the
+/// velocity block without a copy) unless -formflow_saddle_point_nest 0 asks for one AIJ
+/// matrix: the same operator and preconditioner, so the same iterates up to the order
+/// of the products' additions.
+TEST(DiscontinuousSaddlePoint, TheFourBlocksAreTheWholeMatrix) {
+  constexpr Real krylov_tolerance = 1e-12; // FGMRES's -ksp_rtol in both runs
+  const auto saddle_run = [&](const std::string& options) {
+    return run(
+        {{"mesh.size", "2.5"},
+         {"formulation.discontinuous_pressure", "saddle_point"},
+         {"solver.linear", "petsc"},
+         {"solver.petsc_options",
+          fmt::format("-ksp_rtol {} -formflow_inexact_steps 0", krylov_tolerance) + options}},
+        /*estimate_condition=*/true);
+  };
+  const app::Simulation blocks = saddle_run("");
+  const app::Simulation whole = saddle_run(" -formflow_saddle_point_nest 0");
+  ASSERT_TRUE(blocks.reciprocal_condition.has_value());
+  // Both runs err by at most rtol/r_s each (r_s the saddle point's reciprocal condition).
+  const Real tolerance = agreement(2 * krylov_tolerance / *blocks.reciprocal_condition);
+  std::cout << "four blocks against the whole matrix: " << relative_difference(blocks, whole)
+            << " (tolerance " << tolerance << ")\n";
+  EXPECT_LE(relative_difference(blocks, whole), tolerance);
+  EXPECT_NEAR(blocks.results.iterations, whole.results.iterations, 1);
+}
+
 /// The largest Krylov count of the secant steps of `simulation`.
 long largest_step_count(const app::Simulation& simulation) {
   long largest = 0;

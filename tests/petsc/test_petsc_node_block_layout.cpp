@@ -3,6 +3,7 @@
 // block size for AMG's nodal options) is a renumbering plus decoupled rows, so the laid
 // out system has the same solution on the free dofs.
 #include "formflow/solvers/petsc/node_block_layout.hpp"
+#include "formflow/solvers/petsc/value_map.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +14,6 @@
 
 namespace formflow {
 namespace {
-
-using NodeLayoutRowMatrix = Eigen::SparseMatrix<Real, Eigen::RowMajor, int>;
 
 // 2D (two components), four mesh nodes: node 0 free, node 1 with its x prescribed (a
 // symmetry line), node 2 prescribed whole (the ram), node 3 free; two pressure rows.
@@ -48,12 +47,24 @@ TEST(NodeBlockLayout, TheLaidOutSystemHasTheSameSolution) {
     dense(k, k - 5) = dense(k - 5, k) = 0.5;
     dense(k, k - 3) = dense(k - 3, k) = 0.25;
   }
-  const NodeLayoutRowMatrix matrix = dense.sparseView();
+  assembly::SparseMatrix matrix = dense.sparseView();
+  matrix.makeCompressed();
   VectorX rhs(node_layout_rows);
   rhs << 1, -2, 3, 0.5, -1, 2, 1;
-  const Real hole = solvers::petsc::mean_absolute_diagonal(matrix, 5);
-  EXPECT_DOUBLE_EQ(hole, (4 + 5 + 6 + 7 + 8) / 5.0);
-  const MatrixX embedded(layout.embed(matrix, hole));
+  // The laid-out matrix as PETSc gets it: the pattern and the values of the solver's
+  // ValueMap (no frames).
+  const solvers::petsc::CsrPattern pattern =
+      solvers::petsc::solved_pattern(matrix, false, assembly::SparseMatrix(), layout);
+  const solvers::petsc::ValueMap map(matrix, false, assembly::SparseMatrix(), layout, pattern.outer,
+                                     pattern.inner, 5);
+  std::vector<Real> values(pattern.inner.size());
+  map.fill(matrix, values);
+  MatrixX embedded = MatrixX::Zero(8, 8);
+  for (Index r = 0; r < 8; ++r)
+    for (Index s = pattern.outer[r]; s < pattern.outer[r + 1]; ++s)
+      embedded(r, pattern.inner[s]) = values[static_cast<std::size_t>(s)];
+  const Real hole = (4 + 5 + 6 + 7 + 8) / 5.0; // the mean |diagonal| of the velocity rows
+  EXPECT_DOUBLE_EQ(embedded(2, 2), hole);
   // The hole's row and column hold only its diagonal entry.
   EXPECT_EQ(embedded.row(2).cwiseAbs().sum(), hole);
   EXPECT_EQ(embedded.col(2).cwiseAbs().sum(), hole);

@@ -24,12 +24,10 @@ SparseMatrix from_triplets(Index rows, Index columns, const Triplets& triplets) 
 
 template <int dim>
 SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
-                                          const ConstraintMultipliers<dim>& multipliers,
-                                          const LinearSystem& pattern)
+                                          const ConstraintMultipliers<dim>& multipliers)
     : problem_(problem), multipliers_(multipliers), n_velocity_(problem.plan().n_free()),
       n_pressure_(multipliers.n_pressure_dofs()), d_(multipliers.penalty().d) {
   FF_ASSERT(multipliers.has_global_pressure(), "the saddle-point system is for a global pressure");
-  FF_ASSERT(pattern.matrix.isCompressed(), "slots are offsets into a compressed matrix");
   const auto& mesh = problem.mesh();
   const ScatterPlan& plan = problem.plan();
   const Discretisation<dim>& discretisation = problem.discretisation();
@@ -80,10 +78,12 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
   // The pin's identity entry belongs to the rank of the pinned dof's cell (cell 0 holds a
   // discontinuous pressure's dof 0): added once over the ranks.
   pin_here_ = pinned_ && (!distributed_ || discretisation.assembles(0));
+}
 
+template <int dim> void SaddlePointSystem<dim>::build_whole_matrix(const SparseMatrix& lower) {
+  FF_ASSERT(lower.isCompressed(), "slots are offsets into a compressed matrix");
   // Pattern: A (both triangles), B and Bᵀ, the pressure block; values 0 for now.
   Triplets entries;
-  const SparseMatrix& lower = pattern.matrix;
   for (Index column = 0; column < lower.outerSize(); ++column)
     for (Index k = lower.outerIndexPtr()[column]; k < lower.outerIndexPtr()[column + 1]; ++k) {
       const Index row = lower.innerIndexPtr()[k];
@@ -107,8 +107,8 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
   // rows, so that PETSc's numbering gives each pressure row to its cell's rank (a row
   // belongs to the lowest rank whose share has its diagonal).
   if (distributed_ && d_ == 0)
-    for (const Index cell : discretisation.assembled_cells())
-      for (const Index dof : multipliers.cell_pressure_dofs(cell))
+    for (const Index cell : problem_.discretisation().assembled_cells())
+      for (const Index dof : multipliers_.cell_pressure_dofs(cell))
         entries.emplace_back(n_velocity_ + dof, n_velocity_ + dof, 0.0);
   const Index size = n_velocity_ + n_pressure_;
   matrix_ = from_triplets(size, size, entries);
@@ -124,6 +124,21 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
     }
 }
 
+template <int dim> SparseMatrix SaddlePointSystem<dim>::coupling() const {
+  if (!pinned_) return divergence_free_;
+  SparseMatrix pruned = divergence_free_;
+  pruned.prune([](Index row, Index, Real) { return row != 0; }); // δp_0 = 0: no row
+  return pruned;
+}
+
+template <int dim> SparseMatrix SaddlePointSystem<dim>::pressure_block() const {
+  SparseMatrix block(n_pressure_, n_pressure_);
+  if (d_ > 0) block = -d_ * mass_;
+  if (pin_here_) block.coeffRef(0, 0) = 1.0;
+  block.makeCompressed();
+  return block;
+}
+
 template <int dim> Index SaddlePointSystem<dim>::slot(Index row, Index column) const {
   const Index* begin = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[column];
   const Index* end = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[column + 1];
@@ -133,6 +148,7 @@ template <int dim> Index SaddlePointSystem<dim>::slot(Index row, Index column) c
 }
 
 template <int dim> void SaddlePointSystem<dim>::fill_matrix(const LinearSystem& velocity) {
+  if (matrix_.rows() == 0) build_whole_matrix(velocity.matrix);
   FF_ASSERT(velocity.matrix.nonZeros() == static_cast<Index>(lower_slot_.size()),
             "the velocity matrix keeps the pattern it was built with");
   Real* values = matrix_.valuePtr();

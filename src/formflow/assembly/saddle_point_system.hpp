@@ -19,7 +19,7 @@ namespace formflow::assembly {
 /// already in F) and δp its correction. For d > 0 the matrix is symmetric
 /// quasi-definite, for d = 0 a saddle point. The full matrix (both triangles)
 /// keeps one pattern: B and M are built once, A's values are copied into fixed
-/// slots per iteration.
+/// slots per iteration; a back-end that takes the blocks apart never has it built.
 ///
 /// Null mode: with d = 0 the constant pressure is in the kernel of Bᵀ when every
 /// boundary velocity is prescribed (∫ div φ_a = ∮ φ_a·n vanishes for every free
@@ -34,13 +34,19 @@ namespace formflow::assembly {
 /// shift are taken from every cell alike on every rank.
 template <int dim> class SaddlePointSystem {
 public:
-  /// `multipliers` must have a global pressure; `pattern` is a velocity system
-  /// from problem.plan().make_system() (its lower-triangle pattern is A's).
+  /// `multipliers` must have a global pressure.
   SaddlePointSystem(const FormingProblem<dim>& problem,
-                    const ConstraintMultipliers<dim>& multipliers, const LinearSystem& pattern);
+                    const ConstraintMultipliers<dim>& multipliers);
 
-  /// Copies the assembled velocity matrix (lower triangle) into the full matrix.
+  /// Copies the assembled velocity matrix (lower triangle) into the full matrix, made
+  /// with the velocity matrix's pattern at the first call. Only a back-end that takes the
+  /// whole matrix needs it (LinearSolver::take_saddle_point_blocks).
   void fill_matrix(const LinearSystem& velocity);
+  /// B on the free velocity dofs as the whole matrix has it (the pinned row empty), and
+  /// the pressure block C (−d M, the pin's 1): the fixed blocks of [A Bᵀ; B C] for a
+  /// back-end that takes them apart.
+  SparseMatrix coupling() const;
+  SparseMatrix pressure_block() const;
   /// The right-hand side for the current pressure `pressure` (vertex values).
   VectorX rhs(const LinearSystem& velocity, const VectorX& pressure) const;
   /// Moves the pressure `increment`'s load −Bᵀ δp into `velocity` (rhs and the
@@ -59,12 +65,16 @@ public:
   /// pressure; 0 for a continuous one (vertex dofs couple neighbouring cells).
   Index pressure_block_size() const;
 
+  /// The whole matrix of the last fill_matrix.
   const SparseMatrix& matrix() const { return matrix_; }
   Index n_velocity() const { return n_velocity_; }
   Index n_pressure() const { return n_pressure_; }
   bool has_pinned_pressure() const { return pinned_; }
 
 private:
+  /// The whole matrix's pattern (A's from `lower`, A's lower triangle), the slots of B's
+  /// and A's entries in it.
+  void build_whole_matrix(const SparseMatrix& lower);
   Index slot(Index row, Index column) const;
 
   const FormingProblem<dim>& problem_;

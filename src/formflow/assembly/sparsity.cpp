@@ -10,24 +10,35 @@ namespace formflow::assembly {
 
 namespace {
 
-SparseMatrix pattern_from(Index rows, Index columns,
-                          const std::vector<Eigen::Triplet<Real, Index>>& entries) {
-  SparseMatrix pattern(rows, columns);
-  pattern.setFromTriplets(entries.begin(), entries.end());
-  pattern.makeCompressed();
+CompressedPattern pattern_from(Index rows, Index columns,
+                               const std::vector<Eigen::Triplet<Real, Index>>& entries) {
+  SparseMatrix matrix(rows, columns);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  matrix.makeCompressed();
+  CompressedPattern pattern{rows, columns, {}, {}};
+  pattern.outer.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + columns + 1);
+  pattern.inner.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
   return pattern;
 }
 
-/// Storage slot of entry (row, column) in a compressed column-major matrix.
-Index slot_of(const SparseMatrix& matrix, Index row, Index column) {
-  const Index* begin = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column];
-  const Index* end = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column + 1];
-  const Index* found = std::lower_bound(begin, end, row);
-  FF_ASSERT(found != end && *found == row, "entry missing from the sparsity pattern");
-  return static_cast<Index>(found - matrix.innerIndexPtr());
+} // namespace
+
+SparseMatrix CompressedPattern::zeros() const {
+  SparseMatrix matrix(rows, columns);
+  matrix.resizeNonZeros(static_cast<Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), matrix.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), matrix.innerIndexPtr());
+  std::fill_n(matrix.valuePtr(), inner.size(), 0.0);
+  return matrix;
 }
 
-} // namespace
+Index CompressedPattern::slot(Index row, Index column) const {
+  const Index* begin = inner.data() + outer[column];
+  const Index* end = inner.data() + outer[column + 1];
+  const Index* found = std::lower_bound(begin, end, row);
+  FF_ASSERT(found != end && *found == row, "entry missing from the sparsity pattern");
+  return static_cast<Index>(found - inner.data());
+}
 
 ScatterPlan::ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, const BlockDofs& blocks)
     : blocks_(blocks), free_index_(n_dofs, -1), prescribed_index_(n_dofs, -1) {
@@ -64,13 +75,13 @@ ScatterPlan::ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, cons
     for (int a = 0; a < n; ++a) {
       for (int b = a; b < n; ++b) {
         const Index i = free_index_[dofs[a]], j = free_index_[dofs[b]];
-        slots_.push_back(i >= 0 && j >= 0 ? slot_of(matrix_pattern_, std::max(i, j), std::min(i, j))
+        slots_.push_back(i >= 0 && j >= 0 ? matrix_pattern_.slot(std::max(i, j), std::min(i, j))
                                           : -1);
       }
       if (prescribed_index_[dofs[a]] >= 0)
         for (int b = 0; b < n; ++b)
           reaction_slots_.push_back(
-              {a, b, slot_of(reaction_pattern_, prescribed_index_[dofs[a]], dofs[b])});
+              {a, b, reaction_pattern_.slot(prescribed_index_[dofs[a]], dofs[b])});
     }
     slot_offsets_.push_back(static_cast<Index>(slots_.size()));
     reaction_offsets_.push_back(static_cast<Index>(reaction_slots_.size()));
@@ -78,7 +89,7 @@ ScatterPlan::ScatterPlan(Index n_dofs, const std::vector<bool>& prescribed, cons
 }
 
 LinearSystem ScatterPlan::make_system() const {
-  LinearSystem system{matrix_pattern_, VectorX::Zero(n_free_), reaction_pattern_,
+  LinearSystem system{matrix_pattern_.zeros(), VectorX::Zero(n_free_), reaction_pattern_.zeros(),
                       VectorX::Zero(n_prescribed())};
   clear(system);
   return system;

@@ -34,6 +34,17 @@ struct LinearSystem {
   VectorX prescribed_loads;
 };
 
+/// The pattern of a compressed column-major matrix without its values: a plan keeps it
+/// for the systems it makes (whose values are theirs), not a zero matrix of its own.
+struct CompressedPattern {
+  Index rows = 0, columns = 0;
+  std::vector<Index> outer{0}, inner;
+  /// The zero matrix of this pattern.
+  SparseMatrix zeros() const;
+  /// The storage slot of entry (row, column), which must be in the pattern.
+  Index slot(Index row, Index column) const;
+};
+
 /// Precomputed scatter of symmetric local matrices into a LinearSystem. Since
 /// the mesh never changes, each local entry's storage slot is found once and
 /// every later assembly is a plain indexed add (no sorting, no search).
@@ -71,7 +82,7 @@ private:
   BlockDofs blocks_;
   std::vector<Index> free_index_, prescribed_index_;
   Index n_free_ = 0;
-  SparseMatrix matrix_pattern_, reaction_pattern_;
+  CompressedPattern matrix_pattern_, reaction_pattern_;
   std::vector<Index> slot_offsets_; ///< per block, into slots_
   std::vector<Index> slots_;        ///< per block: local pairs a ≤ b, slot in K_ff or −1
   std::vector<Index> prescribed_local_offsets_; ///< per block, into prescribed_local_

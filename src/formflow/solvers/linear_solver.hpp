@@ -110,6 +110,19 @@ public:
   /// options to the run's own solver. Call before analyze. Back-ends without options
   /// ignore it.
   virtual void set_options_prefix(const std::string& prefix) { static_cast<void>(prefix); }
+  /// The saddle point whose fields set_fields gave, as blocks [A Bᵀ; B C] rather than one
+  /// matrix: `coupling` B (n_p × n_first) and `pressure_block` C (n_p × n_p, both
+  /// triangles) stay fixed for the solver's life. A back-end that keeps the blocks apart
+  /// anyway (PETSc's fieldsplit) returns true, and from then on analyze and factorize get
+  /// the lower triangle of the velocity block A alone: the whole matrix (a second copy of
+  /// A, with B twice) is never built. Default: false, give the whole matrix. Call after
+  /// the other set_ calls, before the first analyze.
+  virtual bool take_saddle_point_blocks(const assembly::SparseMatrix& coupling,
+                                        const assembly::SparseMatrix& pressure_block) {
+    static_cast<void>(coupling);
+    static_cast<void>(pressure_block);
+    return false;
+  }
 };
 
 /// The key's spelling of `kind` ("cholmod", "umfpack").

@@ -33,6 +33,10 @@ public:
   void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
     solver_->set_velocity_nodes(components, std::move(dof_of_velocity));
   }
+  bool take_saddle_point_blocks(const assembly::SparseMatrix& coupling,
+                                const assembly::SparseMatrix& pressure_block) override {
+    return solver_->take_saddle_point_blocks(coupling, pressure_block);
+  }
 
 private:
   bool same_pattern(const assembly::SparseMatrix& matrix) const {

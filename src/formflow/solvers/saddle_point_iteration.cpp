@@ -18,7 +18,7 @@ SaddlePointSolve<dim>::SaddlePointSolve(FormingNonlinearProblem<dim>& problem,
   FF_ASSERT(forming.multipliers() && forming.multipliers()->has_global_pressure(),
             "a saddle-point solve needs a global pressure");
   ScopedTimer timer(linear.times(), "setup");
-  saddle_.emplace(forming, *forming.multipliers(), system_);
+  saddle_.emplace(forming, *forming.multipliers());
   // For an iterative back-end (PETSc fieldsplit): the velocity/pressure split and
   // the velocity block's rigid-body modes, for its algebraic multigrid.
   linear.solver().set_fields(
@@ -53,14 +53,22 @@ template <int dim> LaggedStep SaddlePointSolve<dim>::solve(const VectorX* w, Vec
                                system_); // same matrix each step; the loads −Bᵀp, −λ_N v_N change
     }
     if (step == 0) {
-      saddle.fill_matrix(system_);
       // The viscosities of this step's assembly scale the Schur preconditioner. Given
       // before the analysis: PETSc chooses its iterative default (and the velocity
       // block's node layout) from it at the first matrix it sees.
       linear_.solver().set_schur_preconditioner(saddle.schur_preconditioner(),
                                                 saddle.pressure_block_size());
-      if (const auto stop = linear_.analyse_once(saddle.matrix())) return {stop, false};
-      if (const auto stop = linear_.factorize(saddle.matrix())) return {stop, false};
+      // A back-end that keeps the blocks apart gets B and C once and A alone from then
+      // on: the whole matrix, a copy of A with B beside it, is never built.
+      if (!blocks_decided_) {
+        blocks_decided_ = true;
+        blocks_ =
+            linear_.solver().take_saddle_point_blocks(saddle.coupling(), saddle.pressure_block());
+      }
+      if (!blocks_) saddle.fill_matrix(system_);
+      const assembly::SparseMatrix& matrix = blocks_ ? system_.matrix : saddle.matrix();
+      if (const auto stop = linear_.analyse_once(matrix)) return {stop, false};
+      if (const auto stop = linear_.factorize(matrix)) return {stop, false};
     }
     const VectorX& pressure = multipliers.global_pressure();
     if (w && step == 0) {

@@ -36,6 +36,7 @@ private:
   TimedLinearStep& linear_;
   assembly::LinearSystem system_;
   std::optional<assembly::SaddlePointSystem<dim>> saddle_;
+  bool blocks_decided_ = false, blocks_ = false; ///< LinearSolver::take_saddle_point_blocks
 };
 
 } // namespace formflow::solvers

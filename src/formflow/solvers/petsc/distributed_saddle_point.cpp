@@ -117,29 +117,30 @@ assembly::SparseMatrix rotated_share(const assembly::SparseMatrix& share,
 }
 
 assembly::SparseMatrix embedded_share(const NodeBlockLayout& layout,
-                                      const assembly::SparseMatrix& share, Index n_velocity,
-                                      Real hole) {
+                                      const assembly::SparseMatrix& share, Index n_velocity) {
   const Index n_rows = layout.n_rows();
   FF_ASSERT(share.rows() == n_rows && share.cols() == n_rows, "a share of the laid-out system");
-  // The layout's row of each system row, read off an embedded vector of row numbers + 1
-  // (0 marks an unused slot).
-  const VectorX numbers = VectorX::LinSpaced(n_rows, 1.0, static_cast<Real>(n_rows));
-  const VectorX embedded = layout.embed(numbers);
-  std::vector<Index> position(static_cast<std::size_t>(n_rows));
-  for (Index e = 0; e < embedded.size(); ++e)
-    if (embedded[e] > 0) position[static_cast<Index>(embedded[e]) - 1] = e;
   const int components = layout.components();
   std::vector<bool> touched(static_cast<std::size_t>(layout.n_velocity_embedded() / components),
                             false);
   std::vector<Eigen::Triplet<Real, Index>> entries;
-  entries.reserve(static_cast<std::size_t>(share.nonZeros()));
+  entries.reserve(static_cast<std::size_t>(share.nonZeros()) + layout.holes().size());
+  Real diagonal_sum = 0; // the share's velocity diagonal, for the slots' value
+  Index diagonals = 0;
   for (Index column = 0; column < share.outerSize(); ++column)
     for (assembly::SparseMatrix::InnerIterator it(share, column); it; ++it) {
-      entries.emplace_back(position[it.row()], position[column], it.value());
-      if (it.row() == column && column < n_velocity) touched[position[column] / components] = true;
+      entries.emplace_back(layout.position(it.row()), layout.position(column), it.value());
+      if (it.row() == column && column < n_velocity) {
+        touched[layout.position(column) / components] = true;
+        diagonal_sum += std::abs(it.value());
+        ++diagonals;
+      }
     }
-  for (Index e = 0; e < layout.n_velocity_embedded(); ++e)
-    if (embedded[e] == 0 && touched[e / components]) entries.emplace_back(e, e, hole);
+  // The slots' diagonal: the mean |a_ii| of the share's velocity rows (as the serial
+  // layout's), so that they neither dominate nor vanish beside the velocity's.
+  const Real hole = diagonal_sum > 0 ? diagonal_sum / static_cast<Real>(diagonals) : 1.0;
+  for (const Index slot : layout.holes())
+    if (touched[slot / components]) entries.emplace_back(slot, slot, hole);
   assembly::SparseMatrix result(layout.n_embedded(), layout.n_embedded());
   result.setFromTriplets(entries.begin(), entries.end());
   result.makeCompressed();

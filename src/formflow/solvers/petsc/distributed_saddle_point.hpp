@@ -64,14 +64,14 @@ void attach_distributed_near_null_space(const std::vector<VectorX>& modes,
 assembly::SparseMatrix rotated_share(const assembly::SparseMatrix& share,
                                      const assembly::SparseMatrix& frame_matrix);
 
-/// A share (both triangles, in the free numbering) moved to the node layout's rows
-/// (NodeBlockLayout::embed), with the decoupled diagonal `hole` in the unused slots of the
-/// nodes this share touches only (a node it has a velocity diagonal of): every rank that
-/// touches a node has the diagonals of all its rows, so the lowest of them owns the whole
-/// node (a block of `components` rows, as the "u" split's block size needs), and the
-/// ranks' holes add up to a positive multiple of `hole` (a decoupled row all the same).
+/// A share (both triangles, in the free numbering; velocity rows [0, n_velocity)) moved
+/// to the node layout's rows, with a decoupled diagonal (the mean |a_ii| of the share's
+/// velocity rows) in the unused slots of the nodes this share touches only (a node it has
+/// a velocity diagonal of): every rank that touches a node has the diagonals of all its
+/// rows, so the lowest of them owns the whole node (a block of `components` rows, as the
+/// "u" split's block size needs), and the ranks' slot entries add up to a positive
+/// diagonal (a decoupled row all the same).
 assembly::SparseMatrix embedded_share(const NodeBlockLayout& layout,
-                                      const assembly::SparseMatrix& share, Index n_velocity,
-                                      Real hole);
+                                      const assembly::SparseMatrix& share, Index n_velocity);
 
 } // namespace formflow::solvers::petsc

@@ -2,6 +2,8 @@
 // The velocity block laid out node by node (constant block size) for AMG.
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 
+#include "formflow/core/error.hpp"
+
 #include <algorithm>
 
 namespace formflow::solvers::petsc {

@@ -3,12 +3,8 @@
 // systems options of algebraic multigrid (issue 20, docs/petsc.md "Velocity AMG").
 #pragma once
 
-#include "formflow/core/error.hpp"
 #include "formflow/core/types.hpp"
 
-#include <Eigen/SparseCore>
-
-#include <cmath>
 #include <span>
 #include <vector>
 
@@ -35,12 +31,11 @@ public:
   Index n_rows() const { return static_cast<Index>(position_.size()); }
   Index n_embedded() const { return n_embedded_; }
   Index n_velocity_embedded() const { return n_velocity_embedded_; }
+  /// The layout's row of system row `row`.
+  Index position(Index row) const { return position_[static_cast<std::size_t>(row)]; }
+  /// The layout's rows that no system row fills (each gets a decoupled diagonal entry).
+  std::span<const Index> holes() const { return holes_; }
 
-  /// The system's matrix (n_rows square, row-major) moved to the layout's rows; each
-  /// unused slot gets the diagonal entry `hole`. The pattern depends on the layout only.
-  template <typename StorageIndex>
-  Eigen::SparseMatrix<Real, Eigen::RowMajor, StorageIndex>
-  embed(const Eigen::SparseMatrix<Real, Eigen::RowMajor, StorageIndex>& matrix, Real hole) const;
   /// A vector of the system (n_rows) in the layout's rows, zero in the unused slots.
   VectorX embed(const VectorX& x) const;
   /// The system's rows of a vector of the layout (n_embedded): the inverse of embed.
@@ -52,33 +47,5 @@ private:
   std::vector<Index> holes_;    ///< the layout's rows that no system row fills
   Index n_embedded_ = 0, n_velocity_embedded_ = 0;
 };
-
-template <typename StorageIndex>
-Eigen::SparseMatrix<Real, Eigen::RowMajor, StorageIndex>
-NodeBlockLayout::embed(const Eigen::SparseMatrix<Real, Eigen::RowMajor, StorageIndex>& matrix,
-                       Real hole) const {
-  using RowMatrix = Eigen::SparseMatrix<Real, Eigen::RowMajor, StorageIndex>;
-  FF_ASSERT(matrix.rows() == n_rows() && matrix.cols() == n_rows(), "the system's matrix");
-  std::vector<Eigen::Triplet<Real, StorageIndex>> entries;
-  entries.reserve(static_cast<std::size_t>(matrix.nonZeros()) + holes_.size());
-  for (Index row = 0; row < matrix.outerSize(); ++row)
-    for (typename RowMatrix::InnerIterator it(matrix, row); it; ++it)
-      entries.emplace_back(static_cast<StorageIndex>(position_[row]),
-                           static_cast<StorageIndex>(position_[it.col()]), it.value());
-  for (const Index row : holes_)
-    entries.emplace_back(static_cast<StorageIndex>(row), static_cast<StorageIndex>(row), hole);
-  RowMatrix embedded(n_embedded_, n_embedded_);
-  embedded.setFromTriplets(entries.begin(), entries.end());
-  embedded.makeCompressed();
-  return embedded;
-}
-
-/// The mean of |a_ii| over the first `n` rows of `matrix` (the scale of the unused slots'
-/// entries, so that they neither dominate nor vanish beside the velocity's), 1 if zero.
-template <typename Matrix> Real mean_absolute_diagonal(const Matrix& matrix, Index n) {
-  Real sum = 0;
-  for (Index row = 0; row < n; ++row) sum += std::abs(matrix.coeff(row, row));
-  return sum > 0 ? sum / static_cast<Real>(n) : 1.0;
-}
 
 } // namespace formflow::solvers::petsc

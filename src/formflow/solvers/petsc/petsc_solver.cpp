@@ -10,6 +10,8 @@
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
+#include "formflow/solvers/petsc/saddle_point_nest.hpp"
+#include "formflow/solvers/petsc/value_map.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -19,13 +21,13 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace formflow::solvers {
 
 namespace {
-
-using RowMatrix = Eigen::SparseMatrix<Real, Eigen::RowMajor, PetscInt>;
 
 constexpr const char* options_key = "solver.petsc_options";
 
@@ -70,11 +72,14 @@ public:
                                   "option's family) or leave the key unset for direct MUMPS");
       return false;
     }
+    // The splits' own set-up (the velocity AMG hierarchy) here, not at the first
+    // application inside the solve: on the saddle point's nest the outer set-up leaves
+    // it to them, and the phases' times should say where it went.
+    PC outer = nullptr;
+    KSPGetPC(ksp_, &outer);
+    const PetscErrorCode splits = petsc::set_up_splits(outer);
     if (!checked_unused_) {
       checked_unused_ = true;
-      PC outer = nullptr;
-      KSPGetPC(ksp_, &outer);
-      const PetscErrorCode splits = petsc::set_up_splits(outer);
       if (splits == PETSC_ERR_ARG_UNKNOWN_TYPE || splits == PETSC_ERR_ARG_WRONG)
         refuse(capture.message(), "give a type PETSc 3.18 has for that split");
       if (splits != 0) return false;
@@ -83,6 +88,7 @@ public:
       // run's own one, which reads the options meant for it later.
       if (options_prefix_.empty()) options_scope_.refuse_unused(options_key);
     }
+    if (splits != 0) return false;
     PCFailedReason failed = PC_NOERROR;
     PC preconditioner = nullptr;
     KSPGetPC(ksp_, &preconditioner);
@@ -218,6 +224,14 @@ public:
     dof_of_velocity_ = std::move(dof_of_velocity);
   }
 
+  bool take_saddle_point_blocks(const assembly::SparseMatrix& coupling,
+                                const assembly::SparseMatrix& pressure_block) override {
+    if (matrix_ || !nest_the_saddle_point()) return false;
+    coupling_ = coupling;
+    pressure_block_ = pressure_block;
+    return true;
+  }
+
 private:
   /// x in the unknowns PETSc solves for: y = Qᵀ x (set_local_frames), laid out node by
   /// node (lay_out_nodes) where it is.
@@ -266,7 +280,8 @@ private:
   /// the rigid-body modes go with "u" as its near-null space (fieldsplit hands a
   /// "nearnullspace" composed on a split's IS to that split's matrix, which GAMG reads).
   bool split_fields(PC preconditioner) {
-    const auto n = static_cast<PetscInt>(pattern_outer_.size()) - 1;
+    PetscInt n = 0;
+    MatGetSize(matrix_, &n, nullptr);
     if (n_first_ <= 0 || n_first_ >= (layout_.empty() ? n : layout_.n_rows()))
       refuse("-pc_type fieldsplit needs a saddle point (velocity and pressure fields), and "
              "this loop's systems have the velocity only",
@@ -337,17 +352,6 @@ private:
     return true;
   }
 
-  /// Qᵀ K Q for the full matrix K (set_local_frames; K itself without frames). Q's
-  /// pattern is fixed and the product keeps every structural entry, so the pattern
-  /// stays the same from one factorisation to the next.
-  RowMatrix in_frames(const assembly::SparseMatrix& full) {
-    if (frames_.empty()) return RowMatrix(full);
-    if (frame_matrix_.rows() != full.rows())
-      frame_matrix_ = assembly::frame_matrix(frames_, full.rows());
-    const assembly::SparseMatrix transposed = frame_matrix_.transpose();
-    return RowMatrix(transposed * full * frame_matrix_);
-  }
-
   /// Whether the velocity block is laid out node by node (NodeBlockLayout), for a saddle
   /// point whose velocity nodes set_velocity_nodes gave: by default where the iterative
   /// default serves (a block-diagonal Schur matrix, make_ksp), since BoomerAMG then
@@ -368,7 +372,8 @@ private:
     return !layout_.empty();
   }
 
-  /// Whether `matrix` (compressed, either storage order) has the pattern of the last copy.
+  /// Whether `matrix` (compressed, either storage order) has the pattern of the last
+  /// distributed copy.
   template <class Matrix> bool has_copied_pattern(const Matrix& matrix) const {
     const auto n = static_cast<std::size_t>(matrix.outerSize());
     return pattern_outer_.size() == n + 1 &&
@@ -377,53 +382,107 @@ private:
            std::equal(pattern_inner_.begin(), pattern_inner_.end(), matrix.innerIndexPtr());
   }
 
-  /// Copies `matrix` (its lower triangle for SymmetricLower) into the AIJ matrix,
-  /// made on the first call and rebuilt only if the pattern changes.
+  /// Whether the saddle point goes to PETSc as four blocks (petsc::SaddlePointNest,
+  /// take_saddle_point_blocks): where the iterative default serves (a block-diagonal
+  /// Schur matrix, make_ksp) and the options do not ask for another preconditioner than
+  /// fieldsplit (a direct solver needs one AIJ matrix); -formflow_saddle_point_nest 0
+  /// says otherwise (one AIJ matrix of the whole saddle point, as before session 13).
+  bool nest_the_saddle_point() {
+    if (distributed_ || n_first_ <= 0 || schur_block_ <= 0 || !schur_matrix_) return false;
+    PetscBool wanted = PETSC_TRUE, given = PETSC_FALSE;
+    PetscOptionsGetBool(nullptr, nullptr, "-formflow_saddle_point_nest", &wanted, &given);
+    char type[64] = "";
+    PetscBool typed = PETSC_FALSE;
+    PetscOptionsGetString(nullptr, nullptr, "-pc_type", type, sizeof type, &typed);
+    return wanted && (!typed || std::string_view(type) == PCFIELDSPLIT);
+  }
+
+  /// Copies `matrix` (its lower triangle for SymmetricLower) into PETSc's matrix, made on
+  /// the first call and rebuilt only if the pattern changes. On the same pattern the
+  /// values go straight into PETSc's arrays (petsc::ValueMap), with no copy of the
+  /// matrix in between.
   void copy(const assembly::SparseMatrix& matrix) {
     if (distributed_) {
       copy_distributed(matrix);
       return;
     }
-    RowMatrix rows;
-    if (storage_ == MatrixStorage::SymmetricLower) {
-      const assembly::SparseMatrix strict = matrix.triangularView<Eigen::StrictlyLower>();
-      assembly::SparseMatrix full = matrix;
-      full += assembly::SparseMatrix(strict.transpose());
-      rows = in_frames(full);
-    } else {
-      rows = in_frames(matrix);
-    }
-    if (lay_out_nodes(rows.rows()))
-      rows = layout_.embed(rows, petsc::mean_absolute_diagonal(rows, n_first_));
-    rows.makeCompressed();
-    const auto n = static_cast<PetscInt>(rows.rows());
-    const bool same_pattern = matrix_ && has_copied_pattern(rows);
-    if (same_pattern) {
-      PetscScalar* values = nullptr;
-      MatSeqAIJGetArray(matrix_, &values);
-      std::copy(rows.valuePtr(), rows.valuePtr() + rows.nonZeros(), values);
-      MatSeqAIJRestoreArray(matrix_, &values);
+    if (!(matrix_ && input_pattern_.matches(matrix)) && !make_sequential(matrix)) return;
+    if (nest_) {
+      nest_->fill(matrix); // A alone (take_saddle_point_blocks)
       return;
     }
+    PetscScalar* values = nullptr;
+    MatSeqAIJGetArray(matrix_, &values);
+    value_map_.fill(matrix, std::span<Real>(values, output_nonzeros_));
+    MatSeqAIJRestoreArray(matrix_, &values); // raises the state: the PC sets up anew
+  }
+
+  /// The nest as the solver's matrix, with plain vectors of `n` rows (not the nest's
+  /// VECNEST: the rest of the solver reads and writes them as arrays).
+  bool adopt_nest(const assembly::SparseMatrix& matrix, Index n) {
+    matrix_ = nest_->matrix();
+    PetscObjectReference(reinterpret_cast<PetscObject>(matrix_));
+    VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(n), &rhs_);
+    VecDuplicate(rhs_, &solution_);
+    input_pattern_ = petsc::InputPattern(matrix);
+    return true;
+  }
+  bool fail_nest() {
+    nest_.reset();
+    return false;
+  }
+
+  /// PETSc's sequential matrix (one AIJ, or the saddle point's nest) with the pattern of
+  /// P Qᵀ K Q Pᵀ for K = `matrix`, its values not yet set; false if PETSc refused.
+  bool make_sequential(const assembly::SparseMatrix& matrix) {
+    value_map_ = {};
+    input_pattern_ = {};
+    nest_.reset();
     if (matrix_) MatDestroy(&matrix_);
     if (rhs_) VecDestroy(&rhs_);
     if (solution_) VecDestroy(&solution_);
-    pattern_outer_.assign(rows.outerIndexPtr(), rows.outerIndexPtr() + n + 1);
-    pattern_inner_.assign(rows.innerIndexPtr(), rows.innerIndexPtr() + rows.nonZeros());
-    // The CSR arrays are copied into the matrix (MatCreateSeqAIJWithArrays would
-    // keep pointers into `rows`).
+    const bool lower_only = storage_ == MatrixStorage::SymmetricLower;
+    const bool blocks = coupling_.rows() > 0; // take_saddle_point_blocks: `matrix` is A
+    const Index n_rows = matrix.rows() + (blocks ? coupling_.rows() : 0);
+    if (!frames_.empty() && frame_matrix_.rows() != matrix.rows())
+      frame_matrix_ = assembly::frame_matrix(frames_, matrix.rows());
+    const assembly::SparseMatrix no_frames;
+    const assembly::SparseMatrix& frames = frames_.empty() ? no_frames : frame_matrix_;
+    lay_out_nodes(n_rows);
+    if (blocks) {
+      // The velocity block's own layout: the same rows as the saddle point's layout gives
+      // the velocity (they depend on the velocity's nodes alone), no pressure rows.
+      const petsc::NodeBlockLayout velocity_layout =
+          layout_.empty() ? petsc::NodeBlockLayout()
+                          : petsc::NodeBlockLayout(components_, dof_of_velocity_, matrix.rows());
+      nest_ = std::make_unique<petsc::SaddlePointNest>();
+      if (!nest_->build_from_blocks(matrix, coupling_, pressure_block_, frames, velocity_layout,
+                                    layout_.empty() ? 1 : layout_.components()))
+        return fail_nest();
+      return adopt_nest(matrix, layout_.empty() ? n_rows : layout_.n_embedded());
+    }
+    const Index n_velocity = n_first_ > 0 ? n_first_ : n_rows;
+    const petsc::CsrPattern pattern = petsc::solved_pattern(matrix, lower_only, frames, layout_);
+    const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
+    // MatSeqAIJSetPreallocationCSR copies the CSR arrays into the matrix.
+    static_assert(std::is_same_v<PetscInt, Index>, "PETSc's CSR indices are formflow's");
     if (MatCreate(PETSC_COMM_SELF, &matrix_) != 0 || MatSetSizes(matrix_, n, n, n, n) != 0 ||
         MatSetType(matrix_, MATSEQAIJ) != 0 ||
-        MatSeqAIJSetPreallocationCSR(matrix_, pattern_outer_.data(), pattern_inner_.data(),
-                                     rows.valuePtr()) != 0) {
+        MatSeqAIJSetPreallocationCSR(matrix_, pattern.outer.data(), pattern.inner.data(),
+                                     nullptr) != 0) {
       if (matrix_) MatDestroy(&matrix_);
-      return;
+      return false;
     }
-    if (storage_ == MatrixStorage::SymmetricLower) {
+    if (lower_only) {
       MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE);
       MatSetOption(matrix_, MAT_SPD, PETSC_TRUE);
     }
     MatCreateVecs(matrix_, &solution_, &rhs_);
+    value_map_ = petsc::ValueMap(matrix, lower_only, frames, layout_, pattern.outer, pattern.inner,
+                                 n_velocity);
+    output_nonzeros_ = pattern.inner.size();
+    input_pattern_ = petsc::InputPattern(matrix);
+    return true;
   }
 
   /// A distributed run (issue 20; app/main.cpp said so, and PETSC_COMM_WORLD has more
@@ -456,9 +515,7 @@ private:
     }
     const assembly::SparseMatrix& in_frames = frames_.empty() ? given : rotated;
     assembly::SparseMatrix laid_out;
-    if (!layout_.empty())
-      laid_out = petsc::embedded_share(layout_, in_frames, n_first_,
-                                       petsc::mean_absolute_diagonal(in_frames, n_first_));
+    if (!layout_.empty()) laid_out = petsc::embedded_share(layout_, in_frames, n_first_);
     const assembly::SparseMatrix& matrix = layout_.empty() ? in_frames : laid_out;
     const auto n = static_cast<PetscInt>(matrix.rows());
     const bool symmetric_lower = storage_ == MatrixStorage::SymmetricLower;
@@ -547,7 +604,12 @@ private:
   Mat matrix_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
-  std::vector<PetscInt> pattern_outer_, pattern_inner_;
+  petsc::ValueMap value_map_;                        ///< sequential: where PETSc's values come from
+  petsc::InputPattern input_pattern_;                ///< sequential: the pattern of the last copy
+  std::unique_ptr<petsc::SaddlePointNest> nest_;     ///< sequential: the saddle point's blocks
+  assembly::SparseMatrix coupling_, pressure_block_; ///< take_saddle_point_blocks' B and C
+  std::size_t output_nonzeros_ = 0;                  ///< sequential: the values of matrix_
+  std::vector<PetscInt> pattern_outer_, pattern_inner_; ///< distributed: the share's pattern
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
   std::vector<PetscInt> petsc_index_; ///< distributed: solved row (free or laid out) → PETSc's
   std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
