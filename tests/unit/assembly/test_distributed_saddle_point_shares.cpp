@@ -70,7 +70,7 @@ SaddleShare saddle_share(const mesh::Mesh<2>& mesh, Real d, const Distribution& 
   EXPECT_TRUE(multipliers.has_global_pressure());
   LinearSystem velocity = problem.plan().make_system();
   problem.assemble(&w, velocity);
-  SaddlePointSystem<2> saddle(problem, multipliers, velocity);
+  SaddlePointSystem<2> saddle(problem, multipliers);
   saddle.fill_matrix(velocity);
   VectorX pressure(saddle.n_pressure());
   for (Index q = 0; q < pressure.size(); ++q) pressure[q] = std::sin(1.3 * static_cast<Real>(q));
