@@ -142,10 +142,18 @@ coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, P
       solvers::SaddlePointSolve<dim> saddle(nonlinear, linear);
       outcome = solvers::secant_iteration(nonlinear, saddle, control, {}, level_start);
     } else {
+      // On several ranks CHOLMOD cannot take a rank's share: the case's back-end (PETSc),
+      // direct MUMPS Cholesky. The run's PETSc options (the case's and the command line's)
+      // are the saddle point's: this level's solver reads only -coarse_* ones, and leaves the
+      // check for unread options to the fine solve.
+      const bool condensed = loop == CoarseLoop::CondensedNewton;
+      const bool distributed = settings.distribution.distributed();
       const solvers::LinearSolverKind kind =
-          loop == CoarseLoop::CondensedNewton ? solvers::LinearSolverKind::Cholmod : plan.linear;
-      auto solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower,
-                                                case_.solver.petsc_options);
+          condensed && !distributed ? solvers::LinearSolverKind::Cholmod : plan.linear;
+      auto solver =
+          solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower,
+                                      condensed ? std::string() : case_.solver.petsc_options);
+      if (condensed && distributed) solver->set_options_prefix("coarse_");
       outcome = solvers::newton_iteration(nonlinear, *solver, control, {}, times, level_start);
     }
     start.mesh_sizes.push_back(spec.size);

@@ -70,12 +70,20 @@ void check_distributed(const io::Case& case_) {
       plan.loop == solvers::LoopKind::AugmentedNewton)
     return;
   if (plan.loop == solvers::LoopKind::SaddlePointSecant) {
-    if (case_.formulation.discontinuous == assembly::DiscontinuousPressure::SaddlePoint)
-      refuse("formulation.discontinuous_pressure",
-             "condenses the pressure only (no saddle point yet)",
-             "set formulation.discontinuous_pressure = \"condensed\", or run as one process");
-    refuse("formulation.pressure", "condenses the pressure only (no saddle point yet)",
-           "set formulation.pressure = \"P1disc\" or \"P0\", or run as one process");
+    // A discontinuous pressure kept as a saddle point runs distributed: each pressure dof
+    // is one cell's, so one rank's (assembly/saddle_point_system.hpp). Taylor–Hood's
+    // vertex pressure couples the ranks' cells and has no distributed pin yet.
+    if (case_.formulation.discontinuous != assembly::DiscontinuousPressure::SaddlePoint)
+      refuse("formulation.pressure", "has no Taylor–Hood saddle point yet",
+             "set formulation.pressure = \"P1disc\" or \"P0\" (with "
+             "formulation.discontinuous_pressure = \"saddle_point\" for the iterative path), "
+             "or run as one process");
+    // Contact multipliers (d_N = 0) take Uzawa steps around the saddle point, which read
+    // every Γ3 point's weight: not summed over the ranks yet.
+    if (plan.shape.exact_contact)
+      refuse("penalty.dN", "serves a penalised contact only (d_N > 0: no Uzawa steps yet)",
+             "give penalty.dN a positive value, or run as one process");
+    return;
   }
   refuse("penalty.d", "serves penalised constraints only (d > 0, d_N > 0: no Uzawa steps yet)",
          "give penalty.d and penalty.dN positive values, or run as one process");

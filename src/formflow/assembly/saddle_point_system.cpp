@@ -30,37 +30,54 @@ SaddlePointSystem<dim>::SaddlePointSystem(const FormingProblem<dim>& problem,
   FF_ASSERT(multipliers.has_global_pressure(), "the saddle-point system is for a global pressure");
   const auto& mesh = problem.mesh();
   const ScatterPlan& plan = problem.plan();
+  const Discretisation<dim>& discretisation = problem.discretisation();
+  // A distributed run (issue 20): B, M and the pressure rows' loads of this rank's own
+  // cells only, its share of the saddle point as A is the velocity's (the ranks' shares
+  // add up to the system). A discontinuous pressure dof is one cell's, so one rank's.
+  distributed_ = discretisation.distribution().distributed();
+  FF_ASSERT(!distributed_ || fem::is_discontinuous(multipliers.pressure_space()),
+            "a distributed saddle point needs a discontinuous pressure (app/distributed_run)");
+  // What every rank must agree on, from every cell (the same numbers on each, no message):
+  // Bᵀ1 on the free dofs and B's largest entry (whether the constant pressure is a null
+  // mode) and the pressure weights ∫ ψ_i dx (the zero-mean shift).
+  constant_ = multipliers.constant_pressure();
+  VectorX constant_work = VectorX::Zero(n_velocity_);
+  pressure_weights_ = VectorX::Zero(n_pressure_);
+  Real largest = 0;
   Triplets free_entries, prescribed_entries, mass_entries;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     const MatrixX& divergence = multipliers.cell_divergence(cell);
     const MatrixX& mass = multipliers.cell_mass(cell);
     const auto pressure_dofs = multipliers.cell_pressure_dofs(cell);
+    const bool own = discretisation.assembles(cell);
     for (Index i = 0; i < divergence.rows(); ++i) {
       for (int a = 0; a < mesh.nodes_per_cell(); ++a)
         for (int k = 0; k < dim; ++k) {
           const Index dof = fem::dof_of<dim>(mesh.cells(a, cell), k);
           const Real value = divergence(i, a * dim + k);
-          if (const Index row = plan.free_index(dof); row >= 0)
-            free_entries.emplace_back(pressure_dofs[i], row, value);
-          else
+          if (const Index row = plan.free_index(dof); row >= 0) {
+            constant_work[row] += value * constant_[pressure_dofs[i]];
+            largest = std::max(largest, std::abs(value));
+            if (own) free_entries.emplace_back(pressure_dofs[i], row, value);
+          } else if (own) {
             prescribed_entries.emplace_back(pressure_dofs[i], dof, value);
+          }
         }
-      for (Index j = 0; j < mass.cols(); ++j)
-        mass_entries.emplace_back(pressure_dofs[i], pressure_dofs[j], mass(i, j));
+      for (Index j = 0; j < mass.cols(); ++j) {
+        pressure_weights_[pressure_dofs[i]] += mass(i, j) * constant_[pressure_dofs[j]];
+        if (own) mass_entries.emplace_back(pressure_dofs[i], pressure_dofs[j], mass(i, j));
+      }
     }
   }
   divergence_free_ = from_triplets(n_pressure_, n_velocity_, free_entries);
   divergence_prescribed_ = from_triplets(n_pressure_, problem.n_dofs(), prescribed_entries);
   mass_ = from_triplets(n_pressure_, n_pressure_, mass_entries);
-  constant_ = multipliers.constant_pressure();
-  pressure_weights_ = mass_ * constant_; // ∫ ψ_i · 1 dx
 
   // The constant pressure is a null mode iff Bᵀ 1 = 0 on the free dofs (d = 0 only).
-  const VectorX constant_work = divergence_free_.transpose() * constant_;
-  const Real largest =
-      Eigen::Map<const VectorX>(divergence_free_.valuePtr(), divergence_free_.nonZeros())
-          .lpNorm<Eigen::Infinity>();
   pinned_ = d_ == 0 && constant_work.lpNorm<Eigen::Infinity>() <= 1e-10 * largest;
+  // The pin's identity entry belongs to the rank of the pinned dof's cell (cell 0 holds a
+  // discontinuous pressure's dof 0): added once over the ranks.
+  pin_here_ = pinned_ && (!distributed_ || discretisation.assembles(0));
 }
 
 template <int dim> void SaddlePointSystem<dim>::build_whole_matrix(const SparseMatrix& lower) {
@@ -84,8 +101,15 @@ template <int dim> void SaddlePointSystem<dim>::build_whole_matrix(const SparseM
     for (Index column = 0; column < mass_.outerSize(); ++column)
       for (SparseMatrix::InnerIterator it(mass_, column); it; ++it)
         fixed.emplace_back(n_velocity_ + it.row(), n_velocity_ + column, -d_ * it.value());
-  if (pinned_) fixed.emplace_back(n_velocity_, n_velocity_, 1.0);
+  if (pin_here_) fixed.emplace_back(n_velocity_, n_velocity_, 1.0);
   for (const auto& entry : fixed) entries.emplace_back(entry.row(), entry.col(), 0.0);
+  // Distributed with d = 0: a structural zero on the diagonal of the own cells' pressure
+  // rows, so that PETSc's numbering gives each pressure row to its cell's rank (a row
+  // belongs to the lowest rank whose share has its diagonal).
+  if (distributed_ && d_ == 0)
+    for (const Index cell : problem_.discretisation().assembled_cells())
+      for (const Index dof : multipliers_.cell_pressure_dofs(cell))
+        entries.emplace_back(n_velocity_ + dof, n_velocity_ + dof, 0.0);
   const Index size = n_velocity_ + n_pressure_;
   matrix_ = from_triplets(size, size, entries);
 
@@ -110,7 +134,7 @@ template <int dim> SparseMatrix SaddlePointSystem<dim>::coupling() const {
 template <int dim> SparseMatrix SaddlePointSystem<dim>::pressure_block() const {
   SparseMatrix block(n_pressure_, n_pressure_);
   if (d_ > 0) block = -d_ * mass_;
-  if (pinned_) block.coeffRef(0, 0) = 1.0;
+  if (pin_here_) block.coeffRef(0, 0) = 1.0;
   block.makeCompressed();
   return block;
 }
@@ -171,7 +195,9 @@ template <int dim> Index SaddlePointSystem<dim>::pressure_block_size() const {
 
 template <int dim> SparseMatrix SaddlePointSystem<dim>::schur_preconditioner() const {
   Triplets entries;
-  for (Index cell = 0; cell < problem_.mesh().n_cells(); ++cell) {
+  // Own cells only (the viscosities are recorded where a cell is assembled): each cell
+  // block is on its pressure dofs' rank, the pin on the rank that has it in the matrix.
+  for (const Index cell : problem_.discretisation().assembled_cells()) {
     const MatrixX block = multipliers_.cell_viscous_mass(cell) + d_ * multipliers_.cell_mass(cell);
     const auto dofs = multipliers_.cell_pressure_dofs(cell);
     for (Index i = 0; i < block.rows(); ++i)
@@ -179,7 +205,7 @@ template <int dim> SparseMatrix SaddlePointSystem<dim>::schur_preconditioner() c
         if (!pinned_ || (dofs[i] != 0 && dofs[j] != 0))
           entries.emplace_back(dofs[i], dofs[j], -block(i, j));
   }
-  if (pinned_) entries.emplace_back(0, 0, 1.0);
+  if (pin_here_) entries.emplace_back(0, 0, 1.0);
   return from_triplets(n_pressure_, n_pressure_, entries);
 }
 

@@ -27,6 +27,11 @@ namespace formflow::assembly {
 /// coefficient) is pinned (row and column replaced by the identity) and every
 /// solution is shifted to zero mean, ∫ p dx = 0.
 /// The benchmark has free surfaces and Γ3 is not prescribed: no pin there.
+///
+/// In a distributed run (a discontinuous pressure only) the matrix and the right-hand
+/// side are this rank's share: A's share, and B, Bᵀ, −dM and the pressure rows' loads of
+/// the own cells (assembled_cells); the pin, the null-mode decision and the zero-mean
+/// shift are taken from every cell alike on every rank.
 template <int dim> class SaddlePointSystem {
 public:
   /// `multipliers` must have a global pressure.
@@ -77,6 +82,8 @@ private:
   Index n_velocity_ = 0, n_pressure_ = 0;
   Real d_ = 0.0;
   bool pinned_ = false;
+  bool distributed_ = false;     ///< this rank's share: own cells' B, M and loads (issue 20)
+  bool pin_here_ = false;        ///< the pin's identity entry is in this rank's share
   SparseMatrix divergence_free_; ///< B on the free velocity dofs, n_p × n_free
   SparseMatrix
       divergence_prescribed_; ///< B on the prescribed dofs, n_p × n_dofs (other columns empty)

@@ -103,6 +103,13 @@ public:
     static_cast<void>(components);
     static_cast<void>(dof_of_velocity);
   }
+  /// A helper's solver in a run whose own solver comes later (a distributed run's coarse
+  /// levels, app/coarse_start.cpp): it reads only the options under `prefix` (PETSc's
+  /// options prefix: "coarse_" reads -coarse_ksp_type, ...), so the run's options (the
+  /// saddle point's fieldsplit ones) do not reach it, and it leaves the check for unread
+  /// options to the run's own solver. Call before analyze. Back-ends without options
+  /// ignore it.
+  virtual void set_options_prefix(const std::string& prefix) { static_cast<void>(prefix); }
   /// The saddle point whose fields set_fields gave, as blocks [A Bᵀ; B C] rather than one
   /// matrix: `coupling` B (n_p × n_first) and `pressure_block` C (n_p × n_p, both
   /// triangles) stay fixed for the solver's life. A back-end that keeps the blocks apart

@@ -5,6 +5,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/petsc/distributed_numbering.hpp"
+#include "formflow/solvers/petsc/distributed_saddle_point.hpp"
 #include "formflow/solvers/petsc/krylov_start.hpp"
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
@@ -38,6 +39,7 @@ public:
     if (ksp_) KSPDestroy(&ksp_);
     for (IS& field : fields_)
       if (field) ISDestroy(&field);
+    distributed_fields_.reset();
     if (matrix_) MatDestroy(&matrix_);
     if (schur_matrix_) MatDestroy(&schur_matrix_);
     if (rhs_) VecDestroy(&rhs_);
@@ -81,8 +83,10 @@ public:
       if (splits == PETSC_ERR_ARG_UNKNOWN_TYPE || splits == PETSC_ERR_ARG_WRONG)
         refuse(capture.message(), "give a type PETSc 3.18 has for that split");
       if (splits != 0) return false;
-      krylov_start_.inexact_allowed(ksp_);       // reads -formflow_inexact_steps before the check
-      options_scope_.refuse_unused(options_key); // what nothing read by now
+      krylov_start_.inexact_allowed(ksp_); // reads -formflow_inexact_steps before the check
+      // What nothing read by now; a helper's solver (set_options_prefix) leaves it to the
+      // run's own one, which reads the options meant for it later.
+      if (options_prefix_.empty()) options_scope_.refuse_unused(options_key);
     }
     if (splits != 0) return false;
     PCFailedReason failed = PC_NOERROR;
@@ -106,13 +110,15 @@ public:
     petsc::ErrorCapture capture;
     const auto n = static_cast<PetscInt>(rhs.size());
     if (distributed_ && whole) {
-      load_whole_rhs(rhs);
+      write_owned_rows(rhs_, in_solved_unknowns(rhs));
     } else if (distributed_) {
       // The rank's rhs is its own cells' loads: PETSc's stash sends each entry to the
-      // rank that owns its row, where they add up.
+      // rank that owns its row, where they add up. In the frames: Qᵀ of a share is the
+      // share of Qᵀ b (Q is node-local).
+      const VectorX share = in_solved_unknowns(rhs);
       VecSet(rhs_, 0.0);
-      for (PetscInt i = 0; i < n; ++i)
-        if (rhs[i] != 0.0) VecSetValue(rhs_, petsc_index_[i], rhs[i], ADD_VALUES);
+      for (Index i = 0; i < share.size(); ++i)
+        if (share[i] != 0.0) VecSetValue(rhs_, petsc_index_[i], share[i], ADD_VALUES);
       VecAssemblyBegin(rhs_);
       VecAssemblyEnd(rhs_);
     } else {
@@ -121,8 +127,13 @@ public:
     // A guess (set_initial_guess), also in the unknowns PETSc solves for. Not for a
     // direct solve: PETSc's preonly refuses a nonzero initial guess.
     std::optional<VectorX> guess = krylov_start_.take_guess(rhs.size());
-    const bool guessed = guess && !distributed_ && petsc::is_iterative(ksp_);
-    if (guessed) write(solution_, in_solved_unknowns(std::move(*guess)));
+    // Distributed: the guess is whole on every rank (the replicated velocity), and each
+    // rank writes its own rows.
+    const bool guessed = guess && petsc::is_iterative(ksp_);
+    if (guessed && distributed_)
+      write_owned_rows(solution_, in_solved_unknowns(std::move(*guess)));
+    else if (guessed)
+      write(solution_, in_solved_unknowns(std::move(*guess)));
     KSPSetInitialGuessNonzero(ksp_, guessed ? PETSC_TRUE : PETSC_FALSE);
     krylov_start_.apply_tolerance(ksp_, matrix_, rhs_, solution_, guessed);
     if (KSPSolve(ksp_, rhs_, solution_) != 0) return false;
@@ -141,8 +152,13 @@ public:
       VecScatterBegin(to_all_, solution_, all_, INSERT_VALUES, SCATTER_FORWARD);
       VecScatterEnd(to_all_, solution_, all_, INSERT_VALUES, SCATTER_FORWARD);
       VecGetArrayRead(all_, &result);
-      for (PetscInt i = 0; i < n; ++i) solution[i] = result[petsc_index_[i]];
+      VectorX solved(static_cast<Index>(petsc_index_.size())); // laid out, if it is
+      for (Index i = 0; i < solved.size(); ++i) solved[i] = result[petsc_index_[i]];
       VecRestoreArrayRead(all_, &result);
+      solution = layout_.empty() ? std::move(solved)
+                                 : layout_.restrict(std::span<const Real>(
+                                       solved.data(), static_cast<std::size_t>(solved.size())));
+      assembly::from_frames(frames_, solution); // x = Q y
       return true;
     }
     VecGetArrayRead(solution_, &result);
@@ -176,30 +192,34 @@ public:
   }
 
   void set_schur_preconditioner(const assembly::SparseMatrix& matrix, Index cell_block) override {
-    if (distributed_) return; // a distributed saddle point is refused (app/distributed_run)
+    if (distributed_) {
+      // The rank's share (its own cells' blocks), copied once the saddle point's rows
+      // are numbered (copy_distributed).
+      schur_block_ = cell_block;
+      schur_share_ = matrix;
+      schur_share_.makeCompressed();
+      return;
+    }
     petsc::ErrorCapture capture;
     schur_block_ = cell_block;
     petsc::copy_schur_matrix(matrix, cell_block, &schur_matrix_);
   }
 
   void set_local_frames(std::vector<assembly::LocalFrame> frames) override {
-    if (distributed_) return; // the saddle point, their one user, is refused on several ranks
     frames_ = std::move(frames);
     frame_matrix_ = {};
   }
 
-  void set_initial_guess(VectorX guess) override {
-    if (distributed_) return; // the saddle point, its one user, is refused on several ranks
-    krylov_start_.set_guess(std::move(guess));
-  }
+  void set_initial_guess(VectorX guess) override { krylov_start_.set_guess(std::move(guess)); }
 
   bool set_solve_tolerance(Real reduction) override {
     krylov_start_.ask_reduction(reduction);
     return reduction > 0 && krylov_start_.inexact_allowed(ksp_);
   }
 
+  void set_options_prefix(const std::string& prefix) override { options_prefix_ = prefix; }
+
   void set_velocity_nodes(int components, std::vector<Index> dof_of_velocity) override {
-    if (distributed_) return; // the saddle point, their one user, is refused on several ranks
     components_ = components;
     dof_of_velocity_ = std::move(dof_of_velocity);
   }
@@ -231,6 +251,7 @@ private:
   /// The KSP with formflow's defaults, then the options database over them.
   bool make_ksp(petsc::ErrorCapture& capture) {
     if (KSPCreate(distributed_ ? PETSC_COMM_WORLD : PETSC_COMM_SELF, &ksp_) != 0) return false;
+    if (!options_prefix_.empty()) KSPSetOptionsPrefix(ksp_, options_prefix_.c_str());
     PC preconditioner = nullptr;
     KSPGetPC(ksp_, &preconditioner);
     KSPSetType(ksp_, KSPPREONLY);
@@ -266,6 +287,7 @@ private:
              "this loop's systems have the velocity only",
              "use fieldsplit with formulation.type = \"mixed\" and formulation.pressure = "
              "\"Q1\"; for the velocity systems try -pc_type gamg or the default");
+    if (distributed_) return split_distributed_fields(preconditioner);
     const auto n_first =
         static_cast<PetscInt>(layout_.empty() ? n_first_ : layout_.n_velocity_embedded());
     ISCreateStride(PETSC_COMM_SELF, n_first, 0, 1, &fields_[0]);
@@ -301,6 +323,31 @@ private:
     }
     PCFieldSplitSetIS(preconditioner, "u", fields_[0]);
     PCFieldSplitSetIS(preconditioner, "p", fields_[1]);
+    if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
+    return true;
+  }
+
+  /// split_fields on several ranks: the splits' index sets in PETSc's distributed rows
+  /// (each rank its own), the modes as distributed vectors and the Schur matrix as
+  /// MPIAIJ, all made by copy_distributed.
+  bool split_distributed_fields(PC preconditioner) {
+    FF_ASSERT(distributed_fields_, "the fields are numbered at the first copy");
+    if (!near_null_space_.empty()) {
+      std::vector<VectorX> modes = near_null_space_;
+      for (VectorX& mode : modes) {
+        VectorX padded = VectorX::Zero(layout_.empty() ? static_cast<Index>(petsc_index_.size())
+                                                       : layout_.n_rows());
+        padded.head(n_first_) = mode;
+        // y = Qᵀ x laid out, as the matrix (zero on the unused slots).
+        mode = in_solved_unknowns(std::move(padded)).head(n_first_solved());
+      }
+      petsc::attach_distributed_near_null_space(modes, *distributed_fields_);
+    }
+    // Laid out node by node: each rank owns whole nodes (embedded_share), so the split's
+    // index set has the block size that systems BoomerAMG reads.
+    if (!layout_.empty()) ISSetBlockSize(distributed_fields_->velocity(), layout_.components());
+    PCFieldSplitSetIS(preconditioner, "u", distributed_fields_->velocity());
+    PCFieldSplitSetIS(preconditioner, "p", distributed_fields_->pressure());
     if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
     return true;
   }
@@ -447,7 +494,29 @@ private:
   /// entries (MatSetPreallocationCOO: off-rank rows go to their owners); every call then
   /// hands the values over with MatSetValuesCOO, which sums the ranks' duplicates. No
   /// rank holds more than its share and its own rows.
-  void copy_distributed(const assembly::SparseMatrix& matrix) {
+  void copy_distributed(const assembly::SparseMatrix& given) {
+    // In the contact nodes' frames (set_local_frames): the share of Qᵀ K Q.
+    assembly::SparseMatrix rotated;
+    if (!frames_.empty()) {
+      if (frame_matrix_.rows() != given.rows())
+        frame_matrix_ = assembly::frame_matrix(frames_, given.rows());
+      rotated = petsc::rotated_share(given, frame_matrix_);
+    }
+    // Node by node (as lay_out_nodes serially, where the iterative default serves: the
+    // Schur matrix's share is given): the share moved to the layout's rows.
+    if (!layout_decided_) {
+      layout_decided_ = true;
+      PetscBool wanted = schur_block_ > 0 && schur_share_.rows() > 0 ? PETSC_TRUE : PETSC_FALSE;
+      PetscBool given_option = PETSC_FALSE;
+      PetscOptionsGetBool(nullptr, nullptr, "-formflow_velocity_node_blocks", &wanted,
+                          &given_option);
+      if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
+        layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, given.rows());
+    }
+    const assembly::SparseMatrix& in_frames = frames_.empty() ? given : rotated;
+    assembly::SparseMatrix laid_out;
+    if (!layout_.empty()) laid_out = petsc::embedded_share(layout_, in_frames, n_first_);
+    const assembly::SparseMatrix& matrix = layout_.empty() ? in_frames : laid_out;
     const auto n = static_cast<PetscInt>(matrix.rows());
     const bool symmetric_lower = storage_ == MatrixStorage::SymmetricLower;
     const bool same_pattern = matrix_ && has_copied_pattern(matrix);
@@ -459,6 +528,8 @@ private:
       if (solution_) VecDestroy(&solution_);
       if (to_all_) VecScatterDestroy(&to_all_);
       if (all_) VecDestroy(&all_);
+      if (schur_matrix_) MatDestroy(&schur_matrix_);
+      distributed_fields_.reset();
       pattern_outer_.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + n + 1);
       pattern_inner_.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
       petsc::DistributedNumbering numbering =
@@ -481,23 +552,41 @@ private:
       }
       MatCreateVecs(matrix_, &solution_, &rhs_);
       VecScatterCreateToAll(solution_, &to_all_, &all_);
+      if (n_first_ > 0 && n_first_solved() < n) {
+        // A saddle point: its fields in PETSc's rows (each rank its own).
+        PetscInt low = 0, high = 0;
+        MatGetOwnershipRange(matrix_, &low, &high);
+        distributed_fields_ =
+            std::make_unique<petsc::DistributedFields>(petsc_index_, low, high, n_first_solved());
+      }
     }
     std::vector<PetscScalar> values(coo_source_.size());
     for (std::size_t s = 0; s < values.size(); ++s) values[s] = matrix.valuePtr()[coo_source_[s]];
     if (MatSetValuesCOO(matrix_, values.data(), INSERT_VALUES) != 0) MatDestroy(&matrix_);
+    // The Schur matrix's share given for this step (set_schur_preconditioner).
+    if (distributed_fields_ && schur_share_.rows() == n - n_first_solved()) {
+      petsc::copy_distributed_schur_matrix(schur_share_, *distributed_fields_, schur_block_,
+                                           &schur_matrix_);
+      schur_share_ = {};
+    }
   }
 
-  /// Distributed: a right-hand side that every rank holds whole (Newton's residual, the
-  /// GMRES vectors): each rank writes its own rows, no message sent.
-  void load_whole_rhs(const VectorX& rhs) {
+  /// The velocity rows PETSc solves for: the free ones, or the layout's.
+  Index n_first_solved() const {
+    return layout_.empty() ? n_first_ : layout_.n_velocity_embedded();
+  }
+
+  /// Distributed: a vector that every rank holds whole (Newton's residual, the GMRES
+  /// vectors, a Krylov guess) into `target`: each rank writes its own rows, no message sent.
+  void write_owned_rows(Vec target, const VectorX& whole) const {
     PetscInt low = 0, high = 0;
-    VecGetOwnershipRange(rhs_, &low, &high);
+    VecGetOwnershipRange(target, &low, &high);
     PetscScalar* values = nullptr;
-    VecGetArray(rhs_, &values);
-    for (Index i = 0; i < rhs.size(); ++i)
+    VecGetArray(target, &values);
+    for (Index i = 0; i < whole.size(); ++i)
       if (const PetscInt row = petsc_index_[i]; row >= low && row < high)
-        values[row - low] = rhs[i];
-    VecRestoreArray(rhs_, &values);
+        values[row - low] = whole[i];
+    VecRestoreArray(target, &values);
   }
 
   [[noreturn]] void refuse(const std::string& message, const std::string& hint) const {
@@ -522,14 +611,16 @@ private:
   std::size_t output_nonzeros_ = 0;                  ///< sequential: the values of matrix_
   std::vector<PetscInt> pattern_outer_, pattern_inner_; ///< distributed: the share's pattern
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
-  std::vector<PetscInt> petsc_index_; ///< distributed: free dof → PETSc's row
+  std::vector<PetscInt> petsc_index_; ///< distributed: solved row (free or laid out) → PETSc's
   std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
   VecScatter to_all_ = nullptr;       ///< distributed: the solution to every rank
   Vec all_ = nullptr;
-  Index n_first_ = 0;                        ///< velocity dofs of a saddle point (set_fields)
-  std::vector<VectorX> near_null_space_;     ///< the velocity block's rigid-body modes
-  IS fields_[2] = {nullptr, nullptr};        ///< fieldsplit's "u" and "p"
-  Mat schur_matrix_ = nullptr;               ///< the Schur complement's preconditioning matrix
+  Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)
+  std::vector<VectorX> near_null_space_; ///< the velocity block's rigid-body modes
+  IS fields_[2] = {nullptr, nullptr};    ///< fieldsplit's "u" and "p"
+  Mat schur_matrix_ = nullptr;           ///< the Schur complement's preconditioning matrix
+  assembly::SparseMatrix schur_share_;   ///< distributed: its share, until copied
+  std::unique_ptr<petsc::DistributedFields> distributed_fields_; ///< distributed saddle point
   Index schur_block_ = 0;                    ///< its cell block size (0: not block diagonal)
   std::vector<assembly::LocalFrame> frames_; ///< PETSc solves for y, x = Q y (set_local_frames)
   assembly::SparseMatrix frame_matrix_;      ///< Q, made at the first copy
@@ -540,6 +631,7 @@ private:
   petsc::DefaultOptions defaults_; ///< the saddle-point defaults in the database
   long iterations_ = 0;
   bool checked_unused_ = false;
+  std::string options_prefix_;      ///< a helper's solver: its options' prefix (set_options_prefix)
   petsc::KrylovStart krylov_start_; ///< the next solve's guess and tolerance
 };
 
