@@ -28,6 +28,8 @@ app::Simulation run_case(const std::string& path, Real tolerance, std::vector<io
                          bool estimate_condition = false) {
   edits.insert(edits.begin(), {{"formulation.type", "mixed"},
                                {"solver.method", "secant"},
+                               // the plain loop: the same iterates as the condensed one
+                               {"solver.acceleration", "none"},
                                {"solver.tolerance", fmt::format("{}", tolerance)}});
   app::Simulation simulation =
       app::simulate(io::load_case(path, std::move(edits)), {}, estimate_condition);
@@ -40,6 +42,8 @@ app::Simulation run(std::vector<io::Override> edits, bool estimate_condition = f
   edits.insert(edits.begin(), {{"formulation.type", "mixed"},
                                {"friction.mu", "0.1"},
                                {"solver.method", "secant"},
+                               // the plain loop: the same iterates as the condensed one
+                               {"solver.acceleration", "none"},
                                {"solver.tolerance", "1e-10"}});
   app::Simulation simulation =
       app::simulate(io::load_case("", std::move(edits)), {}, estimate_condition);

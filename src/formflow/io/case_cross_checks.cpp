@@ -40,11 +40,11 @@ std::string fitting_sizes_hint(const mesh::ChannelGeometry& geometry, Real size)
 
 /// Whether the discontinuous pressure kept as a saddle point, solved by the secant loop
 /// (the 3D iterative path, issue 20), takes solver.acceleration = "anderson" when the key
-/// is not set. Off: the lead decides (docs/benchmarks.md "Anderson acceleration": at
-/// h = 0.125 29 -> 18–19 fine steps, 360 -> 186–252 Krylov iterations, the load within
-/// the stop's reach of δ). On, a case that sets the key keeps its value and the resolved case
-/// (summary.json) records the choice.
-constexpr bool anderson_by_default_on_saddle_point_secant = false;
+/// is not set. On since session 13 (the lead's decision; docs/benchmarks.md "Anderson
+/// acceleration": at h = 1/12 26 -> 17 fine steps, 427 -> 290 Krylov iterations, at h =
+/// 0.125 29 -> 18–19 steps, the load within the stop's reach of δ). A case that sets the
+/// key keeps its value and the resolved case (summary.json) records the choice.
+constexpr bool anderson_by_default_on_saddle_point_secant = true;
 
 } // namespace
 
