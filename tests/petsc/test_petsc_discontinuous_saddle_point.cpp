@@ -128,6 +128,21 @@ TEST(DiscontinuousSaddlePoint, KrylovCountsStayBoundedUnderRefinement) {
   EXPECT_LE(fine, 2 * coarse);
 }
 
+constexpr Real same_iterates_rtol = 1e-12; // FGMRES's -ksp_rtol of both runs compared
+
+/// The paper case at h = 2.5 on the iterative saddle-point path, every step solved to
+/// same_iterates_rtol, with formflow's PETSc `options` added: two such runs that differ
+/// only in how the same system reaches PETSc take the same secant iterates.
+app::Simulation exact_steps_saddle_run(const std::string& options) {
+  return run(
+      {{"mesh.size", "2.5"},
+       {"formulation.discontinuous_pressure", "saddle_point"},
+       {"solver.linear", "petsc"},
+       {"solver.petsc_options",
+        fmt::format("-ksp_rtol {} -formflow_inexact_steps 0", same_iterates_rtol) + options}},
+      /*estimate_condition=*/true);
+}
+
 /// The velocity block laid out node by node (systems BoomerAMG, the default on this
 /// path) or in the free numbering (`-formflow_velocity_node_blocks 0`, scalar BoomerAMG)
 /// is the same system renumbered plus decoupled rows: the same secant iterates, so the
@@ -135,21 +150,12 @@ TEST(DiscontinuousSaddlePoint, KrylovCountsStayBoundedUnderRefinement) {
 /// Every step is solved to rtol (`-formflow_inexact_steps 0`): a loose step's iterate
 /// depends on the preconditioner's path, so only exact steps make the same iterates.
 TEST(DiscontinuousSaddlePoint, TheNodeLayoutIsARenumberingAndCanBeSwitchedOff) {
-  constexpr Real krylov_tolerance = 1e-12; // FGMRES's -ksp_rtol in both runs
-  const auto saddle_run = [&](const std::string& options) {
-    return run(
-        {{"mesh.size", "2.5"},
-         {"formulation.discontinuous_pressure", "saddle_point"},
-         {"solver.linear", "petsc"},
-         {"solver.petsc_options",
-          fmt::format("-ksp_rtol {} -formflow_inexact_steps 0", krylov_tolerance) + options}},
-        /*estimate_condition=*/true);
-  };
-  const app::Simulation laid_out = saddle_run("");
-  const app::Simulation free_numbering = saddle_run(" -formflow_velocity_node_blocks 0");
+  const app::Simulation laid_out = exact_steps_saddle_run("");
+  const app::Simulation free_numbering =
+      exact_steps_saddle_run(" -formflow_velocity_node_blocks 0");
   ASSERT_TRUE(laid_out.reciprocal_condition.has_value());
   // Both runs err by at most rtol/r_s each (r_s the saddle point's reciprocal condition).
-  const Real tolerance = agreement(2 * krylov_tolerance / *laid_out.reciprocal_condition);
+  const Real tolerance = agreement(2 * same_iterates_rtol / *laid_out.reciprocal_condition);
   std::cout << "node layout against free numbering: "
             << relative_difference(laid_out, free_numbering) << " (tolerance " << tolerance
             << ")\n";
@@ -162,21 +168,11 @@ TEST(DiscontinuousSaddlePoint, TheNodeLayoutIsARenumberingAndCanBeSwitchedOff) {
 /// matrix: the same operator and preconditioner, so the same iterates up to the order
 /// of the products' additions.
 TEST(DiscontinuousSaddlePoint, TheFourBlocksAreTheWholeMatrix) {
-  constexpr Real krylov_tolerance = 1e-12; // FGMRES's -ksp_rtol in both runs
-  const auto saddle_run = [&](const std::string& options) {
-    return run(
-        {{"mesh.size", "2.5"},
-         {"formulation.discontinuous_pressure", "saddle_point"},
-         {"solver.linear", "petsc"},
-         {"solver.petsc_options",
-          fmt::format("-ksp_rtol {} -formflow_inexact_steps 0", krylov_tolerance) + options}},
-        /*estimate_condition=*/true);
-  };
-  const app::Simulation blocks = saddle_run("");
-  const app::Simulation whole = saddle_run(" -formflow_saddle_point_nest 0");
+  const app::Simulation blocks = exact_steps_saddle_run("");
+  const app::Simulation whole = exact_steps_saddle_run(" -formflow_saddle_point_nest 0");
   ASSERT_TRUE(blocks.reciprocal_condition.has_value());
   // Both runs err by at most rtol/r_s each (r_s the saddle point's reciprocal condition).
-  const Real tolerance = agreement(2 * krylov_tolerance / *blocks.reciprocal_condition);
+  const Real tolerance = agreement(2 * same_iterates_rtol / *blocks.reciprocal_condition);
   std::cout << "four blocks against the whole matrix: " << relative_difference(blocks, whole)
             << " (tolerance " << tolerance << ")\n";
   EXPECT_LE(relative_difference(blocks, whole), tolerance);
