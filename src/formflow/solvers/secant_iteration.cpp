@@ -81,9 +81,21 @@ constexpr bool mix_loose_steps = true;
 /// The steps that may end the loop keep the own tolerance (today's accuracy): the
 /// final iterate then satisfies the same bound ρ/(1 − ρ) δ against the fixed point as
 /// with exact steps, since that bound needs only the last step exact.
-Real inexact_reduction(Real change, Real previous_change, Real tolerance) {
-  if (change <= 0 || previous_change <= 0) return 0; // the first steps: exact
-  const Real contraction = std::min<Real>(1, change / previous_change);
+/// A step whose change cannot be predicted is loose: the first (its start is a
+/// prolongation from a coarser mesh or a constant-viscosity solve, whose change is the
+/// nonlinearity's or the discretisation's, far above δ) and, with Anderson mixing
+/// (`steady_contraction` false: mixed changes do not shrink at a steady rate), every
+/// step is predicted with the contraction 1: exact once the last change itself is below
+/// the margin. Either way a misjudged loose step costs one more step, never accuracy:
+/// loose steps cannot stop the loop. Measured (docs/benchmarks.md "Loose first steps"):
+/// from the coarse start the first two steps were exact, 35 and 30 Krylov iterations at
+/// h = 0.125 and 57 and 42 at 1 M dofs, against 6–19 loose; with the latch of session 13
+/// (once exact, always exact) 3–4 exact steps still changed by more than δ.
+Real inexact_reduction(Real change, Real previous_change, Real tolerance, bool steady_contraction) {
+  if (change <= 0) return inexact_forcing; // the first step: unpredictable, far from δ
+  const Real contraction = steady_contraction && previous_change > 0
+                               ? std::min<Real>(1, change / previous_change)
+                               : Real(1);
   return contraction * change < exact_margin * tolerance ? 0 : inexact_forcing;
 }
 
@@ -112,15 +124,11 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
   VectorX iterate = outcome.velocity;
   int mixed_columns = 0;
   Real change = 0, previous_change = 0; // the last two relative changes (0: none yet)
-  bool exact_tail = false;              // a step was predicted to land near δ
   for (int iteration = 1; iteration <= control.max_iterations; ++iteration) {
     const auto start_time = std::chrono::steady_clock::now();
     VectorX next;
-    Real reduction = inexact_reduction(change, previous_change, control.tolerance);
-    // Mixed steps do not contract at a steady rate: once the tail was predicted, a ratio
-    // of two mixed changes must not send the loop back to loose steps, which cannot stop it.
-    if (anderson && exact_tail) reduction = 0;
-    if (reduction == 0 && change > 0 && previous_change > 0) exact_tail = true;
+    const Real reduction =
+        inexact_reduction(change, previous_change, control.tolerance, !anderson.has_value());
     const bool loose = lagged.loosen(reduction);
     const LaggedStep step = lagged.solve(&iterate, next);
     if (step.stop) {
