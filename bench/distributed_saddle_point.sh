@@ -8,7 +8,7 @@
 # (scalar BoomerAMG, -formflow_velocity_node_blocks 0), and two ranks with and without it
 # (RUNS, default "np1 np1_scalar np2 np2_scalar", chooses). Prints per run: secant steps, Krylov total and per step (min /
 # median / max), the ram reaction and its difference from the first run, CPU (user + sys
-# of all ranks, one BLAS thread) and the largest rank's peak RSS.
+# of all ranks, one BLAS thread), the wall time and the largest rank's peak RSS.
 #   bench/distributed_saddle_point.sh [H]     (FORMFLOW_BINARY, default build/formflow;
 #                                              MPIEXEC, default mpirun)
 set -eu
@@ -26,7 +26,7 @@ run() { # name, petsc options, launcher words and the binary
   name=$1
   options=$2
   shift 2
-  /usr/bin/time -f "%U %S %M" -o "$work/$name.time" "$@" run -q cases/round-rod-3d.toml \
+  /usr/bin/time -f "%e %U %S %M" -o "$work/$name.time" "$@" run -q cases/round-rod-3d.toml \
     -o "$work/$name" --set mesh.size="$size" --set "solver.petsc_options=$options" \
     --set formulation.type=mixed \
     --set formulation.pressure=P1disc --set formulation.discontinuous_pressure=saddle_point \
@@ -51,7 +51,7 @@ work = sys.argv[1]
 reference = None
 for name in sys.argv[2:]:
     s = json.load(open(f"{work}/{name}/summary.json"))
-    user, system, rss = open(f"{work}/{name}.time").read().split()[-3:]
+    wall, user, system, rss = open(f"{work}/{name}.time").read().split()[-4:]
     steps = s["linear_algebra"]["iterations_per_step"]
     load = s["pressure"]["ram_reaction"]
     reference = reference if reference is not None else load
@@ -59,6 +59,6 @@ for name in sys.argv[2:]:
           f"steps (coarse {s['coarse_iterations']}), Krylov {s['linear_algebra']['iterations']} "
           f"(per step {min(steps)} / {statistics.median(steps):g} / {max(steps)}), ram reaction "
           f"{load:.10f} (rel. diff {abs(load - reference) / abs(reference):.1e}), CPU "
-          f"{float(user) + float(system):.0f} s, peak RSS {int(rss) / 1024:.0f} MiB "
+          f"{float(user) + float(system):.0f} s, wall {float(wall):.1f} s, peak RSS {int(rss) / 1024:.0f} MiB "
           f"(machine not quiet unless said)")
 PY

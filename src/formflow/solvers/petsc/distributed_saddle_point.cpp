@@ -108,43 +108,4 @@ void attach_distributed_near_null_space(const std::vector<VectorX>& modes,
   for (Vec& vector : vectors) VecDestroy(&vector);
 }
 
-assembly::SparseMatrix rotated_share(const assembly::SparseMatrix& share,
-                                     const assembly::SparseMatrix& frame_matrix) {
-  const assembly::SparseMatrix transposed = frame_matrix.transpose();
-  assembly::SparseMatrix rotated = transposed * share * frame_matrix;
-  rotated.makeCompressed();
-  return rotated;
-}
-
-assembly::SparseMatrix embedded_share(const NodeBlockLayout& layout,
-                                      const assembly::SparseMatrix& share, Index n_velocity) {
-  const Index n_rows = layout.n_rows();
-  FF_ASSERT(share.rows() == n_rows && share.cols() == n_rows, "a share of the laid-out system");
-  const int components = layout.components();
-  std::vector<bool> touched(static_cast<std::size_t>(layout.n_velocity_embedded() / components),
-                            false);
-  std::vector<Eigen::Triplet<Real, Index>> entries;
-  entries.reserve(static_cast<std::size_t>(share.nonZeros()) + layout.holes().size());
-  Real diagonal_sum = 0; // the share's velocity diagonal, for the slots' value
-  Index diagonals = 0;
-  for (Index column = 0; column < share.outerSize(); ++column)
-    for (assembly::SparseMatrix::InnerIterator it(share, column); it; ++it) {
-      entries.emplace_back(layout.position(it.row()), layout.position(column), it.value());
-      if (it.row() == column && column < n_velocity) {
-        touched[layout.position(column) / components] = true;
-        diagonal_sum += std::abs(it.value());
-        ++diagonals;
-      }
-    }
-  // The slots' diagonal: the mean |a_ii| of the share's velocity rows (as the serial
-  // layout's), so that they neither dominate nor vanish beside the velocity's.
-  const Real hole = diagonal_sum > 0 ? diagonal_sum / static_cast<Real>(diagonals) : 1.0;
-  for (const Index slot : layout.holes())
-    if (touched[slot / components]) entries.emplace_back(slot, slot, hole);
-  assembly::SparseMatrix result(layout.n_embedded(), layout.n_embedded());
-  result.setFromTriplets(entries.begin(), entries.end());
-  result.makeCompressed();
-  return result;
-}
-
 } // namespace formflow::solvers::petsc

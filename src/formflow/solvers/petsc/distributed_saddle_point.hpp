@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A saddle point solved on several ranks (issue 20, docs/petsc.md "Distributed runs"):
 // its fields, the Schur-complement matrix and the velocity's near-null space in PETSc's
-// distributed rows, and a share turned into the contact nodes' frames.
+// distributed rows.
 #pragma once
 
 #include "formflow/assembly/local_frame.hpp"
@@ -57,21 +57,5 @@ void copy_distributed_schur_matrix(const assembly::SparseMatrix& share,
 /// it to the split's matrix, which GAMG reads).
 void attach_distributed_near_null_space(const std::vector<VectorX>& modes,
                                         const DistributedFields& fields);
-
-/// Qᵀ K Q of a share K (both triangles) for the node-local rotation Q (frame_matrix): a
-/// share's rotation is the rotated matrix's share, since Q acts within each node's
-/// components and a cell that touches a node touches all its free components.
-assembly::SparseMatrix rotated_share(const assembly::SparseMatrix& share,
-                                     const assembly::SparseMatrix& frame_matrix);
-
-/// A share (both triangles, in the free numbering; velocity rows [0, n_velocity)) moved
-/// to the node layout's rows, with a decoupled diagonal (the mean |a_ii| of the share's
-/// velocity rows) in the unused slots of the nodes this share touches only (a node it has
-/// a velocity diagonal of): every rank that touches a node has the diagonals of all its
-/// rows, so the lowest of them owns the whole node (a block of `components` rows, as the
-/// "u" split's block size needs), and the ranks' slot entries add up to a positive
-/// diagonal (a decoupled row all the same).
-assembly::SparseMatrix embedded_share(const NodeBlockLayout& layout,
-                                      const assembly::SparseMatrix& share, Index n_velocity);
 
 } // namespace formflow::solvers::petsc

@@ -343,7 +343,7 @@ private:
       }
       petsc::attach_distributed_near_null_space(modes, *distributed_fields_);
     }
-    // Laid out node by node: each rank owns whole nodes (embedded_share), so the split's
+    // Laid out node by node: each rank owns whole nodes (share_pattern), so the split's
     // index set has the block size that systems BoomerAMG reads.
     if (!layout_.empty()) ISSetBlockSize(distributed_fields_->velocity(), layout_.components());
     PCFieldSplitSetIS(preconditioner, "u", distributed_fields_->velocity());
@@ -370,16 +370,6 @@ private:
         layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, n_rows);
     }
     return !layout_.empty();
-  }
-
-  /// Whether `matrix` (compressed, either storage order) has the pattern of the last
-  /// distributed copy.
-  template <class Matrix> bool has_copied_pattern(const Matrix& matrix) const {
-    const auto n = static_cast<std::size_t>(matrix.outerSize());
-    return pattern_outer_.size() == n + 1 &&
-           std::equal(pattern_outer_.begin(), pattern_outer_.end(), matrix.outerIndexPtr()) &&
-           pattern_inner_.size() == static_cast<std::size_t>(matrix.nonZeros()) &&
-           std::equal(pattern_inner_.begin(), pattern_inner_.end(), matrix.innerIndexPtr());
   }
 
   /// Whether the saddle point goes to PETSc as four blocks (petsc::SaddlePointNest,
@@ -486,24 +476,25 @@ private:
   }
 
   /// A distributed run (issue 20; app/main.cpp said so, and PETSC_COMM_WORLD has more
-  /// than one rank): `matrix` is this rank's share, the entries of its own
+  /// than one rank): `given` is this rank's share, the entries of its own
   /// cells (assembly/discretisation.hpp) in the global free numbering; the ranks' shares
   /// add up to the system. The first call numbers the free dofs so that each rank owns a
   /// contiguous range (a dof belongs to the lowest rank whose cells touch it, i.e. whose
   /// share has its diagonal) and preallocates the MPIAIJ matrix from every rank's
   /// entries (MatSetPreallocationCOO: off-rank rows go to their owners); every call then
   /// hands the values over with MatSetValuesCOO, which sums the ranks' duplicates. No
-  /// rank holds more than its share and its own rows.
+  /// rank holds more than its share and its own rows. As in a sequential run, the share
+  /// goes to the contact nodes' frames and the node layout through a ValueMap made once
+  /// per pattern: each step is one pass over the share's values into the COO values,
+  /// with no rotated or laid-out copy of the share (they cost a rank more time than its
+  /// Krylov solves at h = 0.125: docs/benchmarks.md "Distributed saddle point").
   void copy_distributed(const assembly::SparseMatrix& given) {
-    // In the contact nodes' frames (set_local_frames): the share of Qᵀ K Q.
-    assembly::SparseMatrix rotated;
-    if (!frames_.empty()) {
-      if (frame_matrix_.rows() != given.rows())
-        frame_matrix_ = assembly::frame_matrix(frames_, given.rows());
-      rotated = petsc::rotated_share(given, frame_matrix_);
-    }
+    if (!frames_.empty() && frame_matrix_.rows() != given.rows())
+      frame_matrix_ = assembly::frame_matrix(frames_, given.rows());
+    const assembly::SparseMatrix no_frames;
+    const assembly::SparseMatrix& frames = frames_.empty() ? no_frames : frame_matrix_;
     // Node by node (as lay_out_nodes serially, where the iterative default serves: the
-    // Schur matrix's share is given): the share moved to the layout's rows.
+    // Schur matrix's share is given).
     if (!layout_decided_) {
       layout_decided_ = true;
       PetscBool wanted = schur_block_ > 0 && schur_share_.rows() > 0 ? PETSC_TRUE : PETSC_FALSE;
@@ -513,13 +504,8 @@ private:
       if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
         layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, given.rows());
     }
-    const assembly::SparseMatrix& in_frames = frames_.empty() ? given : rotated;
-    assembly::SparseMatrix laid_out;
-    if (!layout_.empty()) laid_out = petsc::embedded_share(layout_, in_frames, n_first_);
-    const assembly::SparseMatrix& matrix = layout_.empty() ? in_frames : laid_out;
-    const auto n = static_cast<PetscInt>(matrix.rows());
     const bool symmetric_lower = storage_ == MatrixStorage::SymmetricLower;
-    const bool same_pattern = matrix_ && has_copied_pattern(matrix);
+    const bool same_pattern = matrix_ && input_pattern_.matches(given);
     int rebuild = same_pattern ? 0 : 1;
     MPI_Allreduce(MPI_IN_PLACE, &rebuild, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
     if (rebuild) {
@@ -530,15 +516,21 @@ private:
       if (all_) VecDestroy(&all_);
       if (schur_matrix_) MatDestroy(&schur_matrix_);
       distributed_fields_.reset();
-      pattern_outer_.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + n + 1);
-      pattern_inner_.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
-      petsc::DistributedNumbering numbering =
-          petsc::number_by_owner(pattern_outer_, pattern_inner_);
+      value_map_ = {};
+      input_pattern_ = {};
+      const Index n_velocity = n_first_ > 0 ? n_first_ : given.rows();
+      // Both triangles, row by row, in the layout's rows.
+      const petsc::CsrPattern pattern =
+          petsc::share_pattern(given, symmetric_lower, frames, layout_, n_velocity);
+      const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
+      petsc::DistributedNumbering numbering = petsc::number_by_owner(pattern.outer, pattern.inner);
       petsc_index_ = std::move(numbering.petsc_index);
       const PetscInt owned = numbering.owned;
-      petsc::CooEntries coo =
-          petsc::coo_entries(pattern_outer_, pattern_inner_, petsc_index_, symmetric_lower);
-      coo_source_ = std::move(coo.source);
+      // coo_entries reads a compressed-column pattern: given rows, its (row, column)
+      // pairs come out transposed, and its sources are the pattern's value indices.
+      petsc::CooEntries coo = petsc::coo_entries(pattern.outer, pattern.inner, petsc_index_,
+                                                 /*symmetric_lower=*/false);
+      std::swap(coo.rows, coo.columns);
       if (MatCreate(PETSC_COMM_WORLD, &matrix_) != 0 ||
           MatSetSizes(matrix_, owned, owned, n, n) != 0 || MatSetType(matrix_, MATMPIAIJ) != 0 ||
           MatSetPreallocationCOO(matrix_, static_cast<PetscCount>(coo.rows.size()), coo.rows.data(),
@@ -559,12 +551,17 @@ private:
         distributed_fields_ =
             std::make_unique<petsc::DistributedFields>(petsc_index_, low, high, n_first_solved());
       }
+      value_map_ = petsc::ValueMap(given, symmetric_lower, frames, layout_, pattern.outer,
+                                   pattern.inner, n_velocity);
+      input_pattern_ = petsc::InputPattern(given);
+      share_values_.assign(pattern.inner.size(), 0.0);
     }
-    std::vector<PetscScalar> values(coo_source_.size());
-    for (std::size_t s = 0; s < values.size(); ++s) values[s] = matrix.valuePtr()[coo_source_[s]];
-    if (MatSetValuesCOO(matrix_, values.data(), INSERT_VALUES) != 0) MatDestroy(&matrix_);
+    // The COO entries are the pattern's values in order.
+    value_map_.fill(given, share_values_);
+    if (MatSetValuesCOO(matrix_, share_values_.data(), INSERT_VALUES) != 0) MatDestroy(&matrix_);
     // The Schur matrix's share given for this step (set_schur_preconditioner).
-    if (distributed_fields_ && schur_share_.rows() == n - n_first_solved()) {
+    if (distributed_fields_ &&
+        schur_share_.rows() == static_cast<Index>(petsc_index_.size()) - n_first_solved()) {
       petsc::copy_distributed_schur_matrix(schur_share_, *distributed_fields_, schur_block_,
                                            &schur_matrix_);
       schur_share_ = {};
@@ -604,15 +601,14 @@ private:
   Mat matrix_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
-  petsc::ValueMap value_map_;                        ///< sequential: where PETSc's values come from
-  petsc::InputPattern input_pattern_;                ///< sequential: the pattern of the last copy
+  petsc::ValueMap value_map_;         ///< where PETSc's values come from (distributed: the COO's)
+  petsc::InputPattern input_pattern_; ///< the pattern of the last copy
+  std::vector<PetscScalar> share_values_;            ///< distributed: the COO values of the share
   std::unique_ptr<petsc::SaddlePointNest> nest_;     ///< sequential: the saddle point's blocks
   assembly::SparseMatrix coupling_, pressure_block_; ///< take_saddle_point_blocks' B and C
   std::size_t output_nonzeros_ = 0;                  ///< sequential: the values of matrix_
-  std::vector<PetscInt> pattern_outer_, pattern_inner_; ///< distributed: the share's pattern
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
   std::vector<PetscInt> petsc_index_; ///< distributed: solved row (free or laid out) → PETSc's
-  std::vector<Index> coo_source_;     ///< distributed: COO entry → value of the share
   VecScatter to_all_ = nullptr;       ///< distributed: the solution to every rank
   Vec all_ = nullptr;
   Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)

@@ -84,6 +84,34 @@ CsrPattern solved_pattern(const assembly::SparseMatrix& input, bool lower_only,
   return pattern;
 }
 
+CsrPattern share_pattern(const assembly::SparseMatrix& share, bool lower_only,
+                         const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
+                         Index n_velocity) {
+  CsrPattern pattern = solved_pattern(share, lower_only, frames, layout);
+  if (layout.empty()) return pattern;
+  // The nodes this share touches: the frames act within a node, so a node with a
+  // velocity diagonal in K has one in Qᵀ K Q.
+  const int components = layout.components();
+  std::vector<bool> touched(static_cast<std::size_t>(layout.n_velocity_embedded() / components),
+                            false);
+  for (Index column = 0; column < n_velocity; ++column)
+    for (auto k = share.outerIndexPtr()[column]; k < share.outerIndexPtr()[column + 1]; ++k)
+      if (share.innerIndexPtr()[k] == column) touched[layout.position(column) / components] = true;
+  // solved_pattern gives every slot row its diagonal alone: drop the untouched ones.
+  std::vector<bool> dropped(static_cast<std::size_t>(layout.n_embedded()), false);
+  for (const Index slot : layout.holes()) dropped[slot] = !touched[slot / components];
+  CsrPattern kept;
+  kept.outer.reserve(pattern.outer.size());
+  kept.inner.reserve(pattern.inner.size());
+  for (std::size_t row = 0; row + 1 < pattern.outer.size(); ++row) {
+    if (!dropped[row])
+      kept.inner.insert(kept.inner.end(), pattern.inner.begin() + pattern.outer[row],
+                        pattern.inner.begin() + pattern.outer[row + 1]);
+    kept.outer.push_back(static_cast<Index>(kept.inner.size()));
+  }
+  return kept;
+}
+
 ValueMap::ValueMap(const assembly::SparseMatrix& input, bool lower_only,
                    const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
                    std::span<const Index> outer, std::span<const Index> inner, Index n_velocity) {
@@ -146,7 +174,6 @@ ValueMap::ValueMap(const assembly::SparseMatrix& input, bool lower_only,
   sum_start_.push_back(static_cast<Index>(terms_.size()));
   terms_.shrink_to_fit(); // kept for the run: not the growth's spare capacity
   sum_start_.shrink_to_fit();
-  n_velocity_ = n_velocity;
 }
 
 InputPattern::InputPattern(const assembly::SparseMatrix& input)
@@ -183,11 +210,13 @@ void ValueMap::fill(const assembly::SparseMatrix& input, std::span<Real> output)
     }
   }
   if (holes_.empty()) return;
-  // The slots' diagonal: the mean |a_ii| of the velocity rows, so that they neither
-  // dominate nor vanish beside the velocity's (as mean_absolute_diagonal).
+  // The slots' diagonal: the mean |a_ii| of the velocity rows (those with a diagonal: a
+  // rank's share has its own cells' rows only), so that they neither dominate nor vanish
+  // beside the velocity's.
   Real total = 0;
   for (const Index s : velocity_diagonal_) total += std::abs(output[static_cast<std::size_t>(s)]);
-  const Real hole_value = total > 0 ? total / static_cast<Real>(n_velocity_) : 1.0;
+  const Real hole_value =
+      total > 0 ? total / static_cast<Real>(velocity_diagonal_.size()) : Real(1);
   for (const Index s : holes_) output[static_cast<std::size_t>(s)] = hole_value;
 }
 

@@ -26,6 +26,17 @@ struct CsrPattern {
 CsrPattern solved_pattern(const assembly::SparseMatrix& input, bool lower_only,
                           const assembly::SparseMatrix& frames, const NodeBlockLayout& layout);
 
+/// The pattern of a share's P Qᵀ K Q Pᵀ (solved_pattern: both triangles, in the layout's
+/// rows) keeping the slot diagonal of the nodes this share touches only (a node with a
+/// velocity diagonal in the share; `n_velocity`: the share's velocity rows): every rank
+/// that touches a node has the diagonals of all its rows, so the lowest of them owns the
+/// whole node (a block of `components` rows, as the "u" split's block size needs), and the
+/// ranks' slot entries add up to a positive diagonal (a decoupled row all the same). A
+/// rank that added the slots of nodes it does not touch would own them alone.
+CsrPattern share_pattern(const assembly::SparseMatrix& share, bool lower_only,
+                         const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
+                         Index n_velocity);
+
 /// PETSc solves P Qᵀ K Q Pᵀ y = P Qᵀ b: K is formflow's matrix (compressed column-major,
 /// both triangles or, for a symmetric matrix, the lower one), Q the local frames' change
 /// of basis (a few unknowns per Γ3 node, identity elsewhere) and P the node-block layout
@@ -44,7 +55,7 @@ public:
   /// none. `layout`: P, or empty for the identity. `outer`, `inner`: the CSR pattern of
   /// PETSc's matrix (row-major, in the layout's rows), which must contain the pattern of
   /// P Qᵀ K Q Pᵀ. `n_velocity`: the velocity rows of a saddle point (the hole value is the
-  /// mean |diagonal| over them), or every row.
+  /// mean |diagonal| over those of them in the pattern), or every row.
   ValueMap(const assembly::SparseMatrix& input, bool lower_only,
            const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
            std::span<const Index> outer, std::span<const Index> inner, Index n_velocity);
@@ -61,7 +72,6 @@ private:
   std::vector<std::pair<Index, Real>> terms_;  ///< (K's value index, weight)
   std::vector<Index> velocity_diagonal_;       ///< output indices of the velocity rows' diagonal
   std::vector<Index> holes_;                   ///< output indices of the layout's slots
-  Index n_velocity_ = 0;
   Index n_input_values_ = 0;
 };
 
