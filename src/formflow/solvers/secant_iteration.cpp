@@ -87,8 +87,8 @@ constexpr bool mix_loose_steps = true;
 /// (`steady_contraction` false: mixed changes do not shrink at a steady rate), every
 /// step is predicted with the contraction 1: exact once the last change itself is below
 /// the margin. Either way a misjudged loose step costs one more step, never accuracy:
-/// loose steps cannot stop the loop. Measured (docs/benchmarks.md "Loose first steps"):
-/// from the coarse start the first two steps were exact, 35 and 30 Krylov iterations at
+/// loose steps cannot stop the loop. Measured (docs/benchmarks.md "Loose first steps, one sweep
+/// each way"): from the coarse start the first two steps were exact, 35 and 30 Krylov iterations at
 /// h = 0.125 and 57 and 42 at 1 M dofs, against 6–19 loose; with the latch of session 13
 /// (once exact, always exact) 3–4 exact steps still changed by more than δ.
 Real inexact_reduction(Real change, Real previous_change, Real tolerance, bool steady_contraction) {

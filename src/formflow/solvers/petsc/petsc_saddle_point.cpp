@@ -53,8 +53,8 @@ void set_saddle_point_defaults(KSP ksp, DefaultOptions& defaults) {
   // about 10 % more iterations. l1 scaling keeps the sweep convergent where a rank's
   // rows couple to another's (hypre's advice for several processes; on one, the plain
   // hybrid sweep). 3D round quarter, three exact steps: V-cycle 0.36 → 0.22 s at h = 1/12,
-  // FGMRES time 74 → 52 s, counts 38 → 42 per step, 26 / 35 / 42 over h = 1/4, 1/8, 1/12
-  // (docs/benchmarks.md "Velocity AMG: one sweep each way", session 14).
+  // FGMRES time 74 → 52 s, counts 38 → 42 per step, 26 / 35 / 42 / 45 over h = 1/4 … 1/16
+  // (docs/benchmarks.md "Loose first steps, one sweep each way", session 14).
   defaults.set("-fieldsplit_u_pc_hypre_boomeramg_relax_type_down", "l1-Gauss-Seidel");
   defaults.set("-fieldsplit_u_pc_hypre_boomeramg_relax_type_up", "backward-l1-Gauss-Seidel");
   defaults.set("-fieldsplit_p_ksp_type", "preonly");
