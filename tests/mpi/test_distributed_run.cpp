@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Distributed runs (issue 20, docs/petsc.md): `mpirun -np N formflow run` with each
-// rank assembling its own slab of cells into one MPIAIJ matrix gives the serial
+// rank assembling its own part of the cells (PT-Scotch) into one MPIAIJ matrix gives the serial
 // CHOLMOD ram reaction, for the paper's 2D case and a 3D round quarter, penalty and
 // condensed mixed, with friction, by Newton (the default method: its coarse levels,
 // tangent shares and GMRES on every rank) and by the secant iteration; rank 0 alone
@@ -38,6 +38,8 @@ struct DistributedCase {
   std::string method = {};
   /// Leave solver.linear unset on the mpirun command line: PETSc is the default on N > 1 ranks.
   bool petsc_by_default = false;
+  /// The partitioner of the cells (-mat_partitioning_type; empty: the default, PT-Scotch).
+  std::string partitioner = {};
 };
 
 /// gtest's name of a parameter (its bytes otherwise).
@@ -76,6 +78,7 @@ MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirect
     command += " " + quoted(std::string(FORMFLOW_SOURCE_DIR) + "/" + c.case_path);
   for (const auto& [key, value] : all_edits(c)) command += " --set " + quoted(key + "=" + value);
   if (!c.petsc_by_default) command += " --set solver.linear=petsc";
+  if (!c.partitioner.empty()) command += " -mat_partitioning_type " + c.partitioner;
   command += " " + extra + " > " + quoted((scratch / "out.txt").string()) + " 2> " +
              quoted((scratch / "err.txt").string());
   const int status = std::system(command.c_str());
@@ -86,6 +89,14 @@ MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirect
   if (std::filesystem::exists(summary))
     run.summary = nlohmann::json::parse(testing::read_text(summary));
   return run;
+}
+
+/// The NumberOfCells of a VTU file's piece (−1 if it has none).
+long cells_of_vtu(const std::filesystem::path& file) {
+  const std::string text = testing::read_text(file);
+  const std::string key = "NumberOfCells=\"";
+  const auto at = text.find(key);
+  return at == std::string::npos ? -1 : std::stol(text.substr(at + key.size()));
 }
 
 /// How far the distributed run's reaction may be from CHOLMOD's (relative), the
@@ -124,6 +135,9 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
             << std::abs(reaction - reference) / std::abs(reference) << "\n";
   EXPECT_TRUE(testing::approx(reaction, reference, tolerance));
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
+  // PETSc's graph partitioner split the cells (not the slabs it falls back to).
+  EXPECT_EQ(run.summary.at("linear_algebra").at("partition"),
+            c.partitioner.empty() ? "ptscotch" : c.partitioner);
   // Direct MUMPS, also when solver.linear was left unset (the default on N > 1 ranks).
   EXPECT_EQ(run.summary.at("linear_algebra").at("solver"), "petsc-preonly-cholesky");
   // The fields once as fields.vtu, and as fields.pvtu with one piece per rank.
@@ -134,6 +148,14 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
     EXPECT_EQ(std::filesystem::exists(results / ("fields_" + std::to_string(rank) + ".vtu")),
               rank < ranks)
         << rank;
+  // The pieces are the ranks' parts: each holds cells, and together every cell once.
+  long piece_cells = 0;
+  for (int rank = 0; rank < ranks; ++rank) {
+    const long cells = cells_of_vtu(results / ("fields_" + std::to_string(rank) + ".vtu"));
+    EXPECT_GT(cells, 0) << "piece " << rank;
+    piece_cells += cells;
+  }
+  EXPECT_EQ(piece_cells, cells_of_vtu(results / "fields.vtu"));
   EXPECT_EQ(run.summary.at("method"), serial.results.method);
   // -q: formflow has nothing to say, from any rank (the launcher may: not checked).
   EXPECT_EQ(run.err.find("error:"), std::string::npos) << run.err;
@@ -175,6 +197,14 @@ DistributedCase by_default(DistributedCase c) {
   return c;
 }
 
+/// The cells split by another of PETSc's partitioners (`average`: consecutive cell
+/// numbers): only rank 0 reads the option, and the ranks must still agree on the run.
+DistributedCase by_partitioner(DistributedCase c, std::string partitioner) {
+  c.name += "_" + partitioner;
+  c.partitioner = std::move(partitioner);
+  return c;
+}
+
 /// The paper's secant iteration (the first slice's loop).
 DistributedCase by_secant(DistributedCase c) {
   c.name += "_secant";
@@ -187,7 +217,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
                                            std::pair(round_penalty, 2), std::pair(round_mixed, 2),
                                            std::pair(paper_exact_friction, 2),
                                            std::pair(by_default(paper_penalty), 4),
-                                           std::pair(by_secant(paper_penalty), 2)),
+                                           std::pair(by_secant(paper_penalty), 2),
+                                           std::pair(by_partitioner(round_mixed, "average"), 2)),
                          [](const auto& info) {
                            return info.param.first.name + "_np" + std::to_string(info.param.second);
                          });
@@ -216,6 +247,22 @@ TEST(DistributedRun, ASerialOnlySolverIsRefusedNamingTheKey) {
   // The later --set wins: CHOLMOD has no distributed matrix.
   expect_refused_once(run_mpi(paper_penalty, 2, scratch, "--set solver.linear=cholmod"),
                       "solver.linear: on 2 MPI ranks", scratch);
+}
+
+TEST(DistributedRun, APartitionerPetscDoesNotHaveIsOneMessageAndExitTwo) {
+  testing::ScratchDirectory scratch("formflow-mpi");
+  expect_refused_once(run_mpi(by_partitioner(paper_penalty, "metis"), 2, scratch),
+                      "-mat_partitioning_type: Unknown partitioning type metis", scratch);
+}
+
+TEST(DistributedRun, APartitionerOptionInTheCaseIsRefusedOnEveryRankAlike) {
+  // The cells are split before the case's options reach PETSc's database: no rank reads
+  // it, and all refuse it (one message, exit 2), none leaving the others waiting.
+  testing::ScratchDirectory scratch("formflow-mpi");
+  expect_refused_once(run_mpi(paper_penalty, 2, scratch,
+                              "--set 'solver.petsc_options=-mat_partitioning_type average'"),
+                      "solver.petsc_options: -mat_partitioning_type was read by no PETSc object",
+                      scratch);
 }
 
 TEST(DistributedRun, ExactStickIsRefusedNamingTheKey) {

@@ -137,7 +137,9 @@ void expect_shares_add_up(bool lower_only) {
                      MatrixX(share_a() + share_b()).cwiseAbs().maxCoeff();
   for (Index r = 0; r < layout.n_embedded(); ++r)
     for (Index c = 0; c < layout.n_embedded(); ++c)
-      if (r != slot && c != slot) EXPECT_NEAR(sum(r, c), expected(r, c), bound) << r << ", " << c;
+      if (r != slot && c != slot) {
+        EXPECT_NEAR(sum(r, c), expected(r, c), bound) << r << ", " << c;
+      }
   // The slot: a decoupled row with a positive diagonal, the mean |a_ii| of B's velocity
   // rows (0, 1, 2, outside the frame: 4, 5, 6).
   EXPECT_NEAR(sum(slot, slot), (4.0 + 5.0 + 6.0) / 3.0, bound);

@@ -5,7 +5,10 @@
 #include "formflow/app/stop_signals.hpp"
 
 #if FORMFLOW_WITH_PETSC
+#include "formflow/solvers/petsc/graph_partition.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
+
+#include <unistd.h> // dup
 
 #include <span>
 #include <string>
@@ -41,8 +44,8 @@ int main(int argc, char** argv) {
   rest.push_back(nullptr);
   // Started by mpirun on N > 1 ranks (issue 20, docs/petsc.md): MPI now (a serial run
   // starts it only at its first PETSc solve, and a CHOLMOD run never), each rank its
-  // own slab of cells; only rank 0 prints and writes, and every rank exits with the
-  // largest code of all (a rank that failed makes the run fail).
+  // own part of the cells (PT-Scotch); only rank 0 prints and writes, and every rank exits
+  // with the largest code of all (a rank that failed makes the run fail).
   if (launcher_value({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}, 1) > 1) {
     namespace petsc = formflow::solvers::petsc;
     formflow::assembly::Distribution distribution;
@@ -51,6 +54,10 @@ int main(int argc, char** argv) {
     distribution.sum_over_ranks = [](std::span<formflow::Real> values) {
       petsc::sum_over_ranks(values);
     };
+    distribution.partition_cells = petsc::partition_graph; // PT-Scotch, broadcast by rank 0
+    // Every rank's own stderr, for the one message a rank must give itself (a run whose
+    // ranks went apart: petsc::agreed_exit_code).
+    const int own_stderr = ::dup(STDERR_FILENO);
     if (distribution.rank != 0) {
       // The same monitor lines and messages as rank 0's: said once, by rank 0.
       static_cast<void>(std::freopen("/dev/null", "w", stdout));
@@ -59,7 +66,10 @@ int main(int argc, char** argv) {
     formflow::app::set_distribution(std::move(distribution));
     petsc::set_distributed_systems(true); // the PETSc back-end sums the ranks' shares
     const int code = formflow::app::run_cli(static_cast<int>(rest.size()) - 1, rest.data());
-    return petsc::max_over_ranks(code);
+    // A rank's error that the others did not share must not leave them waiting forever
+    // in a collective call: a minute is ample for ranks that met it at the same point.
+    constexpr double patience_seconds = 60.0;
+    return petsc::agreed_exit_code(code, own_stderr, patience_seconds);
   }
   return formflow::app::run_cli(static_cast<int>(rest.size()) - 1, rest.data());
 #else

@@ -130,6 +130,8 @@ run_counted_loop(const SolvePlan& plan, const io::Case& case_,
   results.linear_algebra.factor_nonzeros = factor.factor_nonzeros;
   results.linear_algebra.factor_flops = factor.factor_flops;
   results.linear_algebra.ranks = distribution().size;
+  results.cell_ranks = problem.discretisation().cell_ranks();
+  results.linear_algebra.partition = problem.discretisation().partition_method();
   return outcome;
 }
 

@@ -24,11 +24,15 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
   // A distributed run scatters only its own cells: the others are empty blocks, so the
   // pattern (and the memory of the rank's system) holds only the own cells' entries.
   const Distribution& distribution = settings.distribution;
-  std::vector<int> part;
-  if (distribution.distributed()) part = mesh::slab_partition(mesh, distribution.size);
+  if (distribution.distributed()) {
+    mesh::CellPartition split =
+        mesh::cell_partition(mesh, distribution.size, distribution.partition_cells);
+    cell_ranks_ = std::move(split.part);
+    partition_method_ = std::move(split.method);
+  }
   BlockDofs blocks;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    if (!part.empty() && part[cell] != distribution.rank) {
+    if (!cell_ranks_.empty() && cell_ranks_[cell] != distribution.rank) {
       blocks.add({});
       continue;
     }

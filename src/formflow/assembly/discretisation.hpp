@@ -45,8 +45,12 @@ public:
   /// in a distributed run its pattern holds only the own cells' entries).
   const ScatterPlan& plan() const { return *plan_; }
   /// The cells whose matrices and loads this rank assembles (ascending): all cells, or
-  /// in a distributed run its slab (mesh/cell_partition.hpp).
+  /// in a distributed run its part (mesh/cell_partition.hpp).
   const std::vector<Index>& assembled_cells() const { return assembled_cells_; }
+  /// A distributed run: every cell's rank (the same on every rank); empty on one rank.
+  const std::vector<int>& cell_ranks() const { return cell_ranks_; }
+  /// How cell_ranks() was made (mesh::CellPartition::method); empty on one rank.
+  const std::string& partition_method() const { return partition_method_; }
   /// Whether `cell` is one of assembled_cells() (always, on one rank).
   bool assembles(Index cell) const {
     return !settings_.distribution.distributed() ||
@@ -128,6 +132,8 @@ private:
   DirichletConstraints constraints_;
   std::unique_ptr<ScatterPlan> plan_;
   std::vector<Index> assembled_cells_;
+  std::vector<int> cell_ranks_;
+  std::string partition_method_;
   fem::QuadratureRule<dim> full_rule_, volumetric_rule_;
   fem::QuadratureRule<dim - 1> facet_rule_;
   std::vector<Index> contact_facets_;       ///< Mesh::facets indices of Γ3, in mesh order

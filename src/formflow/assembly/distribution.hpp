@@ -5,6 +5,7 @@
 #pragma once
 
 #include "formflow/core/types.hpp"
+#include "formflow/mesh/cell_partition.hpp"
 
 #include <functional>
 #include <span>
@@ -17,6 +18,9 @@ struct Distribution {
   /// Replaces every entry by its sum over the ranks; collective, and the result is the
   /// same bits on every rank (their decisions are taken from it).
   std::function<void(std::span<Real>)> sum_over_ranks;
+  /// How the cells are split among the ranks (PT-Scotch through PETSc, set by main);
+  /// without one, slabs along x (mesh::cell_partition).
+  mesh::GraphPartitioner partition_cells = {};
   bool distributed() const { return size > 1; }
 };
 

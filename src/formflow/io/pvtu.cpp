@@ -38,8 +38,10 @@ std::string piece_name(int part) {
 template <int dim>
 std::vector<std::pair<std::string, std::string>>
 fields_pvtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
-            solvers::StopReason stop_reason, int parts) {
-  const std::vector<int> part = mesh::slab_partition(mesh, parts);
+            solvers::StopReason stop_reason, int parts, std::span<const int> cell_ranks) {
+  const std::vector<int> part = cell_ranks.size() == static_cast<std::size_t>(mesh.n_cells())
+                                    ? std::vector<int>(cell_ranks.begin(), cell_ranks.end())
+                                    : mesh::slab_partition(mesh, parts);
   std::vector<std::pair<std::string, std::string>> files(1);
   for (int r = 0; r < parts; ++r) {
     std::vector<Index> cells;
@@ -116,9 +118,13 @@ fields_pvtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
   return files;
 }
 
-template std::vector<std::pair<std::string, std::string>>
-fields_pvtu<2>(const mesh::Mesh<2>&, const post::Fields&, solvers::StopReason, int);
-template std::vector<std::pair<std::string, std::string>>
-fields_pvtu<3>(const mesh::Mesh<3>&, const post::Fields&, solvers::StopReason, int);
+template std::vector<std::pair<std::string, std::string>> fields_pvtu<2>(const mesh::Mesh<2>&,
+                                                                         const post::Fields&,
+                                                                         solvers::StopReason, int,
+                                                                         std::span<const int>);
+template std::vector<std::pair<std::string, std::string>> fields_pvtu<3>(const mesh::Mesh<3>&,
+                                                                         const post::Fields&,
+                                                                         solvers::StopReason, int,
+                                                                         std::span<const int>);
 
 } // namespace formflow::io

@@ -52,10 +52,11 @@ void write_results(const std::string& directory, const Case& case_, const mesh::
   files.push_back({"history.csv", history_csv(results.history, results.stop_reason)});
   files.push_back({"contact.csv", contact_csv(results.contact, results.stop_reason, dim)});
   files.push_back({"fields.vtu", fields_vtu(mesh, results.fields, results.stop_reason)});
-  // A distributed run: also the parallel VTU, one piece per rank's slab (every rank
+  // A distributed run: also the parallel VTU, one piece per rank's cells (every rank
   // holds the whole velocity in this first slice, so rank 0 writes them all).
   if (const int ranks = results.linear_algebra.ranks; ranks > 1)
-    for (auto& [name, text] : fields_pvtu(mesh, results.fields, results.stop_reason, ranks))
+    for (auto& [name, text] :
+         fields_pvtu(mesh, results.fields, results.stop_reason, ranks, results.cell_ranks))
       files.push_back({std::move(name), std::move(text)});
   if (is_stop_requested(stop_requested)) throw Stopped("stopped before drawing the pictures");
   // The plane pictures, or a solid run's sections and unrolled die surface.

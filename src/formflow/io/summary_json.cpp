@@ -268,6 +268,9 @@ json summary_document(const Case& case_, const post::Results& results) {
                            {"iterations", count_or_null(results.linear_algebra.iterations)},
                            {"iterations_per_step", std::move(per_step)},
                            {"ranks", results.linear_algebra.ranks},
+                           {"partition", results.linear_algebra.partition.empty()
+                                             ? json(nullptr)
+                                             : json(results.linear_algebra.partition)},
                            {"factorizations", results.timing.counted("factorization")},
                            {"krylov_iterations", results.timing.counted("krylov iterations")}};
   // The fill (counts from the back-end's analysis; null when it does not report them).

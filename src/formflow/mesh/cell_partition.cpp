@@ -27,7 +27,26 @@ template <int dim> std::vector<int> slab_partition(const Mesh<dim>& mesh, int pa
   return part;
 }
 
+template <int dim>
+CellPartition cell_partition(const Mesh<dim>& mesh, int parts,
+                             const GraphPartitioner& partitioner) {
+  if (parts > 1 && partitioner) {
+    CellPartition split = partitioner(cell_graph(mesh), parts);
+    const std::vector<int>& part = split.part;
+    std::vector<Index> cells_of(static_cast<std::size_t>(parts), 0);
+    bool valid = static_cast<Index>(part.size()) == mesh.n_cells();
+    for (std::size_t c = 0; valid && c < part.size(); ++c) {
+      valid = part[c] >= 0 && part[c] < parts;
+      if (valid) ++cells_of[static_cast<std::size_t>(part[c])];
+    }
+    if (valid && std::find(cells_of.begin(), cells_of.end(), 0) == cells_of.end()) return split;
+  }
+  return {slab_partition(mesh, parts), "slabs"};
+}
+
 template std::vector<int> slab_partition<2>(const Mesh<2>&, int);
 template std::vector<int> slab_partition<3>(const Mesh<3>&, int);
+template CellPartition cell_partition<2>(const Mesh<2>&, int, const GraphPartitioner&);
+template CellPartition cell_partition<3>(const Mesh<3>&, int, const GraphPartitioner&);
 
 } // namespace formflow::mesh

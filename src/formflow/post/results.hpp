@@ -110,6 +110,9 @@ struct LinearAlgebra {
   /// linear_iterations); −1 for a direct back-end that has no such count.
   long iterations = -1;
   int ranks = 1; ///< MPI ranks of the run
+  /// How the cells were split among the ranks (a PETSc partitioner's type, or "slabs");
+  /// empty on one rank.
+  std::string partition;
   /// Matrix and factor nonzeros (and flops) of the fine mesh's last analysis
   /// (solvers::FactorSize: −1 when the back-end does not report them).
   double matrix_nonzeros = -1;
@@ -192,6 +195,7 @@ struct Results {
   LoadErrorEstimate load_error;
   PhaseTimes timing; ///< seconds per phase: total, mesh, assembly, factorization, solve, post
   LinearAlgebra linear_algebra;
+  std::vector<int> cell_ranks; ///< a distributed run: each cell's rank (the pvtu's pieces)
 };
 
 } // namespace formflow::post

@@ -2,8 +2,9 @@
 // A distributed run's assembly without MPI (issue 20, docs/petsc.md): the ranks'
 // shares of the secant system (each rank's own cells, volume and Γ3 friction terms)
 // add up to the serial system, each share holds only its cells' entries, and the
-// slab partition gives every cell to exactly one rank; so do Newton's tangent, internal
-// force and coupling product.
+// slab partition (or a graph partitioner's, here one that interleaves the cells) gives
+// every cell to exactly one rank; so do Newton's tangent, internal force and coupling
+// product.
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/fem/dof_map.hpp"
 #include "formflow/mesh/cell_partition.hpp"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace formflow::assembly {
@@ -76,7 +78,20 @@ TEST(DistributedShares, AddUpToTheSerialSystemAndHoldOnlyTheirCells) {
   serial.assemble(&w, whole);
   ASSERT_GT(serial.n_contact_points(), 0);
 
-  for (int ranks : {2, 3}) {
+  // Cells interleaved among the ranks (cell c on rank c mod N), through the graph
+  // partitioner's seam: parts that are not contiguous in x, as PT-Scotch's need not be.
+  const mesh::GraphPartitioner interleaved = [](const mesh::CellGraph& graph, int parts) {
+    mesh::CellPartition split{std::vector<int>(static_cast<std::size_t>(graph.n_cells())),
+                              "interleaved"};
+    for (Index cell = 0; cell < graph.n_cells(); ++cell)
+      split.part[cell] = static_cast<int>(cell % parts);
+    return split;
+  };
+  for (const auto& [ranks, partitioner] : {std::pair<int, mesh::GraphPartitioner>{2, nullptr},
+                                           {3, nullptr},
+                                           {2, interleaved},
+                                           {3, interleaved}}) {
+    SCOPED_TRACE(partitioner ? "interleaved cells" : "slabs");
     MatrixX sum = MatrixX::Zero(whole.matrix.rows(), whole.matrix.cols());
     MatrixX magnitude = sum; // Σ_r |K_r|, for the round-off bounds below
     VectorX rhs = VectorX::Zero(whole.rhs.size()), rhs_magnitude = rhs;
@@ -87,12 +102,17 @@ TEST(DistributedShares, AddUpToTheSerialSystemAndHoldOnlyTheirCells) {
     std::vector<int> owner(mesh.n_cells(), -1);
     for (int rank = 0; rank < ranks; ++rank) {
       // One process plays every rank: the sum over ranks is the caller's here (a no-op).
-      Distribution distribution{rank, ranks, [](std::span<Real>) {}};
+      Distribution distribution{rank, ranks, [](std::span<Real>) {}, partitioner};
       const FormingProblem<2> share_problem(mesh, settings(distribution));
       for (const Index cell : share_problem.discretisation().assembled_cells()) {
         EXPECT_EQ(owner[cell], -1) << "cell " << cell << " assembled twice";
         owner[cell] = rank;
+        if (partitioner) {
+          EXPECT_EQ(cell % ranks, rank) << "not the partitioner's split";
+        }
       }
+      EXPECT_EQ(share_problem.discretisation().partition_method(),
+                partitioner ? "interleaved" : "slabs");
       LinearSystem share = share_problem.plan().make_system();
       share_problem.assemble(&w, share);
       // The share's pattern is its cells' entries only: less than the whole.

@@ -7,7 +7,11 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <stdio.h> // dprintf (POSIX): a message on a descriptor kept from before freopen
+
+#include <chrono>
 #include <memory>
+#include <thread>
 
 namespace formflow::solvers::petsc {
 
@@ -128,6 +132,32 @@ int max_over_ranks(int value) {
   return value;
 }
 
+int agreed_exit_code(int code, int report_fd, double patience_seconds) {
+  if (code != 1 && code != 2) return max_over_ranks(code);
+  ensure_initialized();
+  int agreed = code;
+  MPI_Request request = MPI_REQUEST_NULL;
+  MPI_Iallreduce(&code, &agreed, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD, &request);
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    int done = 0;
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return agreed;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+        patience_seconds)
+      break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (report_fd >= 0)
+    dprintf(report_fd,
+            "error: MPI rank %d stopped with exit code %d, and the other ranks did not follow "
+            "within %.0f s (they took another decision and wait for this rank): the run is "
+            "aborted. This is a bug: please report it with the command line.\n",
+            rank(), code, patience_seconds);
+  MPI_Abort(PETSC_COMM_WORLD, code);
+  return code;
+}
+
 OptionsScope::OptionsScope(const std::string& case_options)
     : case_options_(parse_petsc_options(case_options)) {
   ensure_initialized();
@@ -142,34 +172,50 @@ OptionsScope::~OptionsScope() {
   PetscOptionsInsertString(nullptr, joined(command_line_options()).c_str());
 }
 
-OptionsScope::Unused OptionsScope::unused() const {
-  const auto unused_of = [](const std::vector<PetscOption>& options) {
-    std::vector<std::string> names;
-    for (const PetscOption& option : options) {
+OptionsScope::Unused OptionsScope::unused(bool across_ranks) const {
+  const std::vector<PetscOption>& command_line = command_line_options();
+  // Read flags of the case's options, then the command line's.
+  std::vector<int> read;
+  for (const auto* options : {&case_options_, &command_line})
+    for (const PetscOption& option : *options) {
       PetscBool used = PETSC_FALSE;
       // The database keeps names without their '-'.
       PetscOptionsUsed(nullptr, option.name.c_str() + 1, &used);
-      // -log_view and the like are read at PetscFinalize, not by a solve.
-      if (!used && is_solve_option(option.name)) names.push_back(option.name);
+      read.push_back(used ? 1 : 0);
     }
-    return names;
-  };
-  return {unused_of(case_options_), unused_of(command_line_options())};
+  if (across_ranks && !read.empty())
+    MPI_Allreduce(MPI_IN_PLACE, read.data(), static_cast<int>(read.size()), MPI_INT, MPI_LOR,
+                  PETSC_COMM_WORLD);
+  Unused names;
+  std::size_t k = 0;
+  for (auto [options, unused] : {std::pair{&case_options_, &names.from_case},
+                                 std::pair{&command_line, &names.from_command_line}})
+    for (const PetscOption& option : *options)
+      // -log_view and the like are read at PetscFinalize, not by a solve.
+      if (read[k++] == 0 && is_solve_option(option.name)) unused->push_back(option.name);
+  return names;
 }
 
-void OptionsScope::refuse_unused(const char* case_key) const {
-  const Unused names = unused();
-  constexpr const char* hint =
-      "check the spelling (-ksp_type, -pc_type, -pc_factor_mat_solver_type, ...) and that the "
-      "option belongs to the solver and preconditioner in use";
+void OptionsScope::refuse_unused(const char* case_key, bool across_ranks) const {
+  const Unused names = unused(across_ranks);
+  const auto hint = [](const std::vector<std::string>& options) -> std::string {
+    // The cells are split when the mesh is distributed, before a case's options are in
+    // the database: only the command line's reach the partitioner.
+    if (options.front().rfind("-mat_partitioning_", 0) == 0)
+      return "the partitioner reads its options from the command line only (mpirun -n N "
+             "formflow run CASE -mat_partitioning_type ptscotch)";
+    return "check the spelling (-ksp_type, -pc_type, -pc_factor_mat_solver_type, ...) and that "
+           "the option belongs to the solver and preconditioner in use";
+  };
   const auto text = [](const std::vector<std::string>& options) {
     return fmt::format("{} {} read by no PETSc object of this solve", fmt::join(options, " "),
                        options.size() == 1 ? "was" : "were");
   };
   if (!names.from_command_line.empty())
     throw InputError("command line", 0, names.from_command_line.front(),
-                     text(names.from_command_line), hint);
-  if (!names.from_case.empty()) throw InputError("", 0, case_key, text(names.from_case), hint);
+                     text(names.from_command_line), hint(names.from_command_line));
+  if (!names.from_case.empty())
+    throw InputError("", 0, case_key, text(names.from_case), hint(names.from_case));
 }
 
 ErrorCapture::ErrorCapture() {

@@ -53,6 +53,14 @@ int rank();
 void sum_over_ranks(std::span<double> values);
 /// The largest of `value` over the ranks (collective): the exit code they agree on.
 int max_over_ranks(int value);
+/// The run's exit code: max_over_ranks(`code`), except that a rank leaving with an error
+/// (1 or 2: a refusal or a failure every rank should have met at the same point) waits
+/// for the others at most `patience_seconds`. If they do not come, a decision differed
+/// between the ranks and they wait in a collective call for this one: it says so on
+/// `report_fd` (the rank's stderr from before rank 0 took the talking over) and ends
+/// the run with MPI_Abort(`code`) instead of leaving it hanging. Codes 0, 3 and the
+/// signals' wait as long as it takes (rank 0 may still be writing results).
+int agreed_exit_code(int code, int report_fd, double patience_seconds);
 
 /// solver.petsc_options in the options database while a solver lives: inserted,
 /// then the command line's options inserted again over them (the command line wins);
@@ -69,10 +77,13 @@ public:
   struct Unused {
     std::vector<std::string> from_case, from_command_line;
   };
-  Unused unused() const;
+  /// `across_ranks` (a distributed solve; collective): an option counts as read if any
+  /// rank read it, so every rank finds the same ones unused (rank 0 alone reads the
+  /// partitioner's, and a rank that refused alone would leave the others waiting).
+  Unused unused(bool across_ranks) const;
   /// Throws InputError for the first unused option: the command line's named as itself,
   /// the case's blamed on `case_key` (solver.petsc_options). Returns if none is unused.
-  void refuse_unused(const char* case_key) const;
+  void refuse_unused(const char* case_key, bool across_ranks) const;
 
 private:
   std::vector<PetscOption> case_options_;

@@ -86,7 +86,7 @@ public:
       krylov_start_.inexact_allowed(ksp_); // reads -formflow_inexact_steps before the check
       // What nothing read by now; a helper's solver (set_options_prefix) leaves it to the
       // run's own one, which reads the options meant for it later.
-      if (options_prefix_.empty()) options_scope_.refuse_unused(options_key);
+      if (options_prefix_.empty()) options_scope_.refuse_unused(options_key, distributed_);
     }
     if (splits != 0) return false;
     PCFailedReason failed = PC_NOERROR;
