@@ -134,6 +134,16 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
             << " tolerance " << tolerance << " difference "
             << std::abs(reaction - reference) / std::abs(reference) << "\n";
   EXPECT_TRUE(testing::approx(reaction, reference, tolerance));
+  // The integrals each rank takes over its own cells and sums over the ranks: functionals
+  // of the same velocity as the reaction, so the same agreement.
+  const auto& pressure = run.summary.at("pressure");
+  const auto& serial_pressure = serial.results.pressure;
+  EXPECT_TRUE(testing::approx(pressure.at("power_balance").get<Real>(),
+                              serial_pressure.power_balance, tolerance));
+  EXPECT_TRUE(testing::approx(pressure.at("total_power").get<Real>(), serial_pressure.total_power,
+                              tolerance));
+  EXPECT_TRUE(testing::approx(pressure.at("mean_hydrostatic_near_ram").get<Real>(),
+                              serial_pressure.mean_hydrostatic_near_ram, tolerance));
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
   // PETSc's graph partitioner split the cells (not the slabs it falls back to).
   EXPECT_EQ(run.summary.at("linear_algebra").at("partition"),

@@ -47,11 +47,10 @@ void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink
     return FaceState<dim>{cell, position, face_values, velocities, points, slip};
   };
 
-  // A distributed run (issue 20) assembles the matrices, loads and internal forces of its
-  // own cells only (the ranks' systems add up in the distributed matrix, their forces in
-  // FormingProblem::assemble_newton); the power pass runs over every cell on every rank,
-  // from the velocity every rank holds.
-  const bool own_cells_only = pass != AssemblyPass::Power && !request.every_cell;
+  // A distributed run (issue 20) assembles the matrices, loads, internal forces and powers
+  // of its own cells only: the ranks' systems add up in the distributed matrix, their
+  // forces in FormingProblem::assemble_newton, their powers in FormingProblem::powers.
+  const bool own_cells_only = !request.every_cell;
   const std::vector<Index>& assembled = discretisation_.assembled_cells();
   const Index n_loop = own_cells_only ? static_cast<Index>(assembled.size()) : mesh.n_cells();
   for (Index k = 0; k < n_loop; ++k) {

@@ -6,6 +6,8 @@
 #include "formflow/fem/dof_map.hpp"
 #include "formflow/physics/kinematics.hpp"
 
+#include <array>
+
 namespace formflow::assembly {
 
 namespace {
@@ -161,6 +163,15 @@ PowerTerms FormingProblem<dim>::powers(const VectorX& u,
   request.contact = contact;
   PowerTerms power;
   assembler_->run(request, nullptr, &power);
+  // A distributed run's pass covered the rank's own cells (and their Γ3 faces): the
+  // integrals add up over the ranks, the same bits on every rank.
+  if (const Distribution& distribution = discretisation_->distribution();
+      distribution.distributed()) {
+    std::array<Real, 5> terms{power.plastic_dissipation, power.viscous_form,
+                              power.volumetric_penalty, power.contact_penalty, power.friction};
+    distribution.sum_over_ranks(terms);
+    power = {terms[0], terms[1], terms[2], terms[3], terms[4]};
+  }
   return power;
 }
 

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -153,6 +154,49 @@ TEST(DistributedShares, AddUpToTheSerialSystemAndHoldOnlyTheirCells) {
     const Real serial_force = serial.driven_force(whole, w);
     EXPECT_NEAR(force, serial_force,
                 2 * static_cast<Real>(force_terms) * epsilon * force_magnitude);
+  }
+}
+
+TEST(DistributedShares, PowersOfTheRanksCellsAddUpToTheSerialPowers) {
+  // Each rank's power pass covers its own cells and their Γ3 faces (the sum over ranks
+  // is a no-op here, so each returns its part): every term's parts add up to the
+  // serial term, and no cell or face is counted twice (a doubled cell would add its
+  // whole share, far above round-off).
+  const mesh::Mesh<2> mesh = channel();
+  const VectorX w = lagged_velocity(mesh);
+  const FormingProblem<2> serial(mesh, settings());
+  const PowerTerms whole = serial.powers(w, serial.contact_state(w));
+  ASSERT_GT(whole.friction, 0) << "no friction power to share";
+  const auto terms = [](const PowerTerms& p) {
+    return std::array<Real, 5>{p.plastic_dissipation, p.viscous_form, p.volumetric_penalty,
+                               p.contact_penalty, p.friction};
+  };
+  for (int ranks : {2, 3}) {
+    std::array<Real, 5> sum{}, magnitude{};
+    for (int rank = 0; rank < ranks; ++rank) {
+      const FormingProblem<2> share(mesh, settings({rank, ranks, [](std::span<Real>) {}}));
+      const std::array<Real, 5> part = terms(share.powers(w, share.contact_state(w)));
+      for (std::size_t t = 0; t < part.size(); ++t) {
+        sum[t] += part[t];
+        magnitude[t] += std::abs(part[t]);
+      }
+    }
+    // A term is a sum of N point terms (the full and volumetric rules' points of every
+    // cell, the Γ3 points) in another grouping: at most N ε Σ|point terms| apart. With
+    // the penalty every integrand is non-negative (the dissipations, ε_V²/d, u_N²/d_N,
+    // τ |u_T|²/√(|u_T|² + d_T²)), so Σ|point terms| = Σ|parts|; the factor 2 covers
+    // the additions of the parts themselves.
+    const auto& discretisation = serial.discretisation();
+    const Real n_terms = static_cast<Real>(discretisation.full_rule().size() +
+                                           discretisation.volumetric_rule().size()) *
+                             static_cast<Real>(mesh.n_cells()) +
+                         static_cast<Real>(serial.n_contact_points());
+    const std::array<Real, 5> expected = terms(whole);
+    for (std::size_t t = 0; t < sum.size(); ++t)
+      EXPECT_NEAR(sum[t], expected[t],
+                  2 * n_terms * std::numeric_limits<Real>::epsilon() * magnitude[t] +
+                      std::numeric_limits<Real>::min())
+          << "term " << t << ", " << ranks << " ranks";
   }
 }
 
