@@ -59,17 +59,22 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
         nodal_contact_normals<dim>(mesh, contact_facets_, settings.contact.corner_angle);
 
   // The mesh never moves: map every cell and Γ3 face once (fem/values_cache.hpp);
-  // the loops below run every iteration on this geometry.
+  // the loops below run every iteration on this geometry. A distributed run's rank
+  // keeps its own cells' (those its iterations loop over); the others' are mapped
+  // again when a loop over all cells (the fields at the end) needs them.
   {
+    const std::span<const Index> cached = distribution.distributed()
+                                              ? std::span<const Index>(assembled_cells_)
+                                              : std::span<const Index>();
     typename fem::CellValues<dim>::Gradients nodes, no_velocity;
     const auto map_cell = [&](Index cell, fem::CellValues<dim>& values) {
       gather(cell, nullptr, nodes, no_velocity);
       reinit(values, nodes);
     };
     full_cache_ = std::make_unique<fem::CellValuesCache<dim>>(
-        mesh.n_cells(), fem::CellValues<dim>(mesh.order, full_rule_), map_cell);
+        mesh.n_cells(), fem::CellValues<dim>(mesh.order, full_rule_), map_cell, cached);
     volumetric_cache_ = std::make_unique<fem::CellValuesCache<dim>>(
-        mesh.n_cells(), fem::CellValues<dim>(mesh.order, volumetric_rule_), map_cell);
+        mesh.n_cells(), fem::CellValues<dim>(mesh.order, volumetric_rule_), map_cell, cached);
     contact_cache_ = std::make_unique<fem::FacetValuesCache<dim>>(
         static_cast<Index>(contact_facets_.size()), fem::FacetValues<dim>(mesh.order, facet_rule_),
         [&](Index position, fem::FacetValues<dim>& values) {
@@ -104,6 +109,15 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
     reinit(facet_values, coordinates, facet.local_face);
     for (int q = 0; q < facet_values.n_points(); ++q) driven_height_ += facet_values.JxW(q);
   }
+}
+
+template <int dim>
+void Discretisation<dim>::map_cell(Index cell, fem::CellValues<dim>& full_values,
+                                   fem::CellValues<dim>* volumetric_values) const {
+  Gradients coordinates, no_velocity;
+  gather(cell, nullptr, coordinates, no_velocity);
+  reinit(full_values, coordinates);
+  if (volumetric_values) reinit(*volumetric_values, coordinates);
 }
 
 template <int dim>

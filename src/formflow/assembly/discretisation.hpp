@@ -102,9 +102,14 @@ public:
   void reinit_contact(fem::FacetValues<dim>& values, const Gradients& coordinates,
                       Index position) const;
   /// Puts cell `cell`'s mapped values at the full and the volumetric rule into the
-  /// given values (from the geometry cache: the mesh never moves).
+  /// given values (from the geometry cache: the mesh never moves; a cell another rank
+  /// assembles is mapped here).
   void load_cell(Index cell, fem::CellValues<dim>& full_values,
                  fem::CellValues<dim>* volumetric_values) const {
+    if (!full_cache_->holds(cell)) {
+      map_cell(cell, full_values, volumetric_values);
+      return;
+    }
     full_cache_->load(cell, full_values);
     if (volumetric_values) volumetric_cache_->load(cell, *volumetric_values);
   }
@@ -113,6 +118,9 @@ public:
     return full_cache_->bytes() + volumetric_cache_->bytes() +
            (contact_cache_ ? contact_cache_->bytes() : 0);
   }
+  /// load_cell without the cache: gathers the cell's nodes and maps the values.
+  void map_cell(Index cell, fem::CellValues<dim>& full_values,
+                fem::CellValues<dim>* volumetric_values) const;
   /// Node coordinates (dim × n) and nodal velocities (dim × n; zero without `u`) of one cell.
   void gather(Index cell, const VectorX* u, Gradients& coordinates, Gradients& velocities) const;
 

@@ -2,19 +2,28 @@
 // Storing and restoring mapped cell and face values.
 #include "formflow/fem/values_cache.hpp"
 
+#include "formflow/core/error.hpp"
+
 #include <algorithm>
 
 namespace formflow::fem {
 
 template <int dim>
 CellValuesCache<dim>::CellValuesCache(Index n_cells, CellValues<dim> values,
-                                      const std::function<void(Index, CellValues<dim>&)>& map)
+                                      const std::function<void(Index, CellValues<dim>&)>& map,
+                                      std::span<const Index> cells)
     : n_points_(values.n_points()), n_nodes_(values.n_nodes()) {
   per_cell_ = static_cast<std::size_t>(n_points_) * (dim * n_nodes_ + 1 + dim);
-  data_.resize(per_cell_ * static_cast<std::size_t>(n_cells));
-  for (Index cell = 0; cell < n_cells; ++cell) {
+  const auto n_held = static_cast<Index>(cells.empty() ? n_cells : cells.size());
+  if (!cells.empty()) {
+    slot_.assign(static_cast<std::size_t>(n_cells), -1);
+    for (Index k = 0; k < n_held; ++k) slot_[cells[k]] = k;
+  }
+  data_.resize(per_cell_ * static_cast<std::size_t>(n_held));
+  for (Index k = 0; k < n_held; ++k) {
+    const Index cell = cells.empty() ? k : cells[k];
     map(cell, values);
-    Real* out = data_.data() + per_cell_ * static_cast<std::size_t>(cell);
+    Real* out = data_.data() + per_cell_ * static_cast<std::size_t>(k);
     for (int q = 0; q < n_points_; ++q)
       out = std::copy_n(values.gradients_[q].data(), dim * n_nodes_, out);
     out = std::copy(values.jxw_.begin(), values.jxw_.end(), out);
@@ -23,7 +32,9 @@ CellValuesCache<dim>::CellValuesCache(Index n_cells, CellValues<dim> values,
 }
 
 template <int dim> void CellValuesCache<dim>::load(Index cell, CellValues<dim>& values) const {
-  const Real* in = data_.data() + per_cell_ * static_cast<std::size_t>(cell);
+  const Index slot = slot_.empty() ? cell : slot_[cell];
+  FF_ASSERT(slot >= 0, "a cell the cache holds");
+  const Real* in = data_.data() + per_cell_ * static_cast<std::size_t>(slot);
   // Eigen assignments, not std::copy_n: a call to memmove per point cost more than the copy.
   using Gradients = typename CellValues<dim>::Gradients;
   for (int q = 0; q < n_points_; ++q, in += dim * n_nodes_)

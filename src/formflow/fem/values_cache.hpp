@@ -8,27 +8,36 @@
 
 #include <cstddef>
 #include <functional>
+#include <span>
+#include <vector>
 
 namespace formflow::fem {
 
-/// Gradients, JxW and points of CellValues at one rule for every cell.
-/// Memory: n_cells · n_points · (dim · n_nodes + 1 + dim) doubles.
+/// Gradients, JxW and points of CellValues at one rule for every cell of a list.
+/// Memory: cells · n_points · (dim · n_nodes + 1 + dim) doubles.
 template <int dim> class CellValuesCache {
 public:
   /// `map(cell, values)` maps `values` to `cell` (reinit, and in axisymmetry
-  /// weight_by_radius): whatever it leaves in `values` is what load() restores.
+  /// weight_by_radius): whatever it leaves in `values` is what load() restores. Caches
+  /// `cells` of a mesh of `n_cells` (empty: all of them; a distributed run's rank keeps
+  /// the cells it assembles, docs/petsc.md).
   CellValuesCache(Index n_cells, CellValues<dim> values,
-                  const std::function<void(Index, CellValues<dim>&)>& map);
+                  const std::function<void(Index, CellValues<dim>&)>& map,
+                  std::span<const Index> cells = {});
 
-  /// Puts cell `cell`'s mapped values into `values` (built for the same rule and order).
+  /// Whether `cell`'s values are here.
+  bool holds(Index cell) const { return slot_.empty() || slot_[cell] >= 0; }
+  /// Puts cell `cell`'s mapped values into `values` (built for the same rule and
+  /// order); `cell` must be held.
   void load(Index cell, CellValues<dim>& values) const;
 
-  std::size_t bytes() const { return data_.size() * sizeof(Real); }
+  std::size_t bytes() const { return data_.size() * sizeof(Real) + slot_.size() * sizeof(Index); }
 
 private:
   int n_points_ = 0, n_nodes_ = 0;
   std::size_t per_cell_ = 0; ///< doubles per cell: gradients, then JxW, then points
   std::vector<Real> data_;
+  std::vector<Index> slot_; ///< a cell's place in data_ (−1: not held); empty: all, in order
 };
 
 /// Shape values, gradients, JxW, normals and points of FacetValues for a list of faces

@@ -117,6 +117,7 @@ void update_duals(const assembly::FormingProblem<dim>& problem, const VectorX& u
   // One law dispatch for the whole loop: it evaluates the law twice per point.
   for_each_point_law(problem, [&](const auto& law_of) {
     for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
+      if (!problem.discretisation().assembles(cell)) continue; // another rank's (its tangent)
       problem.gather(cell, &u, coordinates, velocities);
       problem.gather(cell, &step, coordinates, step_velocities);
       problem.gather(cell, &next, coordinates, next_velocities);
@@ -165,6 +166,7 @@ void secant_duals(const assembly::FormingProblem<dim>& problem, const VectorX* p
   typename fem::CellValues<dim>::Gradients coordinates, previous_velocities, next_velocities;
   for_each_point_law(problem, [&](const auto& law_of) {
     for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
+      if (!problem.discretisation().assembles(cell)) continue; // another rank's (its tangent)
       if (previous) problem.gather(cell, previous, coordinates, previous_velocities);
       problem.gather(cell, &next, coordinates, next_velocities);
       problem.load_cell(cell, values, nullptr);

@@ -68,9 +68,9 @@ std::optional<std::string> petsc_option_syntax_error(std::string_view text) {
 }
 
 bool is_petsc_option_name(std::string_view name) {
-  static constexpr std::array<std::string_view, 12> families = {
-      "-ksp_", "-pc_",  "-mat_", "-fieldsplit_",  "-mg_",     "-sub_",
-      "-vec_", "-log_", "-info", "-options_left", "-malloc_", "-snes_"};
+  static constexpr std::array<std::string_view, 13> families = {
+      "-ksp_", "-pc_",  "-mat_",         "-fieldsplit_", "-mg_",   "-sub_",   "-vec_",
+      "-log_", "-info", "-options_left", "-malloc_",     "-snes_", "-memory_"};
   for (const std::string_view family : families)
     if (name.substr(0, family.size()) == family) return true;
   return false;

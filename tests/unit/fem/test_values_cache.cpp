@@ -57,6 +57,26 @@ TEST(CellValuesCache, LoadRestoresTheMappedValuesOfEachCell) {
   EXPECT_NE(loaded.gradients(4), other.gradients(4));
 }
 
+TEST(CellValuesCache, AListOfCellsHoldsThoseCellsOnly) {
+  // A distributed run's rank caches the cells it assembles (cells 3 and 1 of 5 here,
+  // in that order): it holds them, restores each one's own values, and stores no more.
+  const fem::QuadratureRule<2> rule = fem::gauss_rule<2>(3);
+  const std::vector<Index> own{3, 1};
+  const fem::CellValuesCache<2> cache(5, fem::CellValues<2>(2, rule), map_weighted, own);
+  EXPECT_EQ(cache.bytes(), sizeof(Real) * 2 * 9 * (2 * 9 + 1 + 2) + sizeof(Index) * 5);
+  for (Index cell = 0; cell < 5; ++cell)
+    EXPECT_EQ(cache.holds(cell), cell == 1 || cell == 3) << cell;
+  fem::CellValues<2> fresh(2, rule), loaded(2, rule);
+  for (const Index cell : own) {
+    map_weighted(cell, fresh);
+    cache.load(cell, loaded);
+    for (int q = 0; q < rule.size(); ++q) {
+      EXPECT_EQ(loaded.JxW(q), fresh.JxW(q)) << "cell " << cell << " point " << q;
+      EXPECT_EQ(loaded.gradients(q), fresh.gradients(q));
+    }
+  }
+}
+
 TEST(FacetValuesCache, LoadRestoresFacesWithReplacedNormals) {
   const fem::QuadratureRule<1> rule = fem::gauss_rule<1>(3);
   const int n_faces = 4; // face k of cell k: every local face once
