@@ -99,33 +99,6 @@ TEST(AdaptiveRun, IntermediateCyclesPredictAndTheLastOneCarriesTheFullEstimate) 
   EXPECT_FALSE(document["adapt"]["cycles"][2]["estimate_predicted"].get<bool>());
 }
 
-TEST(AdaptiveRun, DefaultCyclesAreCheapFarFromTheTargetAndFullNearIt) {
-  // The default scheme (step 2d of docs/error-estimation.md): a cycle marks with the
-  // cheap (linearised, predicted) estimate while its refined mesh's predicted error is
-  // more than twice the target, and with the full one from the first cycle that comes,
-  // or is expected to come, within twice the target.
-  io::Case far = two_cycles(); // the target (1e-9) out of reach: cycle 1 is cheap
-  far.adapt.max_cycles = 3;
-  const post::AdaptRecord far_record = app::simulate(far).results.adapt;
-  ASSERT_EQ(far_record.cycles.size(), 3u);
-  EXPECT_FALSE(far_record.cycles[0].estimate_predicted);
-  EXPECT_TRUE(far_record.cycles[1].estimate_predicted) << "far from the target: cheap";
-  EXPECT_FALSE(far_record.cycles[2].estimate_predicted) << "the last cycle's bar is full";
-  // A target 1.5 times below cycle 0's refined mesh's own error (the tail beyond it,
-  // q = ½ on cycle 0: half its estimate, which is the tail alone above the target):
-  // not reached on that mesh, but within the window, so cycle 1 is full (at once: the
-  // remesh's growth only brings it nearer).
-  ASSERT_TRUE(far_record.cycles[0].estimate.has_value());
-  // Three cycles allowed, so that cycle 1 is not full only for being the last.
-  io::Case near = far;
-  near.adapt.target_error =
-      0.5 * *far_record.cycles[0].estimate / (1.5 * far_record.cycles[0].load);
-  const post::AdaptRecord near_record = app::simulate(near).results.adapt;
-  ASSERT_GE(near_record.cycles.size(), 2u) << near_record.stop;
-  EXPECT_FALSE(near_record.cycles[1].refined_mesh) << "not reached on cycle 0's refined mesh";
-  EXPECT_FALSE(near_record.cycles[1].estimate_predicted) << "within twice the target: full";
-}
-
 TEST(AdaptiveRun, EndsOnTheEstimatesRefinedMeshWhenItsOwnErrorIsWithinTarget) {
   // The benchmark in the rate-insensitive setting (α = 1e-4, d = 1e-4) at h = 1:
   // p_1 = 2.830, p_{1/2} − p_1 = −0.129, penalties 4e-4. The first estimate is

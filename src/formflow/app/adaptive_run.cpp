@@ -156,29 +156,6 @@ struct CheapEstimateScale {
   }
 };
 
-/// Which cycles run with the cheap estimate (docs/error-estimation.md, "Adaptivity",
-/// steps 2c and 2d). The full estimate decides every stop either way.
-enum class CheapCycles {
-  /// solver.load_error = "linearized" (step 2c, session 10): every cycle after the
-  /// first is cheap; one whose prediction is within the target gets the full estimate too.
-  UntilWithinTarget,
-  /// The default (step 2d, session 15): cycles are cheap while the prediction of their
-  /// refined mesh's own error is more than `full_estimate_window` times the target;
-  /// from the first cycle that comes that near (or is expected to), every cycle is full,
-  /// so the cycles that end the run are marked by the settled indicators.
-  UntilNearTarget,
-};
-
-/// How near the target (a multiple of it) a cheap prediction hands over to the full
-/// estimate, in the default scheme. The prediction tracked the full estimate within
-/// 0.77–1.19 on the ram's cycles (session 10), but on Hill's wedge cycles predicted
-/// within the target had full estimates above it, and the linearised marking of its
-/// last cycles was worse (6× the CPU of all-full cycles). Within 2× of the target are
-/// the cycles that end the run: there both the stop and the marking are the full
-/// estimate's; measured in session 15 (docs/error-estimation.md, "The 10 s target
-/// (session 15)").
-constexpr Real full_estimate_window = 2.0;
-
 /// The case of an intermediate cycle: the linearised estimate, indicators only.
 io::Case cheap_cycle_case(const io::Case& run) {
   io::Case cheap = run;
@@ -187,27 +164,19 @@ io::Case cheap_cycle_case(const io::Case& run) {
   return cheap;
 }
 
-/// How far a cheap cycle's predicted errors are from the target, as multiples of it
-/// (≤ 1: within it): its own predicted full estimate and its refined mesh's predicted
-/// own error, each over the target's share of its load.
-struct PredictedDistance {
-  Real estimate = 0.0;
-  Real refined_mesh = 0.0;
-  Real nearest() const { return std::min(estimate, refined_mesh); }
-};
-
-/// For a cycle that ran with the cheap estimate: its predicted full estimate (written
-/// into `entry`) and how far that and its refined mesh's own error are from the target.
-PredictedDistance predicted_distance(const CheapEstimateScale& scale, const post::Results& results,
-                                     Real target, post::AdaptCycle& entry) {
+/// For a cycle that ran with the cheap estimate: its predicted full estimate, and
+/// whether that (or its refined mesh's own error) is within the target, so that the
+/// full estimate must decide. Writes the prediction into `entry`.
+bool predicts_target(const CheapEstimateScale& scale, const post::Results& results, Real target,
+                     post::AdaptCycle& entry) {
   const Real change = scale.settled_per_linearised * results.load_error.enriched_change;
   const Real q = scale.ratio;
   entry.estimate = post::discretisation_tail(change, q) + scale.regularisations;
   entry.estimate_predicted = true;
   const Real load = results.pressure.ram_reaction;
   const Real refined_error = post::tail_beyond_refined(change, q) + scale.regularisations;
-  return {*entry.estimate / (target * std::abs(load)),
-          refined_error / (target * std::abs(load + change))};
+  return *entry.estimate <= target * std::abs(load) ||
+         refined_error <= target * std::abs(load + change);
 }
 
 /// Replaces a cheap cycle's estimate by the full one (`run`'s) on the same solution and
@@ -246,26 +215,19 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   io::Case run = case_;
   run.adapt.target_error = 0; // each cycle is a plain run
   run.adapt.cycle_target = case_.adapt.target_error;
-  // The stops are decided by the full ("refined") estimate. Cycles far from the target
-  // mark with the cheap one (step 2d of docs/error-estimation.md); solver.load_error =
-  // "linearized" asks for session 10's scheme (step 2c: cheap until a prediction is
-  // within the target, measured much slower on Hill's wedge).
-  const CheapCycles cheap_cycles = case_.solver.load_error == solvers::LoadErrorMethod::Linearized
-                                       ? CheapCycles::UntilWithinTarget
-                                       : CheapCycles::UntilNearTarget;
-  const Real window = cheap_cycles == CheapCycles::UntilWithinTarget ? 1.0 : full_estimate_window;
+  // The stops are decided by the full ("refined") estimate. solver.load_error =
+  // "linearized" asks for cheap intermediate cycles (step 2c of docs/error-estimation.md:
+  // measured faster on the sticking ram, much slower on Hill's wedge, so not the default).
+  const bool cheap_cycles = case_.solver.load_error == solvers::LoadErrorMethod::Linearized;
   run.solver.load_error = solvers::LoadErrorMethod::Refined;
   const post::AdaptSettings& adapt = case_.adapt;
   post::AdaptRecord record;
   CycleClock cycle_clock;
   Simulation simulation = simulate(run, on_iteration); // cycle 0: the case's mesh
-  // Later cycles mark with the cheap estimate while far from the target; cycle 0's full
-  // and linearised estimates on the same solution calibrate its predictions.
+  // Later cycles mark with the cheap estimate; the full one only where it may stop.
   const io::Case cheap = cheap_cycle_case(run);
-  CheapEstimateScale scale = calibrate_on_first_cycle(cheap, simulation);
-  // Whether cycles may still be cheap: in the default scheme, no longer once one has
-  // come within the window of the target (or is expected to).
-  bool cheap_phase = true;
+  CheapEstimateScale scale =
+      cheap_cycles ? calibrate_on_first_cycle(cheap, simulation) : CheapEstimateScale{};
   bool cheap_cycle = false;
   for (int cycle = 0;; ++cycle) {
     const post::Results& results = simulation.results;
@@ -288,9 +250,8 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
       finish("no error estimate: " + results.load_error.unavailable);
       break;
     }
-    // A cheap cycle whose prediction is far from the target only marks; one that may stop
-    // or is near it (and the last cycle, whatever stops it) gets the full estimate, which
-    // decides.
+    // A cheap cycle whose prediction is above the target only marks; one that may stop
+    // (and the last cycle, whatever stops it) gets the full estimate, which decides.
     bool fully_estimated = !cheap_cycle;
     const auto estimate_fully_once = [&] {
       if (!fully_estimated) estimate_fully(run, simulation, scale);
@@ -298,18 +259,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
       entry.estimate = results.load_error.error;
       entry.estimate_predicted = false;
     };
-    // The refined mesh's own error as a multiple of the target: predicted on a cheap
-    // cycle; on a full one its tail (the penalties' part is not solved above target).
-    Real refined_distance = 0.0;
-    bool full = !cheap_cycle;
-    if (cheap_cycle) {
-      const PredictedDistance distance =
-          predicted_distance(scale, results, adapt.target_error, entry);
-      refined_distance = distance.refined_mesh;
-      full = distance.nearest() <= window;
-      if (full && cheap_cycles == CheapCycles::UntilNearTarget) cheap_phase = false;
-    }
-    if (full) {
+    if (!cheap_cycle || predicts_target(scale, results, adapt.target_error, entry)) {
       estimate_fully_once();
       if (!results.load_error.error) {
         finish("no error estimate: " + results.load_error.unavailable);
@@ -336,13 +286,6 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
       finish("adaptivity remeshes plane channels only");
       break;
     }
-    if (fully_estimated) {
-      const post::LoadErrorEstimate& estimate = results.load_error;
-      const Real change = estimate.enriched_change;
-      refined_distance = (post::tail_beyond_refined(change, estimate.ratio) +
-                          std::abs(estimate.penalty_change.value_or(0.0))) /
-                         (adapt.target_error * std::abs(entry.load + change));
-    }
     const std::vector<bool> marked =
         post::dorfler_marking(results.load_error.cell_indicators, adapt.fraction);
     entry.marked = std::count(marked.begin(), marked.end(), true);
@@ -364,15 +307,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     cycle_clock.stamp(entry, results);
     record.cycles.push_back(entry);
     cycle_clock = CycleClock{};
-    // The default scheme looks one cycle ahead: the error falls about as the dofs grow
-    // (dofs^−1.04 on the ram, ^−0.9 on the wedge, cycles 3–7), so a next mesh expected
-    // within the window is solved with the full estimate at once, not cheap first.
-    const Real remesh_growth =
-        static_cast<Real>(next.n_nodes()) / static_cast<Real>(current.n_nodes());
-    if (cheap_cycles == CheapCycles::UntilNearTarget &&
-        refined_distance / std::max<Real>(1.0, remesh_growth) <= window)
-      cheap_phase = false;
-    cheap_cycle = scale.calibrated() && cheap_phase;
+    cheap_cycle = scale.calibrated();
     simulation = simulate_from<2>(cheap_cycle ? cheap : run, std::move(next), start, on_iteration);
 #else
     finish("adaptivity needs Gmsh (FORMFLOW_WITH_GMSH=OFF)");
