@@ -144,6 +144,13 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
                               tolerance));
   EXPECT_TRUE(testing::approx(pressure.at("mean_hydrostatic_near_ram").get<Real>(),
                               serial_pressure.mean_hydrostatic_near_ram, tolerance));
+  // The contact parts' measures, each rank's faces summed: every Γ3 face once (a face
+  // counted twice or missed moves them by a whole face's share, far above round-off).
+  const auto& contact = run.summary.at("contact");
+  EXPECT_TRUE(testing::approx(contact.at("container").at("length").get<Real>(),
+                              serial.results.container_zones.length, tolerance));
+  EXPECT_TRUE(testing::approx(contact.at("die").at("length").get<Real>(),
+                              serial.results.die_zones.length, tolerance));
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
   // PETSc's graph partitioner split the cells (not the slabs it falls back to).
   EXPECT_EQ(run.summary.at("linear_algebra").at("partition"),

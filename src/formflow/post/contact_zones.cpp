@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Stick and slip lengths of the contact parts.
+// Stick and slip lengths of the contact parts (in a distributed run: over the rank's own
+// faces, summed over the ranks).
 #include "formflow/post/post_process.hpp"
+
+#include <array>
 
 namespace formflow::post {
 
@@ -10,7 +13,11 @@ void contact_zones(const assembly::FormingProblem<dim>& problem,
                    ContactZones& die) {
   container = {};
   die = {};
+  const auto& discretisation = problem.discretisation();
   for (const auto& point : contact) {
+    // A distributed run: the faces of the rank's own cells here, the sums over the ranks
+    // below (each Γ3 face belongs to the one cell it bounds).
+    if (!discretisation.assembles(discretisation.mesh().facets[point.facet].cell)) continue;
     ContactZones& zones =
         problem.discretisation().mesh().facets[point.facet].label == mesh::BoundaryLabel::Die
             ? die
@@ -22,6 +29,13 @@ void contact_zones(const assembly::FormingProblem<dim>& problem,
       if (problem.discretisation().axisymmetric()) length /= point.position[1];
     zones.length += length;
     if (point.sticking) zones.stick_length += length;
+  }
+  if (const auto& distribution = discretisation.distribution(); distribution.distributed()) {
+    std::array<Real, 4> sums{container.length, container.stick_length, die.length,
+                             die.stick_length};
+    distribution.sum_over_ranks(sums);
+    container.length = sums[0], container.stick_length = sums[1];
+    die.length = sums[2], die.stick_length = sums[3];
   }
 }
 
