@@ -4,8 +4,8 @@
 #include "formflow/solvers/petsc/petsc_solver.hpp"
 
 #include "formflow/core/error.hpp"
-#include "formflow/solvers/petsc/distributed_numbering.hpp"
 #include "formflow/solvers/petsc/distributed_saddle_point.hpp"
+#include "formflow/solvers/petsc/distributed_system.hpp"
 #include "formflow/solvers/petsc/krylov_start.hpp"
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
@@ -39,13 +39,10 @@ public:
     if (ksp_) KSPDestroy(&ksp_);
     for (IS& field : fields_)
       if (field) ISDestroy(&field);
-    distributed_fields_.reset();
     if (matrix_) MatDestroy(&matrix_);
     if (schur_matrix_) MatDestroy(&schur_matrix_);
     if (rhs_) VecDestroy(&rhs_);
     if (solution_) VecDestroy(&solution_);
-    if (to_all_) VecScatterDestroy(&to_all_);
-    if (all_) VecDestroy(&all_);
   }
   PetscSolver(const PetscSolver&) = delete;
   PetscSolver& operator=(const PetscSolver&) = delete;
@@ -110,17 +107,11 @@ public:
     petsc::ErrorCapture capture;
     const auto n = static_cast<PetscInt>(rhs.size());
     if (distributed_ && whole) {
-      write_owned_rows(rhs_, in_solved_unknowns(rhs));
+      distributed_system_.write_owned_rows(rhs_, in_solved_unknowns(rhs));
     } else if (distributed_) {
-      // The rank's rhs is its own cells' loads: PETSc's stash sends each entry to the
-      // rank that owns its row, where they add up. In the frames: Qᵀ of a share is the
+      // The rank's rhs is its own cells' loads. In the frames: Qᵀ of a share is the
       // share of Qᵀ b (Q is node-local).
-      const VectorX share = in_solved_unknowns(rhs);
-      VecSet(rhs_, 0.0);
-      for (Index i = 0; i < share.size(); ++i)
-        if (share[i] != 0.0) VecSetValue(rhs_, petsc_index_[i], share[i], ADD_VALUES);
-      VecAssemblyBegin(rhs_);
-      VecAssemblyEnd(rhs_);
+      distributed_system_.sum_shares(rhs_, in_solved_unknowns(rhs));
     } else {
       write(rhs_, in_solved_unknowns(rhs)); // Qᵀ b: the system is Qᵀ K Q y = Qᵀ b
     }
@@ -131,7 +122,7 @@ public:
     // rank writes its own rows.
     const bool guessed = guess && petsc::is_iterative(ksp_);
     if (guessed && distributed_)
-      write_owned_rows(solution_, in_solved_unknowns(std::move(*guess)));
+      distributed_system_.write_owned_rows(solution_, in_solved_unknowns(std::move(*guess)));
     else if (guessed)
       write(solution_, in_solved_unknowns(std::move(*guess)));
     KSPSetInitialGuessNonzero(ksp_, guessed ? PETSC_TRUE : PETSC_FALSE);
@@ -146,15 +137,7 @@ public:
     const PetscScalar* result = nullptr;
     solution.resize(n);
     if (distributed_) {
-      // First slice of issue 20: every rank gets the whole solution (the nonlocal
-      // friction average and the post-processing read any dof); a ghosted vector of
-      // the own cells' dofs is the design beyond it (docs/petsc.md).
-      VecScatterBegin(to_all_, solution_, all_, INSERT_VALUES, SCATTER_FORWARD);
-      VecScatterEnd(to_all_, solution_, all_, INSERT_VALUES, SCATTER_FORWARD);
-      VecGetArrayRead(all_, &result);
-      VectorX solved(static_cast<Index>(petsc_index_.size())); // laid out, if it is
-      for (Index i = 0; i < solved.size(); ++i) solved[i] = result[petsc_index_[i]];
-      VecRestoreArrayRead(all_, &result);
+      VectorX solved = distributed_system_.gather(solution_); // laid out, if it is
       solution = layout_.empty() ? std::move(solved)
                                  : layout_.restrict(std::span<const Real>(
                                        solved.data(), static_cast<std::size_t>(solved.size())));
@@ -331,23 +314,24 @@ private:
   /// (each rank its own), the modes as distributed vectors and the Schur matrix as
   /// MPIAIJ, all made by copy_distributed.
   bool split_distributed_fields(PC preconditioner) {
-    FF_ASSERT(distributed_fields_, "the fields are numbered at the first copy");
+    const petsc::DistributedFields* fields = distributed_system_.fields();
+    FF_ASSERT(fields, "the fields are numbered at the first copy");
     if (!near_null_space_.empty()) {
       std::vector<VectorX> modes = near_null_space_;
       for (VectorX& mode : modes) {
-        VectorX padded = VectorX::Zero(layout_.empty() ? static_cast<Index>(petsc_index_.size())
-                                                       : layout_.n_rows());
+        VectorX padded =
+            VectorX::Zero(layout_.empty() ? distributed_system_.n_solved() : layout_.n_rows());
         padded.head(n_first_) = mode;
         // y = Qᵀ x laid out, as the matrix (zero on the unused slots).
         mode = in_solved_unknowns(std::move(padded)).head(n_first_solved());
       }
-      petsc::attach_distributed_near_null_space(modes, *distributed_fields_);
+      petsc::attach_distributed_near_null_space(modes, *fields);
     }
     // Laid out node by node: each rank owns whole nodes (share_pattern), so the split's
     // index set has the block size that systems BoomerAMG reads.
-    if (!layout_.empty()) ISSetBlockSize(distributed_fields_->velocity(), layout_.components());
-    PCFieldSplitSetIS(preconditioner, "u", distributed_fields_->velocity());
-    PCFieldSplitSetIS(preconditioner, "p", distributed_fields_->pressure());
+    if (!layout_.empty()) ISSetBlockSize(fields->velocity(), layout_.components());
+    PCFieldSplitSetIS(preconditioner, "u", fields->velocity());
+    PCFieldSplitSetIS(preconditioner, "p", fields->pressure());
     if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
     return true;
   }
@@ -476,18 +460,9 @@ private:
   }
 
   /// A distributed run (issue 20; app/main.cpp said so, and PETSC_COMM_WORLD has more
-  /// than one rank): `given` is this rank's share, the entries of its own
-  /// cells (assembly/discretisation.hpp) in the global free numbering; the ranks' shares
-  /// add up to the system. The first call numbers the free dofs so that each rank owns a
-  /// contiguous range (a dof belongs to the lowest rank whose cells touch it, i.e. whose
-  /// share has its diagonal) and preallocates the MPIAIJ matrix from every rank's
-  /// entries (MatSetPreallocationCOO: off-rank rows go to their owners); every call then
-  /// hands the values over with MatSetValuesCOO, which sums the ranks' duplicates. No
-  /// rank holds more than its share and its own rows. As in a sequential run, the share
-  /// goes to the contact nodes' frames and the node layout through a ValueMap made once
-  /// per pattern: each step is one pass over the share's values into the COO values,
-  /// with no rotated or laid-out copy of the share (they cost a rank more time than its
-  /// Krylov solves at h = 0.125: docs/benchmarks.md "Distributed saddle point").
+  /// than one rank): `given` is this rank's share, the entries of its own cells
+  /// (assembly/discretisation.hpp) in the global free numbering, handed to PETSc by
+  /// petsc::DistributedSystem; the frames and the node layout as in a sequential run.
   void copy_distributed(const assembly::SparseMatrix& given) {
     if (!frames_.empty() && frame_matrix_.rows() != given.rows())
       frame_matrix_ = assembly::frame_matrix(frames_, given.rows());
@@ -504,66 +479,18 @@ private:
       if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
         layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, given.rows());
     }
-    const bool symmetric_lower = storage_ == MatrixStorage::SymmetricLower;
-    const bool same_pattern = matrix_ && input_pattern_.matches(given);
-    int rebuild = same_pattern ? 0 : 1;
-    MPI_Allreduce(MPI_IN_PLACE, &rebuild, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
-    if (rebuild) {
-      if (matrix_) MatDestroy(&matrix_);
-      if (rhs_) VecDestroy(&rhs_);
-      if (solution_) VecDestroy(&solution_);
-      if (to_all_) VecScatterDestroy(&to_all_);
-      if (all_) VecDestroy(&all_);
-      if (schur_matrix_) MatDestroy(&schur_matrix_);
-      distributed_fields_.reset();
-      value_map_ = {};
-      input_pattern_ = {};
-      const Index n_velocity = n_first_ > 0 ? n_first_ : given.rows();
-      // Both triangles, row by row, in the layout's rows.
-      const petsc::CsrPattern pattern =
-          petsc::share_pattern(given, symmetric_lower, frames, layout_, n_velocity);
-      const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
-      petsc::DistributedNumbering numbering = petsc::number_by_owner(pattern.outer, pattern.inner);
-      petsc_index_ = std::move(numbering.petsc_index);
-      const PetscInt owned = numbering.owned;
-      // coo_entries reads a compressed-column pattern: given rows, its (row, column)
-      // pairs come out transposed, and its sources are the pattern's value indices.
-      petsc::CooEntries coo = petsc::coo_entries(pattern.outer, pattern.inner, petsc_index_,
-                                                 /*symmetric_lower=*/false);
-      std::swap(coo.rows, coo.columns);
-      if (MatCreate(PETSC_COMM_WORLD, &matrix_) != 0 ||
-          MatSetSizes(matrix_, owned, owned, n, n) != 0 || MatSetType(matrix_, MATMPIAIJ) != 0 ||
-          MatSetPreallocationCOO(matrix_, static_cast<PetscCount>(coo.rows.size()), coo.rows.data(),
-                                 coo.columns.data()) != 0) {
-        if (matrix_) MatDestroy(&matrix_);
-        return;
-      }
-      if (symmetric_lower) {
-        MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE);
-        MatSetOption(matrix_, MAT_SPD, PETSC_TRUE);
-      }
-      MatCreateVecs(matrix_, &solution_, &rhs_);
-      VecScatterCreateToAll(solution_, &to_all_, &all_);
-      if (n_first_ > 0 && n_first_solved() < n) {
-        // A saddle point: its fields in PETSc's rows (each rank its own).
-        PetscInt low = 0, high = 0;
-        MatGetOwnershipRange(matrix_, &low, &high);
-        distributed_fields_ =
-            std::make_unique<petsc::DistributedFields>(petsc_index_, low, high, n_first_solved());
-      }
-      value_map_ = petsc::ValueMap(given, symmetric_lower, frames, layout_, pattern.outer,
-                                   pattern.inner, n_velocity);
-      input_pattern_ = petsc::InputPattern(given);
-      share_values_.assign(pattern.inner.size(), 0.0);
-    }
-    // The COO entries are the pattern's values in order.
-    value_map_.fill(given, share_values_);
-    if (MatSetValuesCOO(matrix_, share_values_.data(), INSERT_VALUES) != 0) MatDestroy(&matrix_);
+    const petsc::DistributedSystem::Copy copied =
+        distributed_system_.copy(given, storage_ == MatrixStorage::SymmetricLower, frames, layout_,
+                                 n_first_ > 0 ? n_first_ : given.rows(),
+                                 n_first_ > 0 ? n_first_solved() : 0, &matrix_, &rhs_, &solution_);
+    if (copied == petsc::DistributedSystem::Copy::refused) return;
+    // The Schur matrix lives on the fields' rows: made again with them.
+    if (copied == petsc::DistributedSystem::Copy::rebuilt && schur_matrix_)
+      MatDestroy(&schur_matrix_);
     // The Schur matrix's share given for this step (set_schur_preconditioner).
-    if (distributed_fields_ &&
-        schur_share_.rows() == static_cast<Index>(petsc_index_.size()) - n_first_solved()) {
-      petsc::copy_distributed_schur_matrix(schur_share_, *distributed_fields_, schur_block_,
-                                           &schur_matrix_);
+    if (const petsc::DistributedFields* fields = distributed_system_.fields();
+        fields && schur_share_.rows() == distributed_system_.n_solved() - n_first_solved()) {
+      petsc::copy_distributed_schur_matrix(schur_share_, *fields, schur_block_, &schur_matrix_);
       schur_share_ = {};
     }
   }
@@ -571,19 +498,6 @@ private:
   /// The velocity rows PETSc solves for: the free ones, or the layout's.
   Index n_first_solved() const {
     return layout_.empty() ? n_first_ : layout_.n_velocity_embedded();
-  }
-
-  /// Distributed: a vector that every rank holds whole (Newton's residual, the GMRES
-  /// vectors, a Krylov guess) into `target`: each rank writes its own rows, no message sent.
-  void write_owned_rows(Vec target, const VectorX& whole) const {
-    PetscInt low = 0, high = 0;
-    VecGetOwnershipRange(target, &low, &high);
-    PetscScalar* values = nullptr;
-    VecGetArray(target, &values);
-    for (Index i = 0; i < whole.size(); ++i)
-      if (const PetscInt row = petsc_index_[i]; row >= low && row < high)
-        values[row - low] = whole[i];
-    VecRestoreArray(target, &values);
   }
 
   [[noreturn]] void refuse(const std::string& message, const std::string& hint) const {
@@ -601,28 +515,24 @@ private:
   Mat matrix_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
-  petsc::ValueMap value_map_;         ///< where PETSc's values come from (distributed: the COO's)
-  petsc::InputPattern input_pattern_; ///< the pattern of the last copy
-  std::vector<PetscScalar> share_values_;            ///< distributed: the COO values of the share
+  petsc::ValueMap value_map_;                        ///< sequential: where PETSc's values come from
+  petsc::InputPattern input_pattern_;                ///< sequential: the pattern of the last copy
   std::unique_ptr<petsc::SaddlePointNest> nest_;     ///< sequential: the saddle point's blocks
   assembly::SparseMatrix coupling_, pressure_block_; ///< take_saddle_point_blocks' B and C
   std::size_t output_nonzeros_ = 0;                  ///< sequential: the values of matrix_
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
-  std::vector<PetscInt> petsc_index_; ///< distributed: solved row (free or laid out) → PETSc's
-  VecScatter to_all_ = nullptr;       ///< distributed: the solution to every rank
-  Vec all_ = nullptr;
-  Index n_first_ = 0;                    ///< velocity dofs of a saddle point (set_fields)
-  std::vector<VectorX> near_null_space_; ///< the velocity block's rigid-body modes
-  IS fields_[2] = {nullptr, nullptr};    ///< fieldsplit's "u" and "p"
-  Mat schur_matrix_ = nullptr;           ///< the Schur complement's preconditioning matrix
-  assembly::SparseMatrix schur_share_;   ///< distributed: its share, until copied
-  std::unique_ptr<petsc::DistributedFields> distributed_fields_; ///< distributed saddle point
-  Index schur_block_ = 0;                    ///< its cell block size (0: not block diagonal)
-  std::vector<assembly::LocalFrame> frames_; ///< PETSc solves for y, x = Q y (set_local_frames)
-  assembly::SparseMatrix frame_matrix_;      ///< Q, made at the first copy
-  int components_ = 1;                       ///< velocity components per node
-  std::vector<Index> dof_of_velocity_;       ///< velocity row → mesh dof (set_velocity_nodes)
-  petsc::NodeBlockLayout layout_;            ///< the velocity block node by node, if asked
+  petsc::DistributedSystem distributed_system_; ///< distributed: numbering, COO, gather
+  Index n_first_ = 0;                           ///< velocity dofs of a saddle point (set_fields)
+  std::vector<VectorX> near_null_space_;        ///< the velocity block's rigid-body modes
+  IS fields_[2] = {nullptr, nullptr};           ///< fieldsplit's "u" and "p"
+  Mat schur_matrix_ = nullptr;                  ///< the Schur complement's preconditioning matrix
+  assembly::SparseMatrix schur_share_;          ///< distributed: its share, until copied
+  Index schur_block_ = 0;                       ///< its cell block size (0: not block diagonal)
+  std::vector<assembly::LocalFrame> frames_;    ///< PETSc solves for y, x = Q y (set_local_frames)
+  assembly::SparseMatrix frame_matrix_;         ///< Q, made at the first copy
+  int components_ = 1;                          ///< velocity components per node
+  std::vector<Index> dof_of_velocity_;          ///< velocity row → mesh dof (set_velocity_nodes)
+  petsc::NodeBlockLayout layout_;               ///< the velocity block node by node, if asked
   bool layout_decided_ = false;
   petsc::DefaultOptions defaults_; ///< the saddle-point defaults in the database
   long iterations_ = 0;

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+#include "formflow/solvers/petsc/distributed_system.hpp"
+
+#include "formflow/solvers/petsc/distributed_numbering.hpp"
+
+#include <mpi.h>
+
+#include <utility>
+
+namespace formflow::solvers::petsc {
+
+void DistributedSystem::clear() {
+  if (to_all_) VecScatterDestroy(&to_all_);
+  if (all_) VecDestroy(&all_);
+  fields_.reset();
+  value_map_ = {};
+  input_pattern_ = {};
+}
+
+DistributedSystem::Copy DistributedSystem::copy(const assembly::SparseMatrix& share,
+                                                bool symmetric_lower,
+                                                const assembly::SparseMatrix& frames,
+                                                const NodeBlockLayout& layout, Index n_velocity,
+                                                Index n_first_solved, Mat* matrix, Vec* rhs,
+                                                Vec* solution) {
+  // Every rank rebuilds if any rank's pattern changed: the numbering is collective.
+  int rebuild = *matrix && input_pattern_.matches(share) ? 0 : 1;
+  MPI_Allreduce(MPI_IN_PLACE, &rebuild, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  if (rebuild) {
+    if (*matrix) MatDestroy(matrix);
+    if (*rhs) VecDestroy(rhs);
+    if (*solution) VecDestroy(solution);
+    clear();
+    // Both triangles, row by row, in the layout's rows.
+    const CsrPattern pattern = share_pattern(share, symmetric_lower, frames, layout, n_velocity);
+    const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
+    DistributedNumbering numbering = number_by_owner(pattern.outer, pattern.inner);
+    petsc_index_ = std::move(numbering.petsc_index);
+    const PetscInt owned = numbering.owned;
+    // coo_entries reads a compressed-column pattern: given rows, its (row, column)
+    // pairs come out transposed, and its sources are the pattern's value indices.
+    CooEntries coo = coo_entries(pattern.outer, pattern.inner, petsc_index_,
+                                 /*symmetric_lower=*/false);
+    std::swap(coo.rows, coo.columns);
+    if (MatCreate(PETSC_COMM_WORLD, matrix) != 0 || MatSetSizes(*matrix, owned, owned, n, n) != 0 ||
+        MatSetType(*matrix, MATMPIAIJ) != 0 ||
+        MatSetPreallocationCOO(*matrix, static_cast<PetscCount>(coo.rows.size()), coo.rows.data(),
+                               coo.columns.data()) != 0) {
+      if (*matrix) MatDestroy(matrix);
+      return Copy::refused;
+    }
+    if (symmetric_lower) {
+      MatSetOption(*matrix, MAT_SYMMETRIC, PETSC_TRUE);
+      MatSetOption(*matrix, MAT_SPD, PETSC_TRUE);
+    }
+    MatCreateVecs(*matrix, solution, rhs);
+    VecScatterCreateToAll(*solution, &to_all_, &all_);
+    if (n_first_solved > 0 && n_first_solved < n) {
+      // A saddle point: its fields in PETSc's rows (each rank its own).
+      PetscInt low = 0, high = 0;
+      MatGetOwnershipRange(*matrix, &low, &high);
+      fields_ = std::make_unique<DistributedFields>(petsc_index_, low, high, n_first_solved);
+    }
+    value_map_ =
+        ValueMap(share, symmetric_lower, frames, layout, pattern.outer, pattern.inner, n_velocity);
+    input_pattern_ = InputPattern(share);
+    coo_values_.assign(pattern.inner.size(), 0.0);
+  }
+  // The COO entries are the pattern's values in order.
+  value_map_.fill(share, coo_values_);
+  if (MatSetValuesCOO(*matrix, coo_values_.data(), INSERT_VALUES) != 0) {
+    MatDestroy(matrix);
+    return Copy::refused;
+  }
+  return rebuild ? Copy::rebuilt : Copy::values;
+}
+
+void DistributedSystem::sum_shares(Vec target, const VectorX& share) const {
+  VecSet(target, 0.0);
+  for (Index i = 0; i < share.size(); ++i)
+    if (share[i] != 0.0) VecSetValue(target, petsc_index_[i], share[i], ADD_VALUES);
+  VecAssemblyBegin(target);
+  VecAssemblyEnd(target);
+}
+
+void DistributedSystem::write_owned_rows(Vec target, const VectorX& whole) const {
+  PetscInt low = 0, high = 0;
+  VecGetOwnershipRange(target, &low, &high);
+  PetscScalar* values = nullptr;
+  VecGetArray(target, &values);
+  for (Index i = 0; i < whole.size(); ++i)
+    if (const PetscInt row = petsc_index_[i]; row >= low && row < high)
+      values[row - low] = whole[i];
+  VecRestoreArray(target, &values);
+}
+
+VectorX DistributedSystem::gather(Vec solution) const {
+  // Every rank gets the whole solution (the nonlocal friction average and the
+  // post-processing read any dof); a ghosted vector of the own cells' dofs is the
+  // design beyond it (docs/petsc.md).
+  VecScatterBegin(to_all_, solution, all_, INSERT_VALUES, SCATTER_FORWARD);
+  VecScatterEnd(to_all_, solution, all_, INSERT_VALUES, SCATTER_FORWARD);
+  const PetscScalar* result = nullptr;
+  VecGetArrayRead(all_, &result);
+  VectorX solved(n_solved());
+  for (Index i = 0; i < solved.size(); ++i) solved[i] = result[petsc_index_[i]];
+  VecRestoreArrayRead(all_, &result);
+  return solved;
+}
+
+} // namespace formflow::solvers::petsc
