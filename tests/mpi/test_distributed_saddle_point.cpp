@@ -38,6 +38,8 @@ struct DistributedSaddleCase {
   std::string name;
   std::string case_path;
   std::vector<io::Override> edits;
+  /// More of solver.petsc_options (both runs).
+  std::string petsc_options = {};
 };
 
 void PrintTo(const DistributedSaddleCase& c, std::ostream* out) {
@@ -52,8 +54,8 @@ std::vector<io::Override> saddle_edits(const DistributedSaddleCase& c) {
       {"solver.linear", "petsc"},
       {"solver.method", "secant"},
       {"solver.tolerance", fmt::format("{}", saddle_delta)},
-      {"solver.petsc_options",
-       fmt::format("-ksp_rtol {} -formflow_inexact_steps 0", saddle_krylov_tolerance)}};
+      {"solver.petsc_options", fmt::format("-ksp_rtol {} -formflow_inexact_steps 0 {}",
+                                           saddle_krylov_tolerance, c.petsc_options)}};
   edits.insert(edits.end(), c.edits.begin(), c.edits.end());
   return edits;
 }
@@ -155,9 +157,18 @@ const DistributedSaddleCase paper_saddle{
 const DistributedSaddleCase round_saddle{
     "round_quarter_saddle_point", "cases/round-rod-3d.toml", {{"mesh.size", "0.5"}}};
 
+/// The same as one MPIAIJ matrix of the whole saddle point (each rank's whole share
+/// matrix), as a direct solver would need it, instead of the default four-block MATNEST
+/// (petsc::DistributedSaddleNest).
+const DistributedSaddleCase round_saddle_one_matrix{"round_quarter_saddle_point_one_matrix",
+                                                    "cases/round-rod-3d.toml",
+                                                    {{"mesh.size", "0.5"}},
+                                                    "-formflow_saddle_point_nest 0"};
+
 INSTANTIATE_TEST_SUITE_P(Cases, DistributedSaddlePointMatchesSerial,
                          ::testing::Values(std::pair(paper_saddle, 2), std::pair(round_saddle, 2),
-                                           std::pair(paper_saddle, 4)),
+                                           std::pair(paper_saddle, 4),
+                                           std::pair(round_saddle_one_matrix, 2)),
                          [](const auto& info) {
                            return info.param.first.name + "_np" + std::to_string(info.param.second);
                          });

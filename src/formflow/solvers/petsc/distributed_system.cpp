@@ -13,6 +13,7 @@ void DistributedSystem::clear() {
   if (to_all_) VecScatterDestroy(&to_all_);
   if (all_) VecDestroy(&all_);
   fields_.reset();
+  nest_.reset();
   value_map_ = {};
   input_pattern_ = {};
 }
@@ -69,6 +70,43 @@ DistributedSystem::Copy DistributedSystem::copy(const assembly::SparseMatrix& sh
   // The COO entries are the pattern's values in order.
   value_map_.fill(share, coo_values_);
   if (MatSetValuesCOO(*matrix, coo_values_.data(), INSERT_VALUES) != 0) {
+    MatDestroy(matrix);
+    return Copy::refused;
+  }
+  return rebuild ? Copy::rebuilt : Copy::values;
+}
+
+DistributedSystem::Copy DistributedSystem::copy_saddle_point(
+    const assembly::SparseMatrix& velocity_lower, const assembly::SparseMatrix& coupling,
+    const assembly::SparseMatrix& pressure_block, const assembly::SparseMatrix& frames,
+    const NodeBlockLayout& velocity_layout, PetscInt block_size, Index n_first_solved, Mat* matrix,
+    Vec* rhs, Vec* solution) {
+  int rebuild = nest_ && *matrix && input_pattern_.matches(velocity_lower) ? 0 : 1;
+  MPI_Allreduce(MPI_IN_PLACE, &rebuild, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  if (rebuild) {
+    if (*matrix) MatDestroy(matrix);
+    if (*rhs) VecDestroy(rhs);
+    if (*solution) VecDestroy(solution);
+    clear();
+    nest_ = std::make_unique<DistributedSaddleNest>();
+    if (!nest_->build(velocity_lower, coupling, pressure_block, frames, velocity_layout,
+                      block_size)) {
+      nest_.reset();
+      return Copy::refused;
+    }
+    *matrix = nest_->matrix();
+    PetscObjectReference(reinterpret_cast<PetscObject>(*matrix));
+    petsc_index_ = nest_->nest_index();
+    // Plain vectors of the nest's rows (not VECNEST: the solver reads and writes arrays).
+    VecCreateMPI(PETSC_COMM_WORLD, nest_->owned(), PETSC_DETERMINE, solution);
+    VecDuplicate(*solution, rhs);
+    VecScatterCreateToAll(*solution, &to_all_, &all_);
+    PetscInt low = 0, high = 0;
+    VecGetOwnershipRange(*solution, &low, &high);
+    fields_ = std::make_unique<DistributedFields>(petsc_index_, low, high, n_first_solved);
+    input_pattern_ = InputPattern(velocity_lower);
+  }
+  if (!nest_->fill(velocity_lower)) {
     MatDestroy(matrix);
     return Copy::refused;
   }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "formflow/assembly/sparsity.hpp"
+#include "formflow/solvers/petsc/distributed_saddle_nest.hpp"
 #include "formflow/solvers/petsc/distributed_saddle_point.hpp"
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/value_map.hpp"
@@ -45,6 +46,19 @@ public:
             const assembly::SparseMatrix& frames, const NodeBlockLayout& layout, Index n_velocity,
             Index n_first_solved, Mat* matrix, Vec* rhs, Vec* solution);
 
+  /// copy() for a saddle point whose blocks come apart (LinearSolver::
+  /// take_saddle_point_blocks): `velocity_lower` is this rank's share of A (lower
+  /// triangle), `coupling` and `pressure_block` its fixed shares of B and C; `*matrix`
+  /// becomes a DistributedSaddleNest's MATNEST and the vectors plain MPI vectors of its
+  /// rows. `frames` and `velocity_layout` are the velocity block's, and A gets
+  /// `block_size`.
+  Copy copy_saddle_point(const assembly::SparseMatrix& velocity_lower,
+                         const assembly::SparseMatrix& coupling,
+                         const assembly::SparseMatrix& pressure_block,
+                         const assembly::SparseMatrix& frames,
+                         const NodeBlockLayout& velocity_layout, PetscInt block_size,
+                         Index n_first_solved, Mat* matrix, Vec* rhs, Vec* solution);
+
   /// The rows PETSc solves for (the laid-out count where a layout is).
   Index n_solved() const { return static_cast<Index>(petsc_index_.size()); }
   /// A saddle point's fields in PETSc's rows (null for one field).
@@ -70,6 +84,7 @@ private:
   InputPattern input_pattern_; ///< the share pattern of the last copy
   std::vector<PetscScalar> coo_values_;
   std::unique_ptr<DistributedFields> fields_;
+  std::unique_ptr<DistributedSaddleNest> nest_; ///< copy_saddle_point's blocks
 };
 
 } // namespace formflow::solvers::petsc

@@ -362,7 +362,9 @@ private:
   /// fieldsplit (a direct solver needs one AIJ matrix); -formflow_saddle_point_nest 0
   /// says otherwise (one AIJ matrix of the whole saddle point, as before session 13).
   bool nest_the_saddle_point() {
-    if (distributed_ || n_first_ <= 0 || schur_block_ <= 0 || !schur_matrix_) return false;
+    // Distributed, the Schur matrix's share waits for the rows' numbering (copy_distributed).
+    const bool schur_given = distributed_ ? schur_share_.rows() > 0 : schur_matrix_ != nullptr;
+    if (n_first_ <= 0 || schur_block_ <= 0 || !schur_given) return false;
     PetscBool wanted = PETSC_TRUE, given = PETSC_FALSE;
     PetscOptionsGetBool(nullptr, nullptr, "-formflow_saddle_point_nest", &wanted, &given);
     char type[64] = "";
@@ -470,6 +472,8 @@ private:
     const assembly::SparseMatrix& frames = frames_.empty() ? no_frames : frame_matrix_;
     // Node by node (as lay_out_nodes serially, where the iterative default serves: the
     // Schur matrix's share is given).
+    const bool blocks = coupling_.rows() > 0; // take_saddle_point_blocks: `given` is A
+    const Index n_rows = given.rows() + (blocks ? coupling_.rows() : 0);
     if (!layout_decided_) {
       layout_decided_ = true;
       PetscBool wanted = schur_block_ > 0 && schur_share_.rows() > 0 ? PETSC_TRUE : PETSC_FALSE;
@@ -477,12 +481,24 @@ private:
       PetscOptionsGetBool(nullptr, nullptr, "-formflow_velocity_node_blocks", &wanted,
                           &given_option);
       if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
-        layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, given.rows());
+        layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, n_rows);
     }
-    const petsc::DistributedSystem::Copy copied =
-        distributed_system_.copy(given, storage_ == MatrixStorage::SymmetricLower, frames, layout_,
-                                 n_first_ > 0 ? n_first_ : given.rows(),
-                                 n_first_ > 0 ? n_first_solved() : 0, &matrix_, &rhs_, &solution_);
+    petsc::DistributedSystem::Copy copied = petsc::DistributedSystem::Copy::refused;
+    if (blocks) {
+      // The velocity block's own layout: the rows the saddle point's gives the velocity.
+      const petsc::NodeBlockLayout velocity_layout =
+          layout_.empty() ? petsc::NodeBlockLayout()
+                          : petsc::NodeBlockLayout(components_, dof_of_velocity_, given.rows());
+      copied = distributed_system_.copy_saddle_point(given, coupling_, pressure_block_, frames,
+                                                     velocity_layout,
+                                                     layout_.empty() ? 1 : layout_.components(),
+                                                     n_first_solved(), &matrix_, &rhs_, &solution_);
+    } else {
+      copied = distributed_system_.copy(given, storage_ == MatrixStorage::SymmetricLower, frames,
+                                        layout_, n_first_ > 0 ? n_first_ : given.rows(),
+                                        n_first_ > 0 ? n_first_solved() : 0, &matrix_, &rhs_,
+                                        &solution_);
+    }
     if (copied == petsc::DistributedSystem::Copy::refused) return;
     // The Schur matrix lives on the fields' rows: made again with them.
     if (copied == petsc::DistributedSystem::Copy::rebuilt && schur_matrix_)
