@@ -18,20 +18,28 @@ void DistributedSystem::clear() {
   input_pattern_ = {};
 }
 
-DistributedSystem::Copy DistributedSystem::copy(const assembly::SparseMatrix& share,
-                                                bool symmetric_lower,
-                                                const assembly::SparseMatrix& frames,
-                                                const NodeBlockLayout& layout, Index n_velocity,
-                                                Index n_first_solved, Mat* matrix, Vec* rhs,
-                                                Vec* solution) {
+bool DistributedSystem::start_rebuild(bool same_pattern, Mat* matrix, Vec* rhs, Vec* solution) {
   // Every rank rebuilds if any rank's pattern changed: the numbering is collective.
-  int rebuild = *matrix && input_pattern_.matches(share) ? 0 : 1;
+  int rebuild = same_pattern ? 0 : 1;
   MPI_Allreduce(MPI_IN_PLACE, &rebuild, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
   if (rebuild) {
     if (*matrix) MatDestroy(matrix);
     if (*rhs) VecDestroy(rhs);
     if (*solution) VecDestroy(solution);
     clear();
+  }
+  return rebuild != 0;
+}
+
+DistributedSystem::Copy DistributedSystem::copy(const assembly::SparseMatrix& share,
+                                                bool symmetric_lower,
+                                                const assembly::SparseMatrix& frames,
+                                                const NodeBlockLayout& layout, Index n_velocity,
+                                                Index n_first_solved, Mat* matrix, Vec* rhs,
+                                                Vec* solution) {
+  const bool rebuild =
+      start_rebuild(*matrix && input_pattern_.matches(share), matrix, rhs, solution);
+  if (rebuild) {
     // Both triangles, row by row, in the layout's rows.
     const CsrPattern pattern = share_pattern(share, symmetric_lower, frames, layout, n_velocity);
     const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
@@ -81,13 +89,9 @@ DistributedSystem::Copy DistributedSystem::copy_saddle_point(
     const assembly::SparseMatrix& pressure_block, const assembly::SparseMatrix& frames,
     const NodeBlockLayout& velocity_layout, PetscInt block_size, Index n_first_solved, Mat* matrix,
     Vec* rhs, Vec* solution) {
-  int rebuild = nest_ && *matrix && input_pattern_.matches(velocity_lower) ? 0 : 1;
-  MPI_Allreduce(MPI_IN_PLACE, &rebuild, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  const bool rebuild = start_rebuild(nest_ && *matrix && input_pattern_.matches(velocity_lower),
+                                     matrix, rhs, solution);
   if (rebuild) {
-    if (*matrix) MatDestroy(matrix);
-    if (*rhs) VecDestroy(rhs);
-    if (*solution) VecDestroy(solution);
-    clear();
     nest_ = std::make_unique<DistributedSaddleNest>();
     if (!nest_->build(velocity_lower, coupling, pressure_block, frames, velocity_layout,
                       block_size)) {

@@ -76,6 +76,9 @@ public:
 
 private:
   void clear();
+  /// Whether every rank keeps its pattern (`same_pattern` on all; collective); if not,
+  /// the old matrix, vectors and numbering are gone and true is returned.
+  bool start_rebuild(bool same_pattern, Mat* matrix, Vec* rhs, Vec* solution);
 
   std::vector<PetscInt> petsc_index_; ///< solved row (free or laid out) → PETSc's row
   VecScatter to_all_ = nullptr;       ///< the solution to every rank
