@@ -59,11 +59,11 @@ std::vector<io::Override> all_edits(const DistributedCase& c) {
 struct MpiRun {
   int exit_code = -1;
   nlohmann::json summary;
-  std::string err;
+  std::string out, err;
 };
 
 MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirectory& scratch,
-               const std::string& extra = {}) {
+               const std::string& extra = {}, bool quiet = true) {
   // OpenMPI's ranks wait for each other by spinning unless told to yield: on a machine
   // with fewer free cores than ranks (oversubscribed, or shared) that turns every
   // message into a time slice. Yielding changes no number, only the wall time. In a
@@ -73,7 +73,8 @@ MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirect
                         "OMPI_MCA_btl_vader_single_copy_mechanism=none " +
                         quoted(FORMFLOW_MPIEXEC) + " -n " + std::to_string(ranks) +
                         " --oversubscribe --allow-run-as-root " + quoted(FORMFLOW_BINARY) +
-                        " run -q -o " + quoted((scratch / "results").string());
+                        " run " + (quiet ? "-q " : "") + "-o " +
+                        quoted((scratch / "results").string());
   if (!c.case_path.empty())
     command += " " + quoted(std::string(FORMFLOW_SOURCE_DIR) + "/" + c.case_path);
   for (const auto& [key, value] : all_edits(c)) command += " --set " + quoted(key + "=" + value);
@@ -84,6 +85,7 @@ MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirect
   const int status = std::system(command.c_str());
   MpiRun run;
   if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
+  run.out = testing::read_text(scratch / "out.txt");
   run.err = testing::read_text(scratch / "err.txt");
   const auto summary = scratch / "results" / "summary.json";
   if (std::filesystem::exists(summary))
@@ -250,6 +252,16 @@ void expect_refused_once(const MpiRun& run, const std::string& message,
   EXPECT_EQ(run.err.find(message, first + 1), std::string::npos) << "said more than once:\n"
                                                                  << run.err;
   EXPECT_FALSE(std::filesystem::exists(scratch / "results"));
+}
+
+TEST(DistributedRun, TheRunSaysOnceHowManyRanksAndHowTheCellsWereSplit) {
+  testing::ScratchDirectory scratch("formflow-mpi");
+  const MpiRun run = run_mpi(paper_penalty, 2, scratch, {}, /*quiet=*/false);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string line = "distributed: 2 MPI ranks, the cells split by ptscotch";
+  const auto first = run.out.find(line);
+  ASSERT_NE(first, std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find(line, first + 1), std::string::npos) << "said once, by rank 0";
 }
 
 TEST(DistributedRun, ABadValueIsOneMessageAndExitTwo) {

@@ -158,6 +158,9 @@ int run_case(const Options& options) {
                results.pressure.ram_reaction, results.pressure.power_balance,
                results.pressure.total_power, results.pressure.mean_hydrostatic_near_ram,
                options.output_directory);
+  if (show && results.linear_algebra.ranks > 1)
+    fmt::print("distributed: {} MPI ranks, the cells split by {} (summary.json linear_algebra)\n",
+               results.linear_algebra.ranks, results.linear_algebra.partition);
   if (show) {
     const char* load =
         case_.process.type == physics::ProcessType::Drawing ? "drawing stress" : "ram pressure";
