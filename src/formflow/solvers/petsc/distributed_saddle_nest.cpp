@@ -3,6 +3,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/petsc/distributed_numbering.hpp"
+#include "formflow/solvers/petsc/framed_coupling.hpp"
 
 #include <mpi.h>
 
@@ -109,17 +110,13 @@ bool DistributedSaddleNest::build(const assembly::SparseMatrix& velocity_lower,
   MatSetOption(blocks_[0], MAT_SYMMETRIC, PETSC_TRUE);
 
   // Bᵀ in the solved velocity rows, P Qᵀ Bᵀ, and B, its transpose: fixed values.
-  assembly::SparseMatrix framed = coupling.transpose();
-  if (frames.size() != 0) framed = assembly::SparseMatrix(frames.transpose() * framed);
   std::vector<PetscInt> upper_rows, upper_columns;
   std::vector<PetscScalar> upper_values;
-  for (Index column = 0; column < framed.outerSize(); ++column)
-    for (assembly::SparseMatrix::InnerIterator it(framed, column); it; ++it) {
-      const Index row = layout.empty() ? it.row() : layout.position(it.row());
-      upper_rows.push_back(velocity.petsc_index[row]);
-      upper_columns.push_back(pressure.petsc_index[column]);
-      upper_values.push_back(it.value());
-    }
+  for (const Eigen::Triplet<Real, Index>& entry : framed_coupling(coupling, frames, layout)) {
+    upper_rows.push_back(velocity.petsc_index[entry.row()]);
+    upper_columns.push_back(pressure.petsc_index[entry.col()]);
+    upper_values.push_back(entry.value());
+  }
   std::vector<PetscInt> lower_rows = upper_columns, lower_columns = upper_rows;
   const std::vector<PetscScalar> lower_values = upper_values;
   // C with every touched diagonal entry (zero where C has none, as with d = 0):

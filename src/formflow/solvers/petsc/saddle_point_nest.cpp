@@ -3,6 +3,7 @@
 #include "formflow/solvers/petsc/saddle_point_nest.hpp"
 
 #include "formflow/core/error.hpp"
+#include "formflow/solvers/petsc/framed_coupling.hpp"
 
 #include <Eigen/SparseCore>
 
@@ -42,16 +43,8 @@ bool SaddlePointNest::build_from_blocks(const assembly::SparseMatrix& velocity_l
   const auto n_first = static_cast<Index>(a.outer.size()) - 1;
   if (!make_block(0, n_first, n_first, a, nullptr, block_size)) return false;
   velocity_map_ = ValueMap(velocity_lower, true, frames, layout, a.outer, a.inner, n_v);
-  // Bᵀ in the solved unknowns, P Qᵀ Bᵀ (n_first × n_p), and B Q Pᵀ, its transpose: B is
-  // a small part of the saddle point's nonzeros, made once through Eigen.
-  assembly::SparseMatrix framed = coupling.transpose();
-  if (frames.size() != 0) framed = assembly::SparseMatrix(frames.transpose() * framed);
-  std::vector<Eigen::Triplet<Real, Index>> entries;
-  entries.reserve(static_cast<std::size_t>(framed.nonZeros()));
-  for (Index column = 0; column < framed.outerSize(); ++column)
-    for (assembly::SparseMatrix::InnerIterator it(framed, column); it; ++it)
-      entries.emplace_back(layout.empty() ? it.row() : layout.position(it.row()), column,
-                           it.value());
+  // Bᵀ in the solved unknowns, P Qᵀ Bᵀ (n_first × n_p), and B Q Pᵀ, its transpose.
+  std::vector<Eigen::Triplet<Real, Index>> entries = framed_coupling(coupling, frames, layout);
   RowMatrix upper(n_first, n_p);
   upper.setFromTriplets(entries.begin(), entries.end());
   upper.makeCompressed();
