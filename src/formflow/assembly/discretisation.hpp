@@ -27,7 +27,7 @@ struct DiscretisationSettings {
   int volumetric_points = 2;   ///< Gauss points per direction of the volumetric rule
   ContactSettings contact;     ///< face or nodal contact normals
   Real mollifier_radius = 0.0; ///< radius h of σ̄_N (friction.radius); 0: local
-  Distribution distribution;   ///< distributed run: this rank's slab of cells (issue 20)
+  Distribution distribution;   ///< distributed run: this rank's part of the cells (issue 20)
 };
 
 /// The fixed part of a forming problem. Built once; every cell loop, the drivers'

@@ -17,16 +17,14 @@ void contact_zones(const assembly::FormingProblem<dim>& problem,
   for (const auto& point : contact) {
     // A distributed run: the faces of the rank's own cells here, the sums over the ranks
     // below (each Γ3 face belongs to the one cell it bounds).
-    if (!discretisation.assembles(discretisation.mesh().facets[point.facet].cell)) continue;
-    ContactZones& zones =
-        problem.discretisation().mesh().facets[point.facet].label == mesh::BoundaryLabel::Die
-            ? die
-            : container;
+    const mesh::BoundaryFacet& facet = discretisation.mesh().facets[point.facet];
+    if (!discretisation.assembles(facet.cell)) continue;
+    ContactZones& zones = facet.label == mesh::BoundaryLabel::Die ? die : container;
     // Lengths along the profile: in axisymmetry the quadrature weight carries
     // the radius (integrals are per radian), which a length must not.
     Real length = point.weight;
     if constexpr (dim == 2)
-      if (problem.discretisation().axisymmetric()) length /= point.position[1];
+      if (discretisation.axisymmetric()) length /= point.position[1];
     zones.length += length;
     if (point.sticking) zones.stick_length += length;
   }

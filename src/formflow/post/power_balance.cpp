@@ -2,8 +2,8 @@
 // Powers of the discrete terms and the mean hydrostatic pressure near the ram (in a
 // distributed run: over the rank's own cells, summed over the ranks).
 #include "formflow/physics/kinematics.hpp"
-
 #include "formflow/post/post_process.hpp"
+
 #include <array>
 
 namespace formflow::post {

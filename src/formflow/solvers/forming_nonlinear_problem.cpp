@@ -46,7 +46,7 @@ void FormingNonlinearProblem<dim>::assemble_newton(const VectorX& u, const DualS
   problem_.assemble_newton(u, problem_.friction_thresholds(u), duals_of<dim>(duals), internal_force,
                            tangent, tangent ? &coupling_ : nullptr, friction_);
   if (!tangent) return;
-  // A distributed run: a rank whose own cells hold no coupling (a rigid slab) still joins
+  // A distributed run: a rank whose own cells hold no coupling (a rigid part) still joins
   // the others' GMRES, whose every product is collective.
   VectorX coupled(1);
   coupled[0] = coupling_.empty() ? 0.0 : 1.0;

@@ -98,14 +98,7 @@ void attach_distributed_near_null_space(const std::vector<VectorX>& modes,
     for (std::size_t k = 0; k < owned.size(); ++k) entries[k] = modes[m][owned[k]];
     VecRestoreArray(vectors[m], &entries);
   }
-  orthonormalize(vectors); // MatNullSpaceCreate wants an orthonormal basis
-  MatNullSpace space = nullptr;
-  MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, static_cast<PetscInt>(vectors.size()),
-                     vectors.data(), &space);
-  PetscObjectCompose(reinterpret_cast<PetscObject>(fields.velocity()), "nearnullspace",
-                     reinterpret_cast<PetscObject>(space));
-  MatNullSpaceDestroy(&space);
-  for (Vec& vector : vectors) VecDestroy(&vector);
+  compose_near_null_space(fields.velocity(), vectors);
 }
 
 } // namespace formflow::solvers::petsc

@@ -31,12 +31,10 @@ bool DistributedSystem::start_rebuild(bool same_pattern, Mat* matrix, Vec* rhs, 
   return rebuild != 0;
 }
 
-DistributedSystem::Copy DistributedSystem::copy(const assembly::SparseMatrix& share,
-                                                bool symmetric_lower,
-                                                const assembly::SparseMatrix& frames,
-                                                const NodeBlockLayout& layout, Index n_velocity,
-                                                Index n_first_solved, Mat* matrix, Vec* rhs,
-                                                Vec* solution) {
+CopyOutcome DistributedSystem::copy(const assembly::SparseMatrix& share, bool symmetric_lower,
+                                    const assembly::SparseMatrix& frames,
+                                    const NodeBlockLayout& layout, Index n_velocity,
+                                    Index n_first_solved, Mat* matrix, Vec* rhs, Vec* solution) {
   const bool rebuild =
       start_rebuild(*matrix && input_pattern_.matches(share), matrix, rhs, solution);
   if (rebuild) {
@@ -56,7 +54,7 @@ DistributedSystem::Copy DistributedSystem::copy(const assembly::SparseMatrix& sh
         MatSetPreallocationCOO(*matrix, static_cast<PetscCount>(coo.rows.size()), coo.rows.data(),
                                coo.columns.data()) != 0) {
       if (*matrix) MatDestroy(matrix);
-      return Copy::refused;
+      return CopyOutcome::refused;
     }
     if (symmetric_lower) {
       MatSetOption(*matrix, MAT_SYMMETRIC, PETSC_TRUE);
@@ -79,16 +77,18 @@ DistributedSystem::Copy DistributedSystem::copy(const assembly::SparseMatrix& sh
   value_map_.fill(share, coo_values_);
   if (MatSetValuesCOO(*matrix, coo_values_.data(), INSERT_VALUES) != 0) {
     MatDestroy(matrix);
-    return Copy::refused;
+    return CopyOutcome::refused;
   }
-  return rebuild ? Copy::rebuilt : Copy::values;
+  return rebuild ? CopyOutcome::rebuilt : CopyOutcome::values;
 }
 
-DistributedSystem::Copy DistributedSystem::copy_saddle_point(
-    const assembly::SparseMatrix& velocity_lower, const assembly::SparseMatrix& coupling,
-    const assembly::SparseMatrix& pressure_block, const assembly::SparseMatrix& frames,
-    const NodeBlockLayout& velocity_layout, PetscInt block_size, Index n_first_solved, Mat* matrix,
-    Vec* rhs, Vec* solution) {
+CopyOutcome DistributedSystem::copy_saddle_point(const assembly::SparseMatrix& velocity_lower,
+                                                 const assembly::SparseMatrix& coupling,
+                                                 const assembly::SparseMatrix& pressure_block,
+                                                 const assembly::SparseMatrix& frames,
+                                                 const NodeBlockLayout& velocity_layout,
+                                                 PetscInt block_size, Index n_first_solved,
+                                                 Mat* matrix, Vec* rhs, Vec* solution) {
   const bool rebuild = start_rebuild(nest_ && *matrix && input_pattern_.matches(velocity_lower),
                                      matrix, rhs, solution);
   if (rebuild) {
@@ -96,7 +96,7 @@ DistributedSystem::Copy DistributedSystem::copy_saddle_point(
     if (!nest_->build(velocity_lower, coupling, pressure_block, frames, velocity_layout,
                       block_size)) {
       nest_.reset();
-      return Copy::refused;
+      return CopyOutcome::refused;
     }
     *matrix = nest_->matrix();
     PetscObjectReference(reinterpret_cast<PetscObject>(*matrix));
@@ -112,9 +112,9 @@ DistributedSystem::Copy DistributedSystem::copy_saddle_point(
   }
   if (!nest_->fill(velocity_lower)) {
     MatDestroy(matrix);
-    return Copy::refused;
+    return CopyOutcome::refused;
   }
-  return rebuild ? Copy::rebuilt : Copy::values;
+  return rebuild ? CopyOutcome::rebuilt : CopyOutcome::values;
 }
 
 void DistributedSystem::sum_shares(Vec target, const VectorX& share) const {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "formflow/assembly/sparsity.hpp"
+#include "formflow/solvers/petsc/copy_outcome.hpp"
 #include "formflow/solvers/petsc/distributed_saddle_nest.hpp"
 #include "formflow/solvers/petsc/distributed_saddle_point.hpp"
 #include "formflow/solvers/petsc/node_block_layout.hpp"
@@ -25,11 +26,6 @@ public:
   DistributedSystem(const DistributedSystem&) = delete;
   DistributedSystem& operator=(const DistributedSystem&) = delete;
 
-  /// How copy() went: the values handed over on the same pattern, the system made anew
-  /// (every rank's pattern kept, or the first call; what was built on the old rows must
-  /// be made again), or PETSc refused.
-  enum class Copy { values, rebuilt, refused };
-
   /// Hands this rank's `share` (its own cells' entries in the global free numbering;
   /// the ranks' shares add up to the system) to `*matrix`, in the unknowns PETSc
   /// solves for: y = Qᵀ x for the frames' matrix `frames` (empty: none), laid out node
@@ -42,9 +38,9 @@ public:
   /// once per pattern (no rotated or laid-out copy of the share per step) and hands
   /// them over with MatSetValuesCOO, which sums the ranks' duplicates. A saddle point
   /// (`n_first_solved` velocity rows of fewer) gets its fields (fields()).
-  Copy copy(const assembly::SparseMatrix& share, bool symmetric_lower,
-            const assembly::SparseMatrix& frames, const NodeBlockLayout& layout, Index n_velocity,
-            Index n_first_solved, Mat* matrix, Vec* rhs, Vec* solution);
+  CopyOutcome copy(const assembly::SparseMatrix& share, bool symmetric_lower,
+                   const assembly::SparseMatrix& frames, const NodeBlockLayout& layout,
+                   Index n_velocity, Index n_first_solved, Mat* matrix, Vec* rhs, Vec* solution);
 
   /// copy() for a saddle point whose blocks come apart (LinearSolver::
   /// take_saddle_point_blocks): `velocity_lower` is this rank's share of A (lower
@@ -52,12 +48,12 @@ public:
   /// becomes a DistributedSaddleNest's MATNEST and the vectors plain MPI vectors of its
   /// rows. `frames` and `velocity_layout` are the velocity block's, and A gets
   /// `block_size`.
-  Copy copy_saddle_point(const assembly::SparseMatrix& velocity_lower,
-                         const assembly::SparseMatrix& coupling,
-                         const assembly::SparseMatrix& pressure_block,
-                         const assembly::SparseMatrix& frames,
-                         const NodeBlockLayout& velocity_layout, PetscInt block_size,
-                         Index n_first_solved, Mat* matrix, Vec* rhs, Vec* solution);
+  CopyOutcome copy_saddle_point(const assembly::SparseMatrix& velocity_lower,
+                                const assembly::SparseMatrix& coupling,
+                                const assembly::SparseMatrix& pressure_block,
+                                const assembly::SparseMatrix& frames,
+                                const NodeBlockLayout& velocity_layout, PetscInt block_size,
+                                Index n_first_solved, Mat* matrix, Vec* rhs, Vec* solution);
 
   /// The rows PETSc solves for (the laid-out count where a layout is).
   Index n_solved() const { return static_cast<Index>(petsc_index_.size()); }

@@ -109,16 +109,26 @@ PetscErrorCode set_up_splits(PC preconditioner) {
   return first;
 }
 
-void orthonormalize(std::vector<Vec>& vectors) {
-  for (std::size_t k = 0; k < vectors.size(); ++k) {
+void compose_near_null_space(IS velocity, std::vector<Vec>& modes) {
+  // Modified Gram–Schmidt, in place.
+  for (std::size_t k = 0; k < modes.size(); ++k) {
     for (std::size_t j = 0; j < k; ++j) {
       PetscScalar projection = 0;
-      VecDot(vectors[k], vectors[j], &projection);
-      VecAXPY(vectors[k], -projection, vectors[j]);
+      VecDot(modes[k], modes[j], &projection);
+      VecAXPY(modes[k], -projection, modes[j]);
     }
     PetscReal norm = 0;
-    VecNormalize(vectors[k], &norm);
+    VecNormalize(modes[k], &norm);
   }
+  MPI_Comm communicator = MPI_COMM_NULL;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(velocity), &communicator);
+  MatNullSpace space = nullptr;
+  MatNullSpaceCreate(communicator, PETSC_FALSE, static_cast<PetscInt>(modes.size()), modes.data(),
+                     &space);
+  PetscObjectCompose(reinterpret_cast<PetscObject>(velocity), "nearnullspace",
+                     reinterpret_cast<PetscObject>(space));
+  MatNullSpaceDestroy(&space);
+  for (Vec& mode : modes) VecDestroy(&mode);
 }
 
 } // namespace formflow::solvers::petsc

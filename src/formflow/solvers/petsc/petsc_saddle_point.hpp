@@ -56,8 +56,10 @@ void attach_schur_matrix(PC preconditioner, Mat pressure_matrix);
 /// Nothing for another PC type. Returns the first failed setup's error code (0: none).
 PetscErrorCode set_up_splits(PC preconditioner);
 
-/// Modified Gram–Schmidt on `vectors`, in place (MatNullSpaceCreate wants an
-/// orthonormal basis: the velocity split's rigid-body modes).
-void orthonormalize(std::vector<Vec>& vectors);
+/// The velocity split's near-null space: `modes` (vectors of its layout, one process's
+/// or distributed) orthonormalised (MatNullSpaceCreate wants an orthonormal basis) and
+/// composed on `velocity`, the split's index set, as "nearnullspace" (fieldsplit hands it
+/// to the split's matrix, which GAMG reads); the vectors are destroyed.
+void compose_near_null_space(IS velocity, std::vector<Vec>& modes);
 
 } // namespace formflow::solvers::petsc

@@ -10,8 +10,7 @@
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
-#include "formflow/solvers/petsc/saddle_point_nest.hpp"
-#include "formflow/solvers/petsc/value_map.hpp"
+#include "formflow/solvers/petsc/sequential_system.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -22,7 +21,6 @@
 #include <optional>
 #include <span>
 #include <string_view>
-#include <type_traits>
 #include <vector>
 
 namespace formflow::solvers {
@@ -177,7 +175,7 @@ public:
   void set_schur_preconditioner(const assembly::SparseMatrix& matrix, Index cell_block) override {
     if (distributed_) {
       // The rank's share (its own cells' blocks), copied once the saddle point's rows
-      // are numbered (copy_distributed).
+      // are numbered (copy).
       schur_block_ = cell_block;
       schur_share_ = matrix;
       schur_share_.makeCompressed();
@@ -221,6 +219,20 @@ private:
   VectorX in_solved_unknowns(VectorX x) const {
     assembly::to_frames(frames_, x);
     return layout_.empty() ? x : layout_.embed(x);
+  }
+
+  /// The velocity block's rigid-body modes (set_fields) in the unknowns PETSc solves
+  /// for: y = Qᵀ x, laid out node by node where it is (zero on the prescribed
+  /// components' slots, which are decoupled); n_first_solved() entries each.
+  std::vector<VectorX> solved_modes() const {
+    std::vector<VectorX> modes;
+    for (const VectorX& mode : near_null_space_) {
+      FF_ASSERT(mode.size() == n_first_, "one mode entry per velocity dof");
+      VectorX padded = VectorX::Zero(layout_.empty() ? n_first_ : layout_.n_rows());
+      padded.head(n_first_) = mode;
+      modes.push_back(in_solved_unknowns(std::move(padded)).head(n_first_solved()));
+    }
+    return modes;
   }
 
   /// Copies `values` into the sequential vector `target`.
@@ -279,30 +291,12 @@ private:
     // takes it from the IS), which BoomerAMG's nodal options and GAMG read.
     if (!layout_.empty()) ISSetBlockSize(fields_[0], layout_.components());
     if (!near_null_space_.empty()) {
-      std::vector<Vec> modes(near_null_space_.size());
-      for (std::size_t k = 0; k < modes.size(); ++k) {
-        FF_ASSERT(near_null_space_[k].size() == n_first_, "one mode entry per velocity dof");
-        VecCreateSeq(PETSC_COMM_SELF, n_first, &modes[k]);
-        // The modes in the unknowns PETSc solves for: y = Qᵀ x (laid out: zero on the
-        // prescribed components' slots, which are decoupled).
-        VectorX mode = near_null_space_[k];
-        assembly::to_frames(frames_, mode);
-        if (!layout_.empty()) {
-          VectorX padded = VectorX::Zero(layout_.n_rows());
-          padded.head(n_first_) = mode;
-          mode = layout_.embed(padded);
-        }
-        write(modes[k], mode.head(n_first));
+      std::vector<Vec> modes;
+      for (const VectorX& mode : solved_modes()) {
+        VecCreateSeq(PETSC_COMM_SELF, n_first, &modes.emplace_back());
+        write(modes.back(), mode);
       }
-      // MatNullSpaceCreate wants an orthonormal basis.
-      petsc::orthonormalize(modes);
-      MatNullSpace space = nullptr;
-      MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(modes.size()),
-                         modes.data(), &space);
-      PetscObjectCompose(reinterpret_cast<PetscObject>(fields_[0]), "nearnullspace",
-                         reinterpret_cast<PetscObject>(space));
-      MatNullSpaceDestroy(&space);
-      for (Vec& mode : modes) VecDestroy(&mode);
+      petsc::compose_near_null_space(fields_[0], modes);
     }
     PCFieldSplitSetIS(preconditioner, "u", fields_[0]);
     PCFieldSplitSetIS(preconditioner, "p", fields_[1]);
@@ -312,21 +306,12 @@ private:
 
   /// split_fields on several ranks: the splits' index sets in PETSc's distributed rows
   /// (each rank its own), the modes as distributed vectors and the Schur matrix as
-  /// MPIAIJ, all made by copy_distributed.
+  /// MPIAIJ, all made at the copy (petsc::DistributedSystem).
   bool split_distributed_fields(PC preconditioner) {
     const petsc::DistributedFields* fields = distributed_system_.fields();
     FF_ASSERT(fields, "the fields are numbered at the first copy");
-    if (!near_null_space_.empty()) {
-      std::vector<VectorX> modes = near_null_space_;
-      for (VectorX& mode : modes) {
-        VectorX padded =
-            VectorX::Zero(layout_.empty() ? distributed_system_.n_solved() : layout_.n_rows());
-        padded.head(n_first_) = mode;
-        // y = Qᵀ x laid out, as the matrix (zero on the unused slots).
-        mode = in_solved_unknowns(std::move(padded)).head(n_first_solved());
-      }
-      petsc::attach_distributed_near_null_space(modes, *fields);
-    }
+    if (!near_null_space_.empty())
+      petsc::attach_distributed_near_null_space(solved_modes(), *fields);
     // Laid out node by node: each rank owns whole nodes (share_pattern), so the split's
     // index set has the block size that systems BoomerAMG reads.
     if (!layout_.empty()) ISSetBlockSize(fields->velocity(), layout_.components());
@@ -334,6 +319,12 @@ private:
     PCFieldSplitSetIS(preconditioner, "p", fields->pressure());
     if (schur_matrix_) petsc::attach_schur_matrix(preconditioner, schur_matrix_);
     return true;
+  }
+
+  /// Whether set_schur_preconditioner gave this step's Schur matrix (distributed: its share,
+  /// which waits for the rows' numbering at the copy).
+  bool schur_given() const {
+    return distributed_ ? schur_share_.rows() > 0 : schur_matrix_ != nullptr;
   }
 
   /// Whether the velocity block is laid out node by node (NodeBlockLayout), for a saddle
@@ -347,7 +338,7 @@ private:
   bool lay_out_nodes(Index n_rows) {
     if (!layout_decided_) {
       layout_decided_ = true;
-      PetscBool wanted = schur_block_ > 0 && schur_matrix_ ? PETSC_TRUE : PETSC_FALSE;
+      PetscBool wanted = schur_block_ > 0 && schur_given() ? PETSC_TRUE : PETSC_FALSE;
       PetscBool given = PETSC_FALSE;
       PetscOptionsGetBool(nullptr, nullptr, "-formflow_velocity_node_blocks", &wanted, &given);
       if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
@@ -362,9 +353,7 @@ private:
   /// fieldsplit (a direct solver needs one AIJ matrix); -formflow_saddle_point_nest 0
   /// says otherwise (one AIJ matrix of the whole saddle point, as before session 13).
   bool nest_the_saddle_point() {
-    // Distributed, the Schur matrix's share waits for the rows' numbering (copy_distributed).
-    const bool schur_given = distributed_ ? schur_share_.rows() > 0 : schur_matrix_ != nullptr;
-    if (n_first_ <= 0 || schur_block_ <= 0 || !schur_given) return false;
+    if (n_first_ <= 0 || schur_block_ <= 0 || !schur_given()) return false;
     PetscBool wanted = PETSC_TRUE, given = PETSC_FALSE;
     PetscOptionsGetBool(nullptr, nullptr, "-formflow_saddle_point_nest", &wanted, &given);
     char type[64] = "";
@@ -373,51 +362,13 @@ private:
     return wanted && (!typed || std::string_view(type) == PCFIELDSPLIT);
   }
 
-  /// Copies `matrix` (its lower triangle for SymmetricLower) into PETSc's matrix, made on
-  /// the first call and rebuilt only if the pattern changes. On the same pattern the
-  /// values go straight into PETSc's arrays (petsc::ValueMap), with no copy of the
-  /// matrix in between.
+  /// Copies `matrix` (its lower triangle for SymmetricLower; A alone after
+  /// take_saddle_point_blocks) into PETSc's matrix in the unknowns PETSc solves for: the
+  /// contact nodes' frames and the node layout decided here, the matrix itself by
+  /// petsc::SequentialSystem, or in a distributed run (issue 20; app/main.cpp said so)
+  /// by petsc::DistributedSystem from this rank's share (its own cells' entries,
+  /// assembly/discretisation.hpp).
   void copy(const assembly::SparseMatrix& matrix) {
-    if (distributed_) {
-      copy_distributed(matrix);
-      return;
-    }
-    if (!(matrix_ && input_pattern_.matches(matrix)) && !make_sequential(matrix)) return;
-    if (nest_) {
-      nest_->fill(matrix); // A alone (take_saddle_point_blocks)
-      return;
-    }
-    PetscScalar* values = nullptr;
-    MatSeqAIJGetArray(matrix_, &values);
-    value_map_.fill(matrix, std::span<Real>(values, output_nonzeros_));
-    MatSeqAIJRestoreArray(matrix_, &values); // raises the state: the PC sets up anew
-  }
-
-  /// The nest as the solver's matrix, with plain vectors of `n` rows (not the nest's
-  /// VECNEST: the rest of the solver reads and writes them as arrays).
-  bool adopt_nest(const assembly::SparseMatrix& matrix, Index n) {
-    matrix_ = nest_->matrix();
-    PetscObjectReference(reinterpret_cast<PetscObject>(matrix_));
-    VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(n), &rhs_);
-    VecDuplicate(rhs_, &solution_);
-    input_pattern_ = petsc::InputPattern(matrix);
-    return true;
-  }
-  bool fail_nest() {
-    nest_.reset();
-    return false;
-  }
-
-  /// PETSc's sequential matrix (one AIJ, or the saddle point's nest) with the pattern of
-  /// P Qᵀ K Q Pᵀ for K = `matrix`, its values not yet set; false if PETSc refused.
-  bool make_sequential(const assembly::SparseMatrix& matrix) {
-    value_map_ = {};
-    input_pattern_ = {};
-    nest_.reset();
-    if (matrix_) MatDestroy(&matrix_);
-    if (rhs_) VecDestroy(&rhs_);
-    if (solution_) VecDestroy(&solution_);
-    const bool lower_only = storage_ == MatrixStorage::SymmetricLower;
     const bool blocks = coupling_.rows() > 0; // take_saddle_point_blocks: `matrix` is A
     const Index n_rows = matrix.rows() + (blocks ? coupling_.rows() : 0);
     if (!frames_.empty() && frame_matrix_.rows() != matrix.rows())
@@ -425,84 +376,35 @@ private:
     const assembly::SparseMatrix no_frames;
     const assembly::SparseMatrix& frames = frames_.empty() ? no_frames : frame_matrix_;
     lay_out_nodes(n_rows);
+    const bool lower_only = storage_ == MatrixStorage::SymmetricLower;
+    const Index n_velocity = n_first_ > 0 ? n_first_ : n_rows;
+    petsc::CopyOutcome copied = petsc::CopyOutcome::refused;
     if (blocks) {
       // The velocity block's own layout: the same rows as the saddle point's layout gives
       // the velocity (they depend on the velocity's nodes alone), no pressure rows.
       const petsc::NodeBlockLayout velocity_layout =
           layout_.empty() ? petsc::NodeBlockLayout()
                           : petsc::NodeBlockLayout(components_, dof_of_velocity_, matrix.rows());
-      nest_ = std::make_unique<petsc::SaddlePointNest>();
-      if (!nest_->build_from_blocks(matrix, coupling_, pressure_block_, frames, velocity_layout,
-                                    layout_.empty() ? 1 : layout_.components()))
-        return fail_nest();
-      return adopt_nest(matrix, layout_.empty() ? n_rows : layout_.n_embedded());
-    }
-    const Index n_velocity = n_first_ > 0 ? n_first_ : n_rows;
-    const petsc::CsrPattern pattern = petsc::solved_pattern(matrix, lower_only, frames, layout_);
-    const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
-    // MatSeqAIJSetPreallocationCSR copies the CSR arrays into the matrix.
-    static_assert(std::is_same_v<PetscInt, Index>, "PETSc's CSR indices are formflow's");
-    if (MatCreate(PETSC_COMM_SELF, &matrix_) != 0 || MatSetSizes(matrix_, n, n, n, n) != 0 ||
-        MatSetType(matrix_, MATSEQAIJ) != 0 ||
-        MatSeqAIJSetPreallocationCSR(matrix_, pattern.outer.data(), pattern.inner.data(),
-                                     nullptr) != 0) {
-      if (matrix_) MatDestroy(&matrix_);
-      return false;
-    }
-    if (lower_only) {
-      MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE);
-      MatSetOption(matrix_, MAT_SPD, PETSC_TRUE);
-    }
-    MatCreateVecs(matrix_, &solution_, &rhs_);
-    value_map_ = petsc::ValueMap(matrix, lower_only, frames, layout_, pattern.outer, pattern.inner,
-                                 n_velocity);
-    output_nonzeros_ = pattern.inner.size();
-    input_pattern_ = petsc::InputPattern(matrix);
-    return true;
-  }
-
-  /// A distributed run (issue 20; app/main.cpp said so, and PETSC_COMM_WORLD has more
-  /// than one rank): `given` is this rank's share, the entries of its own cells
-  /// (assembly/discretisation.hpp) in the global free numbering, handed to PETSc by
-  /// petsc::DistributedSystem; the frames and the node layout as in a sequential run.
-  void copy_distributed(const assembly::SparseMatrix& given) {
-    if (!frames_.empty() && frame_matrix_.rows() != given.rows())
-      frame_matrix_ = assembly::frame_matrix(frames_, given.rows());
-    const assembly::SparseMatrix no_frames;
-    const assembly::SparseMatrix& frames = frames_.empty() ? no_frames : frame_matrix_;
-    // Node by node (as lay_out_nodes serially, where the iterative default serves: the
-    // Schur matrix's share is given).
-    const bool blocks = coupling_.rows() > 0; // take_saddle_point_blocks: `given` is A
-    const Index n_rows = given.rows() + (blocks ? coupling_.rows() : 0);
-    if (!layout_decided_) {
-      layout_decided_ = true;
-      PetscBool wanted = schur_block_ > 0 && schur_share_.rows() > 0 ? PETSC_TRUE : PETSC_FALSE;
-      PetscBool given_option = PETSC_FALSE;
-      PetscOptionsGetBool(nullptr, nullptr, "-formflow_velocity_node_blocks", &wanted,
-                          &given_option);
-      if (wanted && n_first_ > 0 && static_cast<Index>(dof_of_velocity_.size()) == n_first_)
-        layout_ = petsc::NodeBlockLayout(components_, dof_of_velocity_, n_rows);
-    }
-    petsc::DistributedSystem::Copy copied = petsc::DistributedSystem::Copy::refused;
-    if (blocks) {
-      // The velocity block's own layout: the rows the saddle point's gives the velocity.
-      const petsc::NodeBlockLayout velocity_layout =
-          layout_.empty() ? petsc::NodeBlockLayout()
-                          : petsc::NodeBlockLayout(components_, dof_of_velocity_, given.rows());
-      copied = distributed_system_.copy_saddle_point(given, coupling_, pressure_block_, frames,
-                                                     velocity_layout,
-                                                     layout_.empty() ? 1 : layout_.components(),
-                                                     n_first_solved(), &matrix_, &rhs_, &solution_);
+      const PetscInt block_size = layout_.empty() ? 1 : layout_.components();
+      copied =
+          distributed_
+              ? distributed_system_.copy_saddle_point(matrix, coupling_, pressure_block_, frames,
+                                                      velocity_layout, block_size, n_first_solved(),
+                                                      &matrix_, &rhs_, &solution_)
+              : sequential_system_.copy_saddle_point(
+                    matrix, coupling_, pressure_block_, frames, velocity_layout, block_size,
+                    layout_.empty() ? n_rows : layout_.n_embedded(), &matrix_, &rhs_, &solution_);
     } else {
-      copied = distributed_system_.copy(given, storage_ == MatrixStorage::SymmetricLower, frames,
-                                        layout_, n_first_ > 0 ? n_first_ : given.rows(),
-                                        n_first_ > 0 ? n_first_solved() : 0, &matrix_, &rhs_,
-                                        &solution_);
+      copied = distributed_
+                   ? distributed_system_.copy(matrix, lower_only, frames, layout_, n_velocity,
+                                              n_first_ > 0 ? n_first_solved() : 0, &matrix_, &rhs_,
+                                              &solution_)
+                   : sequential_system_.copy(matrix, lower_only, frames, layout_, n_velocity,
+                                             &matrix_, &rhs_, &solution_);
     }
-    if (copied == petsc::DistributedSystem::Copy::refused) return;
+    if (!distributed_ || copied == petsc::CopyOutcome::refused) return;
     // The Schur matrix lives on the fields' rows: made again with them.
-    if (copied == petsc::DistributedSystem::Copy::rebuilt && schur_matrix_)
-      MatDestroy(&schur_matrix_);
+    if (copied == petsc::CopyOutcome::rebuilt && schur_matrix_) MatDestroy(&schur_matrix_);
     // The Schur matrix's share given for this step (set_schur_preconditioner).
     if (const petsc::DistributedFields* fields = distributed_system_.fields();
         fields && schur_share_.rows() == distributed_system_.n_solved() - n_first_solved()) {
@@ -531,11 +433,8 @@ private:
   Mat matrix_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr;
   KSP ksp_ = nullptr;
-  petsc::ValueMap value_map_;                        ///< sequential: where PETSc's values come from
-  petsc::InputPattern input_pattern_;                ///< sequential: the pattern of the last copy
-  std::unique_ptr<petsc::SaddlePointNest> nest_;     ///< sequential: the saddle point's blocks
+  petsc::SequentialSystem sequential_system_;        ///< one process: the AIJ matrix or the nest
   assembly::SparseMatrix coupling_, pressure_block_; ///< take_saddle_point_blocks' B and C
-  std::size_t output_nonzeros_ = 0;                  ///< sequential: the values of matrix_
   bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
   petsc::DistributedSystem distributed_system_; ///< distributed: numbering, COO, gather
   Index n_first_ = 0;                           ///< velocity dofs of a saddle point (set_fields)
