@@ -154,6 +154,21 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
   EXPECT_TRUE(testing::approx(contact.at("die").at("length").get<Real>(),
                               serial.results.die_zones.length, tolerance));
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
+  // The velocity is ghosted: every dof owned by one rank, and no rank holds all of them
+  // (a rank holds its own cells' dofs; its ghosts are those another rank owns).
+  const auto& per_rank = run.summary.at("linear_algebra").at("dofs_per_rank");
+  ASSERT_EQ(static_cast<int>(per_rank.size()), ranks);
+  const long dofs = run.summary.at("mesh").at("dofs").get<long>();
+  long owned = 0, ghosts = 0;
+  for (const auto& rank : per_rank) {
+    const long held = rank.at("owned").get<long>() + rank.at("ghosts").get<long>();
+    EXPECT_GT(held, 0) << per_rank;
+    EXPECT_LT(held, dofs) << "a rank holds the whole velocity: " << per_rank;
+    owned += rank.at("owned").get<long>();
+    ghosts += rank.at("ghosts").get<long>();
+  }
+  EXPECT_EQ(owned, dofs) << per_rank;
+  EXPECT_GT(ghosts, 0) << "the ranks' parts share no interface: " << per_rank;
   // PETSc's graph partitioner split the cells (not the slabs it falls back to).
   EXPECT_EQ(run.summary.at("linear_algebra").at("partition"),
             c.partitioner.empty() ? "ptscotch" : c.partitioner);

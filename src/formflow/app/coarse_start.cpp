@@ -156,6 +156,7 @@ coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, P
       if (condensed && distributed) solver->set_options_prefix("coarse_");
       outcome = solvers::newton_iteration(nonlinear, *solver, control, {}, times, level_start);
     }
+    nonlinear.replicate(outcome.velocity); // ghosted on several ranks; interpolated whole
     start.mesh_sizes.push_back(spec.size);
     start.iterations.push_back(static_cast<int>(outcome.history.size()));
     start.converged = start.converged && outcome.stop_reason == solvers::StopReason::Converged;

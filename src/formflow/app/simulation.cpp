@@ -113,6 +113,23 @@ std::unique_ptr<solvers::LinearSolver> plan_solver(const SolvePlan& plan, const 
 
 /// The loop of the plan with `solver`; the linear algebra's record in `results` (the
 /// Krylov count is the solver's running total: every loop that used it).
+/// Per rank, the dofs it owns and its ghosts (gathered by a sum: each rank fills its
+/// slots); empty on one rank.
+template <int dim>
+std::vector<std::pair<Index, Index>>
+rank_dofs(const assembly::Discretisation<dim>& discretisation) {
+  const assembly::Distribution& distribution = discretisation.distribution();
+  if (!distribution.distributed()) return {};
+  std::vector<Real> counts(2 * static_cast<std::size_t>(distribution.size), 0.0);
+  counts[2 * distribution.rank] = static_cast<Real>(discretisation.owned_dofs().n_owned());
+  counts[2 * distribution.rank + 1] = static_cast<Real>(discretisation.owned_dofs().n_ghosts());
+  distribution.sum_over_ranks(counts);
+  std::vector<std::pair<Index, Index>> ranks;
+  for (int r = 0; r < distribution.size; ++r)
+    ranks.emplace_back(static_cast<Index>(counts[2 * r]), static_cast<Index>(counts[2 * r + 1]));
+  return ranks;
+}
+
 template <int dim>
 solvers::SecantOutcome
 run_counted_loop(const SolvePlan& plan, const io::Case& case_,
@@ -123,6 +140,9 @@ run_counted_loop(const SolvePlan& plan, const io::Case& case_,
   solvers::SecantOutcome outcome = run_loop(plan, case_, problem, solver, counter.observer(),
                                             results, start_velocity, multipliers);
   counter.fill(outcome.history);
+  // A distributed loop's velocity is ghosted (each rank its own cells' dofs); the
+  // post-processing and the writers read it whole (docs/petsc.md "Distributed runs").
+  problem.discretisation().owned_dofs().replicate(outcome.velocity);
   results.linear_algebra.solver = solver.name(); // e.g. "petsc-gmres-cholesky"
   results.linear_algebra.iterations = solver.krylov_iterations();
   const solvers::FactorSize factor = solver.factor_size(); // the fine mesh's pattern
@@ -132,6 +152,7 @@ run_counted_loop(const SolvePlan& plan, const io::Case& case_,
   results.linear_algebra.ranks = distribution().size;
   results.cell_ranks = problem.discretisation().cell_ranks();
   results.linear_algebra.partition = problem.discretisation().partition_method();
+  results.linear_algebra.rank_dofs = rank_dofs(problem.discretisation());
   return outcome;
 }
 

@@ -40,6 +40,7 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
     blocks.add(fem::dofs_of_nodes<dim>(mesh.cells.col(cell)));
   }
   plan_ = std::make_unique<ScatterPlan>(n_dofs(), constraints_.prescribed, blocks);
+  if (distribution.distributed()) owned_dofs_ = OwnedDofs(mesh, cell_ranks_, *plan_, distribution);
 
   // Contact faces, grouped by cell so that the cell loop adds them to the
   // cell's own local matrix (no extra blocks in the pattern).

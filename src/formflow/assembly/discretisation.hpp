@@ -8,6 +8,7 @@
 #include "formflow/assembly/constraints.hpp"
 #include "formflow/assembly/contact_normals.hpp"
 #include "formflow/assembly/distribution.hpp"
+#include "formflow/assembly/owned_dofs.hpp"
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/fem/values_cache.hpp"
@@ -57,6 +58,9 @@ public:
            std::binary_search(assembled_cells_.begin(), assembled_cells_.end(), cell);
   }
   const Distribution& distribution() const { return settings_.distribution; }
+  /// The dofs this rank owns: dot products and whole vectors of a distributed run's
+  /// ghosted vectors (every dof on one rank).
+  const OwnedDofs& owned_dofs() const { return owned_dofs_; }
   const DirichletConstraints& constraints() const { return constraints_; }
   Index n_dofs() const { return mesh_.n_nodes() * dim; }
   bool axisymmetric() const { return settings_.symmetry == physics::Symmetry::Axisymmetric; }
@@ -139,6 +143,7 @@ private:
   DiscretisationSettings settings_;
   DirichletConstraints constraints_;
   std::unique_ptr<ScatterPlan> plan_;
+  OwnedDofs owned_dofs_;
   std::vector<Index> assembled_cells_;
   std::vector<int> cell_ranks_;
   std::string partition_method_;

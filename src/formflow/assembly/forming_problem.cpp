@@ -56,6 +56,33 @@ FormingProblem<dim>::FormingProblem(const mesh::Mesh<dim>& mesh, const ProblemSe
 }
 
 template <int dim>
+void FormingProblem<dim>::exchange_contact_values(std::vector<ContactPoint<dim>>& state) const {
+  const Distribution& distribution = discretisation_->distribution();
+  if (!distribution.distributed()) return;
+  // Each Γ3 face is one cell's, so each point's values come from one rank and the
+  // others add zeros: every rank gets the owner's bits, the whole contact state on a
+  // surface's traffic (the mollifier's average σ̄_N may reach any point).
+  constexpr int per_point = dim + 3;
+  std::vector<Real> values(state.size() * per_point, 0.0);
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    if (!discretisation_->assembles(mesh_.facets[state[k].facet].cell)) continue;
+    Real* slot = values.data() + k * per_point;
+    slot[0] = state[k].normal_velocity;
+    slot[1] = state[k].contact_pressure;
+    slot[2] = state[k].shear_yield;
+    for (int i = 0; i < dim; ++i) slot[3 + i] = state[k].tangential_velocity[i];
+  }
+  distribution.sum_over_ranks(values);
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    const Real* slot = values.data() + k * per_point;
+    state[k].normal_velocity = slot[0];
+    state[k].contact_pressure = slot[1];
+    state[k].shear_yield = slot[2];
+    for (int i = 0; i < dim; ++i) state[k].tangential_velocity[i] = slot[3 + i];
+  }
+}
+
+template <int dim>
 std::vector<ContactPoint<dim>>
 FormingProblem<dim>::contact_state(const VectorX& u,
                                    const FrictionMultipliers<dim>* multipliers) const {
@@ -71,7 +98,10 @@ FormingProblem<dim>::contact_state(const VectorX& u,
        ++position) {
     const Index f = discretisation_->contact_facets()[position];
     const mesh::BoundaryFacet& facet = mesh_.facets[f];
-    gather(facet.cell, &u, coordinates, velocities);
+    // A distributed run's velocity is ghosted: the rank evaluates the faces of its own
+    // cells, and the points' values are exchanged below.
+    const bool own = discretisation_->assembles(facet.cell);
+    gather(facet.cell, own ? &u : nullptr, coordinates, velocities);
     reinit_contact(facet_values, coordinates, position);
     for (int q = 0; q < facet_values.n_points(); ++q) {
       ContactPoint<dim> point;
@@ -79,6 +109,10 @@ FormingProblem<dim>::contact_state(const VectorX& u,
       point.position = facet_values.point(q);
       point.normal = facet_values.normal(q);
       point.weight = facet_values.JxW(q);
+      if (!own) {
+        state.push_back(point);
+        continue;
+      }
       const Point<dim> velocity = velocities * facet_values.shape(q);
       point.normal_velocity = velocity.dot(point.normal);
       point.tangential_velocity = velocity - point.normal_velocity * point.normal;
@@ -100,6 +134,7 @@ FormingProblem<dim>::contact_state(const VectorX& u,
       state.push_back(point);
     }
   }
+  exchange_contact_values(state);
 
   std::vector<Real> pressure(state.size()), mean;
   for (std::size_t k = 0; k < state.size(); ++k) pressure[k] = state[k].contact_pressure;

@@ -77,6 +77,15 @@ json pressure_json(const Case& case_, const post::Results& results) {
   return out;
 }
 
+/// Per rank, the dofs it owns and its ghosts; null on one rank.
+json rank_dofs_json(const std::vector<std::pair<Index, Index>>& rank_dofs) {
+  if (rank_dofs.empty()) return nullptr;
+  json ranks = json::array();
+  for (const auto& [owned, ghosts] : rank_dofs)
+    ranks.push_back({{"owned", owned}, {"ghosts", ghosts}});
+  return ranks;
+}
+
 json power_json(const post::PowerTerms& power) {
   return {{"plastic_dissipation", power.plastic_dissipation},
           {"viscous_form", power.viscous_form},
@@ -271,6 +280,7 @@ json summary_document(const Case& case_, const post::Results& results) {
                            {"partition", results.linear_algebra.partition.empty()
                                              ? json(nullptr)
                                              : json(results.linear_algebra.partition)},
+                           {"dofs_per_rank", rank_dofs_json(results.linear_algebra.rank_dofs)},
                            {"factorizations", results.timing.counted("factorization")},
                            {"krylov_iterations", results.timing.counted("krylov iterations")}};
   // The fill (counts from the back-end's analysis; null when it does not report them).

@@ -113,6 +113,9 @@ struct LinearAlgebra {
   /// How the cells were split among the ranks (a PETSc partitioner's type, or "slabs");
   /// empty on one rank.
   std::string partition;
+  /// A distributed run: per rank, the dofs it owns and its ghosts (the velocity each
+  /// rank holds is their sum, not the whole: assembly::OwnedDofs); empty on one rank.
+  std::vector<std::pair<Index, Index>> rank_dofs;
   /// Matrix and factor nonzeros (and flops) of the fine mesh's last analysis
   /// (solvers::FactorSize: −1 when the back-end does not report them).
   double matrix_nonzeros = -1;

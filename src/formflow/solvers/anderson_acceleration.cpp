@@ -10,7 +10,8 @@
 
 namespace formflow::solvers {
 
-AndersonAcceleration::AndersonAcceleration(int depth) : depth_(depth) {
+AndersonAcceleration::AndersonAcceleration(int depth, const NonlinearProblem* ghosted)
+    : depth_(depth), ghosted_(ghosted) {
   FF_ASSERT(depth >= 1, "Anderson acceleration needs at least one difference column");
 }
 
@@ -37,7 +38,7 @@ VectorX AndersonAcceleration::next(const VectorX& iterate, const VectorX& image,
   if (last_residual_.size() == residual.size()) {
     // A mix that left a larger residual than its start had is worse than the plain step,
     // which shrinks it (by the contraction ρ < 1): the history misleads, drop it.
-    if (after_mix && residual.norm() > last_residual_.norm()) {
+    if (after_mix && norm(residual) > norm(last_residual_)) {
       restart();
     } else {
       residual_differences_.push_back(residual - last_residual_);
@@ -53,6 +54,15 @@ VectorX AndersonAcceleration::next(const VectorX& iterate, const VectorX& image,
   const auto columns = static_cast<Index>(residual_differences_.size());
   if (!may_mix || columns == 0) return image;
 
+  if (ghosted_) {
+    const std::optional<VectorX> weights = ghosted_weights(columns);
+    if (!weights) return image;
+    VectorX mixed = image;
+    for (Index j = 0; j < columns; ++j) mixed -= (*weights)[j] * image_differences_[j];
+    last_mixed_ = true;
+    last_columns_ = static_cast<int>(columns);
+    return mixed;
+  }
   MatrixX differences(last_residual_.size(), columns);
   for (Index j = 0; j < columns; ++j) differences.col(j) = residual_differences_[j];
   const Eigen::ColPivHouseholderQR<MatrixX> qr(differences);
@@ -74,6 +84,28 @@ VectorX AndersonAcceleration::next(const VectorX& iterate, const VectorX& image,
   last_mixed_ = true;
   last_columns_ = static_cast<int>(columns);
   return mixed;
+}
+
+std::optional<VectorX> AndersonAcceleration::ghosted_weights(Index columns) {
+  // [ΔF f] = Q R over the ranks' rows (TSQR): min ‖ΔF γ − f‖ = min ‖R₁ γ − r‖ with R₁
+  // R's first c columns and r its last, a (c + 1) × c problem every rank solves alike.
+  MatrixX augmented(last_residual_.size(), columns + 1);
+  for (Index j = 0; j < columns; ++j) augmented.col(j) = residual_differences_[j];
+  augmented.col(columns) = last_residual_;
+  const MatrixX r = ghosted_->r_factor(augmented);
+  const Eigen::ColPivHouseholderQR<MatrixX> qr(r.leftCols(columns));
+  const Real largest = std::abs(qr.matrixQR()(0, 0));
+  const Real smallest = std::abs(qr.matrixQR()(columns - 1, columns - 1));
+  if (!(smallest * anderson_max_condition > largest)) {
+    restart();
+    return std::nullopt;
+  }
+  VectorX weights = qr.solve(VectorX(r.col(columns)));
+  if (!weights.allFinite()) {
+    restart();
+    return std::nullopt;
+  }
+  return weights;
 }
 
 } // namespace formflow::solvers

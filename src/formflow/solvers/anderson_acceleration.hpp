@@ -11,8 +11,10 @@
 #pragma once
 
 #include "formflow/core/types.hpp"
+#include "formflow/solvers/nonlinear_problem.hpp"
 
 #include <deque>
+#include <optional>
 
 namespace formflow::solvers {
 
@@ -27,7 +29,10 @@ inline constexpr Real anderson_max_condition = 1e8;
 /// the next iterate it proposes. Depth m: at most m difference columns.
 class AndersonAcceleration {
 public:
-  explicit AndersonAcceleration(int depth);
+  /// `ghosted`: a distributed run's problem, whose vectors each rank holds in part
+  /// (NonlinearProblem::ghosted): the norms and the least-squares problem then run over
+  /// the ranks' owned rows (its dot and r_factor). Null: whole vectors.
+  explicit AndersonAcceleration(int depth, const NonlinearProblem* ghosted = nullptr);
 
   /// After G mapped `iterate` to `image`: records the pair and returns the next iterate,
   /// image − ΔG γ with γ = argmin ‖f − ΔF γ‖ (f = image − iterate; ΔF, ΔG the differences
@@ -49,7 +54,12 @@ public:
 private:
   void restart();
 
+  Real norm(const VectorX& v) const { return ghosted_ ? ghosted_->norm(v) : v.norm(); }
+  /// γ = argmin ‖f − ΔF γ‖ over the ranks' rows, or nothing when the safeguard restarts.
+  std::optional<VectorX> ghosted_weights(Index columns);
+
   int depth_;
+  const NonlinearProblem* ghosted_ = nullptr;
   std::deque<VectorX> residual_differences_, image_differences_;
   VectorX last_residual_, last_image_; ///< empty: no pair recorded
   bool last_mixed_ = false;

@@ -63,7 +63,10 @@ private:
 /// T⁻¹ from the factorisation held by a LinearSolver (already computed).
 class FactorPreconditioner {
 public:
-  void attach(LinearSolver* factorized) { factorized_ = factorized; }
+  void attach(LinearSolver* factorized, const ShareSum* replicate) {
+    factorized_ = factorized;
+    replicate_ = replicate;
+  }
   template <typename Matrix> FactorPreconditioner& analyzePattern(const Matrix&) { return *this; }
   template <typename Matrix> FactorPreconditioner& factorize(const Matrix&) { return *this; }
   template <typename Matrix> FactorPreconditioner& compute(const Matrix&) { return *this; }
@@ -71,12 +74,15 @@ public:
     VectorX x;
     if (!factorized_->solve_whole(VectorX(b), x))
       x.setConstant(b.size(), std::numeric_limits<Real>::quiet_NaN());
+    else if (replicate_ && *replicate_)
+      (*replicate_)(x); // a distributed solve's ghosted result, whole for GMRES
     return x;
   }
   Eigen::ComputationInfo info() const { return Eigen::Success; }
 
 private:
   LinearSolver* factorized_ = nullptr;
+  const ShareSum* replicate_ = nullptr;
 };
 
 } // namespace
@@ -110,11 +116,12 @@ constexpr int krylov_basis = 8;
 KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
                                     const CouplingProduct& coupling, LinearSolver& factorized,
                                     const VectorX& rhs, VectorX& delta, Real tolerance,
-                                    int max_iterations, const ShareSum& add_up_shares) {
+                                    int max_iterations, const ShareSum& add_up_shares,
+                                    const ShareSum& replicate) {
   KrylovOutcome outcome;
   const JacobianOperator jacobian(tangent_lower, coupling, add_up_shares);
   Eigen::GMRES<JacobianOperator, FactorPreconditioner> gmres;
-  gmres.preconditioner().attach(&factorized);
+  gmres.preconditioner().attach(&factorized, &replicate);
   gmres.setTolerance(tolerance);
   gmres.setMaxIterations(max_iterations);
   gmres.set_restart(std::min(max_iterations, krylov_basis));

@@ -31,10 +31,14 @@ struct KrylovOutcome {
 /// Distributed (issue 20): T and N are this rank's shares, `add_up_shares` sums each
 /// product T x + N x over the ranks, `rhs` and every Krylov vector are whole and alike
 /// on every rank (the preconditioner is `factorized`'s solve_whole), so every rank runs
-/// the same GMRES iterations to the same δ.
+/// the same GMRES iterations to the same δ. The distributed solve hands each rank the
+/// entries of its own cells' dofs only (a ghosted vector, NonlinearProblem::replicate):
+/// `replicate` makes each preconditioned vector whole before GMRES reads it. Not yet a
+/// ghosted Krylov basis: O(n) per basis vector on every rank (docs/petsc.md).
 KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
                                     const CouplingProduct& coupling, LinearSolver& factorized,
                                     const VectorX& rhs, VectorX& delta, Real tolerance,
-                                    int max_iterations, const ShareSum& add_up_shares = {});
+                                    int max_iterations, const ShareSum& add_up_shares = {},
+                                    const ShareSum& replicate = {});
 
 } // namespace formflow::solvers

@@ -64,6 +64,16 @@ public:
     problem_.apply_coupling(coupling_, x_free, y_free);
   }
   void add_up_shares(VectorX& values) const override;
+  Real dot(const VectorX& a, const VectorX& b) const override {
+    return problem_.discretisation().owned_dofs().dot(a, b);
+  }
+  void replicate(VectorX& values) const override {
+    problem_.discretisation().owned_dofs().replicate(values);
+  }
+  bool ghosted() const override { return problem_.discretisation().owned_dofs().distributed(); }
+  MatrixX r_factor(const MatrixX& tall) const override {
+    return problem_.discretisation().owned_dofs().r_factor(tall);
+  }
   void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
                     DualState& duals) const override;
   void secant_duals(const VectorX* previous, const VectorX& next, DualState& duals) const override;

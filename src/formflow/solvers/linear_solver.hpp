@@ -36,11 +36,16 @@ public:
   virtual bool factorize(const assembly::SparseMatrix& lower) = 0;
   /// Solves with the last factorisation. False on failure. In a distributed run (issue
   /// 20, the PETSc back-end) `rhs` is this rank's share, its own cells' loads (the
-  /// ranks' add up); `solution` is whole on every rank.
+  /// ranks' add up); `solution` is ghosted: the rows of the rank's own cells' dofs, NaN
+  /// elsewhere (NonlinearProblem::replicate).
   virtual bool solve(const VectorX& rhs, VectorX& solution) = 0;
   /// solve() for a right-hand side that every rank holds whole and alike (Newton's
   /// residual, the GMRES vectors): each rank gives its own rows. One process: solve().
   virtual bool solve_whole(const VectorX& rhs, VectorX& solution) { return solve(rhs, solution); }
+  /// Whether the last solve's `solution` is finite: a ghosted solution's other rows are
+  /// NaN by design, so a distributed back-end answers for the whole solution (alike on
+  /// every rank). One process: every entry finite.
+  virtual bool finite(const VectorX& solution) const { return solution.allFinite(); }
   virtual std::string name() const = 0;
   /// Krylov iterations of all solves so far (iterative back-ends), or −1 when the
   /// back-end is a direct factorisation with no such count.

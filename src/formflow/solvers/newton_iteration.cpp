@@ -72,7 +72,7 @@ Real slope_at(NewtonWork& work, const VectorX& velocity, const VectorX& step, Re
               const VectorX& free_step) {
   const VectorX trial = velocity + t * step;
   work.problem.assemble_newton(trial, *work.duals, work.force, nullptr);
-  return free_step.dot(work.problem.plan().free_values(work.force));
+  return work.problem.dot(free_step, work.problem.plan().free_values(work.force));
 }
 
 /// One Newton step from `velocity`; std::nullopt when the tangent is not positive
@@ -120,9 +120,10 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
       y += condensation->project(projected);
     };
     const ShareSum add_up_shares = [&](VectorX& values) { work.problem.add_up_shares(values); };
+    const ShareSum replicate = [&](VectorX& values) { work.problem.replicate(values); };
     const KrylovOutcome krylov =
         solve_coupled_tangent(*matrix, coupling, work.linear.solver(), rhs, free_step, work.forcing,
-                              max_krylov_iterations, add_up_shares);
+                              max_krylov_iterations, add_up_shares, replicate);
     work.linear.times().count("krylov iterations", krylov.iterations);
     if (!free_step.allFinite()) return std::nullopt;
   }
@@ -138,7 +139,8 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     if (work.problem.has_coupling()) work.problem.apply_coupling(free_step, balance);
     reactions = condensation->components(gradient + balance);
   }
-  const Real slope0 = direction.dot(gradient); // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
+  const Real slope0 =
+      work.problem.dot(direction, gradient); // ≈ −δᵀJδ < 0 where J's symmetric part is SPD
   if (!(slope0 < 0) && !constrained) return std::nullopt;
   const VectorX step = plan.expand(free_step, VectorX::Zero(plan.n_dofs()));
   if (constrained && !(slope0 < 0)) {
@@ -148,7 +150,7 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     work.problem.update_duals(velocity, step, next, *work.duals);
     work.problem.constrained_step_taken(reactions, 1.0);
     slope_at(work, next, step, 0.0, direction); // the internal force at uⁿ⁺¹
-    full_change = step.norm() / next.norm();
+    full_change = work.problem.norm(step) / work.problem.norm(next);
     return next;
   }
 
@@ -165,8 +167,9 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
   const auto acceptable = [&](Real slope, int k) {
     return (slope <= 0 && k == 0) || std::abs(slope) <= line_search_slope_ratio * std::abs(slope0);
   };
-  const bool look_ahead = !constrained && !work.problem.changes_after_iteration() &&
-                          step.norm() / (velocity + step).norm() >= work.tolerance;
+  const bool look_ahead =
+      !constrained && !work.problem.changes_after_iteration() &&
+      work.problem.norm(step) / work.problem.norm(velocity + step) >= work.tolerance;
   Real t = 1.0, slope = 0.0;
   if (look_ahead) {
     const VectorX trial = velocity + step;
@@ -177,11 +180,11 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     }
     ScopedTimer timer(work.linear.times(), "assembly");
     work.problem.assemble_newton(trial, *trial_duals, work.force, &work.tangent);
-    slope = free_step.dot(plan.free_values(work.force));
+    slope = work.problem.dot(free_step, plan.free_values(work.force));
     if (acceptable(slope, 0)) {
       work.duals = std::move(trial_duals);
       work.tangent_ready = true;
-      full_change = step.norm() / trial.norm();
+      full_change = work.problem.norm(step) / work.problem.norm(trial);
       return trial;
     }
   }
@@ -218,7 +221,7 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
     work.problem.update_duals(velocity, step, next, *work.duals);
   }
   if (constrained) work.problem.constrained_step_taken(reactions, t);
-  full_change = step.norm() / next.norm();
+  full_change = work.problem.norm(step) / work.problem.norm(next);
   return next;
 }
 
@@ -278,7 +281,7 @@ SecantOutcome newton_iteration(NonlinearProblem& problem, LinearSolver& solver,
       problem.secant_duals(&outcome.velocity, *next, *work.duals);
       work.tangent_ready = false;
     }
-    step_change = (*next - outcome.velocity).norm() / next->norm();
+    step_change = problem.norm(*next - outcome.velocity) / problem.norm(*next);
     const Real change = std::max(step_change, full_change);
     work.forcing = std::clamp(change, min_forcing, max_forcing);
     IterationRecord record;

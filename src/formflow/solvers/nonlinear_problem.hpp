@@ -10,10 +10,12 @@
 // solvers/forming_nonlinear_problem.hpp).
 #pragma once
 
+#include "formflow/assembly/owned_dofs.hpp"
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/core/types.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -105,6 +107,23 @@ public:
   /// coupling and their products are the rank's shares. Replaces `values` by the sum of
   /// the ranks' (collective; the same result on every rank). One rank: nothing to do.
   virtual void add_up_shares(VectorX& values) const { static_cast<void>(values); }
+  /// A distributed run's velocities, steps and solutions are ghosted (docs/petsc.md):
+  /// each rank holds the entries of its own cells' dofs, NaN elsewhere. The drivers'
+  /// inner products therefore go through `dot` (full-length or free vectors; each dof
+  /// counted once, collective, the same bits on every rank), and a vector a driver
+  /// must read whole goes through `replicate` (collective). One rank: the plain ones.
+  virtual Real dot(const VectorX& a, const VectorX& b) const { return a.dot(b); }
+  Real norm(const VectorX& a) const { return std::sqrt(dot(a, a)); }
+  virtual void replicate(VectorX& values) const { static_cast<void>(values); }
+  /// Whether the vectors are ghosted (a distributed run); false: dot and replicate are
+  /// the plain ones, and a driver may use whole-vector algebra (Eigen's QR) as it is.
+  virtual bool ghosted() const { return false; }
+  /// The R factor (c × c, upper triangular) of a tall matrix of c full-length or free
+  /// columns held ghosted: QR of each rank's owned rows, then of their stacked R's (TSQR).
+  /// Collective; the same bits on every rank. One rank: QR of `tall`.
+  virtual MatrixX r_factor(const MatrixX& tall) const {
+    return assembly::OwnedDofs().r_factor(tall);
+  }
   /// The duals after the Newton step `step` from `u` to `next` (the dual Newton update).
   virtual void update_duals(const VectorX& u, const VectorX& step, const VectorX& next,
                             DualState& duals) const = 0;

@@ -24,6 +24,10 @@ public:
   bool solve(const VectorX& rhs, VectorX& solution) override {
     return solver_->solve(rhs, solution);
   }
+  bool solve_whole(const VectorX& rhs, VectorX& solution) override {
+    return solver_->solve_whole(rhs, solution);
+  }
+  bool finite(const VectorX& solution) const override { return solver_->finite(solution); }
   std::string name() const override { return solver_->name(); }
   long krylov_iterations() const override { return solver_->krylov_iterations(); }
   FactorSize factor_size() const override { return solver_->factor_size(); }

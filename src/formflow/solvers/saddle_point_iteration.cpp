@@ -8,6 +8,9 @@
 #include "formflow/core/error.hpp"
 #include "formflow/solvers/uzawa_update.hpp"
 
+#include <algorithm>
+#include <span>
+
 namespace formflow::solvers {
 
 template <int dim>
@@ -84,7 +87,9 @@ template <int dim> LaggedStep SaddlePointSolve<dim>::solve(const VectorX* w, Vec
     if (const auto stop = linear_.solve(saddle.rhs(system_, pressure), solution))
       return {stop, false};
     next = problem_.plan().expand(solution.head(saddle.n_velocity()), problem_.prescribed_values());
-    VectorX next_pressure = pressure + solution.tail(saddle.n_pressure());
+    VectorX increment = solution.tail(saddle.n_pressure());
+    replicate_pressure(increment);
+    VectorX next_pressure = pressure + increment;
     saddle.fix_pressure_level(next_pressure);
     // The reaction read from system() must include the new pressure's load.
     saddle.add_pressure_load(next_pressure - pressure, system_);
@@ -98,6 +103,24 @@ template <int dim> LaggedStep SaddlePointSolve<dim>::solve(const VectorX* w, Vec
     if (result.constraints_converged) break;
   }
   return result;
+}
+
+template <int dim> void SaddlePointSolve<dim>::replicate_pressure(VectorX& increment) const {
+  const assembly::Discretisation<dim>& discretisation = problem_.forming().discretisation();
+  const assembly::Distribution& distribution = discretisation.distribution();
+  if (!distribution.distributed()) return;
+  // The solve hands each rank its own cells' pressure dofs (a ghosted solution); the
+  // pressure is kept whole (the post-processing reads every cell's): each dof from the
+  // lowest rank among its cells, the others adding zeros.
+  const assembly::ConstraintMultipliers<dim>& multipliers = *problem_.forming().multipliers();
+  const std::vector<int>& cell_ranks = discretisation.cell_ranks();
+  std::vector<int> owner(static_cast<std::size_t>(increment.size()), distribution.size);
+  for (Index cell = 0; cell < static_cast<Index>(cell_ranks.size()); ++cell)
+    for (const Index dof : multipliers.cell_pressure_dofs(cell))
+      owner[dof] = std::min(owner[dof], cell_ranks[cell]);
+  for (Index dof = 0; dof < increment.size(); ++dof)
+    if (owner[dof] != distribution.rank) increment[dof] = 0.0;
+  distribution.sum_over_ranks(std::span<Real>(increment.data(), increment.size()));
 }
 
 template class SaddlePointSolve<2>;

@@ -32,6 +32,10 @@ public:
   bool loosen(Real reduction) override { return linear_.solver().set_solve_tolerance(reduction); }
 
 private:
+  /// A distributed solve's pressure correction (ghosted: the rank's own cells' dofs),
+  /// whole on every rank. One rank: nothing to do.
+  void replicate_pressure(VectorX& increment) const;
+
   FormingNonlinearProblem<dim>& problem_;
   TimedLinearStep& linear_;
   assembly::LinearSystem system_;

@@ -115,7 +115,7 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
   }
   std::optional<AndersonAcceleration> anderson;
   if (control.acceleration == NonlinearAcceleration::Anderson)
-    anderson.emplace(control.acceleration_depth);
+    anderson.emplace(control.acceleration_depth, problem.ghosted() ? &problem : nullptr);
   const assembly::ScatterPlan& plan = problem.plan();
   // The iterate the next step lags its coefficients at: the last step's result, or with
   // Anderson acceleration a mix of the last results. outcome.velocity is always the
@@ -139,7 +139,7 @@ SecantOutcome secant_iteration(NonlinearProblem& problem, LaggedSolve& lagged,
     // The change of the map's step from the iterate it started at, mixed or not:
     // ‖G(x) − x‖/‖G(x)‖ < δ bounds G(x)'s distance to the fixed point by ρ/(1 − ρ) δ
     // for any x (ρ: G's contraction), so the stop keeps its meaning with acceleration.
-    change = (next - iterate).norm() / next.norm();
+    change = problem.norm(next - iterate) / problem.norm(next);
     IterationRecord record;
     record.iteration = iteration;
     record.relative_change = change;

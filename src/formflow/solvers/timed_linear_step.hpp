@@ -62,7 +62,7 @@ private:
       if (!(whole ? solver_.solve_whole(rhs, solution) : solver_.solve(rhs, solution)))
         return StopReason::SolverFailed;
     }
-    if (!solution.allFinite()) return StopReason::NonFinite;
+    if (!solver_.finite(solution)) return StopReason::NonFinite;
     return std::nullopt;
   }
 

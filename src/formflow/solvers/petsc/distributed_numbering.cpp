@@ -19,6 +19,9 @@ DistributedNumbering number_by_owner(const std::vector<PetscInt>& outer,
   for (PetscInt column = 0; column < n; ++column)
     for (auto k = outer[column]; k < outer[column + 1]; ++k)
       if (inner[k] == column) owner[column] = rank;
+  DistributedNumbering numbering;
+  for (PetscInt i = 0; i < n; ++i)
+    if (owner[i] == rank) numbering.touched.push_back(i);
   MPI_Allreduce(MPI_IN_PLACE, owner.data(), static_cast<int>(n), MPI_INT, MPI_MIN,
                 PETSC_COMM_WORLD);
   std::vector<PetscInt> first(static_cast<std::size_t>(size) + 1, 0);
@@ -28,7 +31,6 @@ DistributedNumbering number_by_owner(const std::vector<PetscInt>& outer,
   }
   for (int r = 0; r < size; ++r) first[r + 1] += first[r];
   std::vector<PetscInt> next(first.begin(), first.end() - 1);
-  DistributedNumbering numbering;
   numbering.petsc_index.resize(static_cast<std::size_t>(n));
   for (PetscInt i = 0; i < n; ++i) numbering.petsc_index[i] = next[owner[i]]++;
   numbering.owned = first[rank + 1] - first[rank];

@@ -18,6 +18,9 @@ namespace formflow::solvers::petsc {
 struct DistributedNumbering {
   std::vector<PetscInt> petsc_index; ///< free dof → PETSc's row
   PetscInt owned = 0;                ///< rows of this rank
+  /// The dofs whose diagonal this rank's share has (its own cells' dofs: the ones it
+  /// owns and its ghosts), ascending: the rows a solution is handed back on.
+  std::vector<PetscInt> touched;
 };
 DistributedNumbering number_by_owner(const std::vector<PetscInt>& outer,
                                      const std::vector<PetscInt>& inner);

@@ -92,6 +92,8 @@ bool DistributedSaddleNest::build(const assembly::SparseMatrix& velocity_lower,
   for (Index i = 0; i < n_p; ++i)
     nest_index_[n_solved_velocity + i] = nest_row(pressure.petsc_index[i], first_pressure, true);
   owned_ = velocity.owned + pressure.owned;
+  touched_ = velocity.touched;
+  for (const PetscInt i : pressure.touched) touched_.push_back(n_solved_velocity + i);
 
   // A: COO on its pattern (row by row), values from the share through a ValueMap.
   std::vector<PetscInt> rows, columns;

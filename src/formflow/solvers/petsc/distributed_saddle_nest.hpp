@@ -46,6 +46,8 @@ public:
   const std::vector<PetscInt>& nest_index() const { return nest_index_; }
   /// This rank's rows of the nest.
   PetscInt owned() const { return owned_; }
+  /// The solved rows (velocity, then pressure) of this rank's cells, ascending.
+  const std::vector<PetscInt>& touched() const { return touched_; }
 
 private:
   std::array<Mat, 4> blocks_{}; ///< A, Bᵀ, B, C
@@ -54,6 +56,7 @@ private:
   std::vector<PetscScalar> velocity_values_; ///< A's COO values
   std::vector<PetscInt> nest_index_;
   PetscInt owned_ = 0;
+  std::vector<PetscInt> touched_;
 };
 
 } // namespace formflow::solvers::petsc

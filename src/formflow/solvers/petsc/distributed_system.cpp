@@ -5,13 +5,15 @@
 
 #include <mpi.h>
 
+#include <limits>
 #include <utility>
 
 namespace formflow::solvers::petsc {
 
 void DistributedSystem::clear() {
-  if (to_all_) VecScatterDestroy(&to_all_);
-  if (all_) VecDestroy(&all_);
+  if (to_ghosts_) VecScatterDestroy(&to_ghosts_);
+  if (ghost_values_) VecDestroy(&ghost_values_);
+  touched_.clear();
   fields_.reset();
   nest_.reset();
   value_map_ = {};
@@ -43,6 +45,7 @@ CopyOutcome DistributedSystem::copy(const assembly::SparseMatrix& share, bool sy
     const auto n = static_cast<PetscInt>(pattern.outer.size() - 1);
     DistributedNumbering numbering = number_by_owner(pattern.outer, pattern.inner);
     petsc_index_ = std::move(numbering.petsc_index);
+    touched_ = std::move(numbering.touched);
     const PetscInt owned = numbering.owned;
     // coo_entries reads a compressed-column pattern: given rows, its (row, column)
     // pairs come out transposed, and its sources are the pattern's value indices.
@@ -61,7 +64,7 @@ CopyOutcome DistributedSystem::copy(const assembly::SparseMatrix& share, bool sy
       MatSetOption(*matrix, MAT_SPD, PETSC_TRUE);
     }
     MatCreateVecs(*matrix, solution, rhs);
-    VecScatterCreateToAll(*solution, &to_all_, &all_);
+    make_ghost_scatter(*solution);
     if (n_first_solved > 0 && n_first_solved < n) {
       // A saddle point: its fields in PETSc's rows (each rank its own).
       PetscInt low = 0, high = 0;
@@ -104,7 +107,8 @@ CopyOutcome DistributedSystem::copy_saddle_point(const assembly::SparseMatrix& v
     // Plain vectors of the nest's rows (not VECNEST: the solver reads and writes arrays).
     VecCreateMPI(PETSC_COMM_WORLD, nest_->owned(), PETSC_DETERMINE, solution);
     VecDuplicate(*solution, rhs);
-    VecScatterCreateToAll(*solution, &to_all_, &all_);
+    touched_ = nest_->touched();
+    make_ghost_scatter(*solution);
     PetscInt low = 0, high = 0;
     VecGetOwnershipRange(*solution, &low, &high);
     fields_ = std::make_unique<DistributedFields>(petsc_index_, low, high, n_first_solved);
@@ -136,17 +140,28 @@ void DistributedSystem::write_owned_rows(Vec target, const VectorX& whole) const
   VecRestoreArray(target, &values);
 }
 
-VectorX DistributedSystem::gather(Vec solution) const {
-  // Every rank gets the whole solution (the nonlocal friction average and the
-  // post-processing read any dof); a ghosted vector of the own cells' dofs is the
-  // design beyond it (docs/petsc.md).
-  VecScatterBegin(to_all_, solution, all_, INSERT_VALUES, SCATTER_FORWARD);
-  VecScatterEnd(to_all_, solution, all_, INSERT_VALUES, SCATTER_FORWARD);
+void DistributedSystem::make_ghost_scatter(Vec solution) {
+  std::vector<PetscInt> rows(touched_.size());
+  for (std::size_t k = 0; k < touched_.size(); ++k) rows[k] = petsc_index_[touched_[k]];
+  IS from = nullptr;
+  ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(rows.size()), rows.data(),
+                  PETSC_COPY_VALUES, &from);
+  VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(rows.size()), &ghost_values_);
+  VecScatterCreate(solution, from, ghost_values_, nullptr, &to_ghosts_);
+  ISDestroy(&from);
+}
+
+VectorX DistributedSystem::ghosted(Vec solution) const {
+  // The rank's own cells' rows only (owned and ghosts): its loops read no other (the
+  // contact state and the integrals are exchanged or summed over the ranks), so the
+  // traffic is the partition's interface, not the whole solution to every rank.
+  VecScatterBegin(to_ghosts_, solution, ghost_values_, INSERT_VALUES, SCATTER_FORWARD);
+  VecScatterEnd(to_ghosts_, solution, ghost_values_, INSERT_VALUES, SCATTER_FORWARD);
   const PetscScalar* result = nullptr;
-  VecGetArrayRead(all_, &result);
-  VectorX solved(n_solved());
-  for (Index i = 0; i < solved.size(); ++i) solved[i] = result[petsc_index_[i]];
-  VecRestoreArrayRead(all_, &result);
+  VecGetArrayRead(ghost_values_, &result);
+  VectorX solved = VectorX::Constant(n_solved(), std::numeric_limits<Real>::quiet_NaN());
+  for (std::size_t k = 0; k < touched_.size(); ++k) solved[touched_[k]] = result[k];
+  VecRestoreArrayRead(ghost_values_, &result);
   return solved;
 }
 

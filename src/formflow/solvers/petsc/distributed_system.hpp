@@ -2,7 +2,7 @@
 // A linear system whose ranks each hold a share (issue 20, docs/petsc.md "Distributed
 // runs"): the rows numbered by owner, one MPIAIJ matrix preallocated and filled by COO
 // from the shares, the right-hand side summed into its owners' rows, and the solution
-// handed back whole to every rank.
+// handed back ghosted: each rank gets the rows of its own cells (owned and ghosts).
 #pragma once
 
 #include "formflow/assembly/sparsity.hpp"
@@ -67,8 +67,11 @@ public:
   /// `target` from `whole` (the same on every rank, in the solved unknowns): each rank
   /// writes its own rows, no message sent.
   void write_owned_rows(Vec target, const VectorX& whole) const;
-  /// `solution` whole on every rank, in the solved unknowns' order. Collective.
-  VectorX gather(Vec solution) const;
+  /// `solution` on the rows of this rank's share (its own cells' unknowns: those it
+  /// owns and its ghosts), in the solved unknowns' order, NaN on every other row: a
+  /// ghosted vector in the whole vector's numbering (the mesh is whole on every rank),
+  /// whose other rows no loop may read (NonlinearProblem::replicate). Collective.
+  VectorX ghosted(Vec solution) const;
 
 private:
   void clear();
@@ -77,8 +80,12 @@ private:
   bool start_rebuild(bool same_pattern, Mat* matrix, Vec* rhs, Vec* solution);
 
   std::vector<PetscInt> petsc_index_; ///< solved row (free or laid out) → PETSc's row
-  VecScatter to_all_ = nullptr;       ///< the solution to every rank
-  Vec all_ = nullptr;
+  /// The solution's rows of this rank's share (touched_) into ghost_values_.
+  void make_ghost_scatter(Vec solution);
+
+  std::vector<PetscInt> touched_;  ///< solved rows of this rank's share, ascending
+  VecScatter to_ghosts_ = nullptr; ///< the solution → touched_'s rows on this rank
+  Vec ghost_values_ = nullptr;
   ValueMap value_map_;         ///< the share's values → the COO values
   InputPattern input_pattern_; ///< the share pattern of the last copy
   std::vector<PetscScalar> coo_values_;

@@ -17,6 +17,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <span>
@@ -116,8 +117,8 @@ public:
     // A guess (set_initial_guess), also in the unknowns PETSc solves for. Not for a
     // direct solve: PETSc's preonly refuses a nonzero initial guess.
     std::optional<VectorX> guess = krylov_start_.take_guess(rhs.size());
-    // Distributed: the guess is whole on every rank (the replicated velocity), and each
-    // rank writes its own rows.
+    // Distributed: the guess is ghosted like the velocity it comes from (every rank holds
+    // at least the rows it owns), and each rank writes its own rows.
     const bool guessed = guess && petsc::is_iterative(ksp_);
     if (guessed && distributed_)
       distributed_system_.write_owned_rows(solution_, in_solved_unknowns(std::move(*guess)));
@@ -135,7 +136,12 @@ public:
     const PetscScalar* result = nullptr;
     solution.resize(n);
     if (distributed_) {
-      VectorX solved = distributed_system_.gather(solution_); // laid out, if it is
+      // Finite as a whole, alike on every rank: a NaN or an overflow makes the 2-norm's
+      // sum over the ranks non-finite in any order (a max could drop a NaN).
+      PetscReal size = 0;
+      VecNorm(solution_, NORM_2, &size);
+      solution_finite_ = std::isfinite(size);
+      VectorX solved = distributed_system_.ghosted(solution_); // laid out, if it is
       solution = layout_.empty() ? std::move(solved)
                                  : layout_.restrict(std::span<const Real>(
                                        solved.data(), static_cast<std::size_t>(solved.size())));
@@ -166,6 +172,10 @@ public:
   }
 
   long krylov_iterations() const override { return iterations_; }
+
+  bool finite(const VectorX& solution) const override {
+    return distributed_ ? solution_finite_ : solution.allFinite();
+  }
 
   void set_fields(Index n_first, std::vector<VectorX> near_null_space) override {
     n_first_ = n_first;
@@ -435,8 +445,9 @@ private:
   KSP ksp_ = nullptr;
   petsc::SequentialSystem sequential_system_;        ///< one process: the AIJ matrix or the nest
   assembly::SparseMatrix coupling_, pressure_block_; ///< take_saddle_point_blocks' B and C
-  bool distributed_ = false; ///< the ranks' shares of one system (petsc::distributed_systems)
-  petsc::DistributedSystem distributed_system_; ///< distributed: numbering, COO, gather
+  bool distributed_ = false;    ///< the ranks' shares of one system (petsc::distributed_systems)
+  bool solution_finite_ = true; ///< distributed: the last solution, every rank's rows
+  petsc::DistributedSystem distributed_system_; ///< distributed: numbering, COO, ghosts
   Index n_first_ = 0;                           ///< velocity dofs of a saddle point (set_fields)
   std::vector<VectorX> near_null_space_;        ///< the velocity block's rigid-body modes
   IS fields_[2] = {nullptr, nullptr};           ///< fieldsplit's "u" and "p"
