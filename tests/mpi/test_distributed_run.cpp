@@ -153,6 +153,14 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
                               serial.results.container_zones.length, tolerance));
   EXPECT_TRUE(testing::approx(contact.at("die").at("length").get<Real>(),
                               serial.results.die_zones.length, tolerance));
+  // Exact friction by Newton: the residual's power was measured over the ranks (a sum
+  // over every dof of a ghosted velocity would be NaN, which the loop cannot use: the
+  // default 0 would stay) and is below δ, the loop's stop condition.
+  if (contact.contains("power_residual")) {
+    const Real power_residual = contact.at("power_residual").get<Real>();
+    EXPECT_GT(power_residual, 0.0);
+    EXPECT_LT(power_residual, c.delta);
+  }
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
   // The velocity is ghosted: every dof owned by one rank, and no rank holds all of them
   // (a rank holds its own cells' dofs; its ghosts are those another rank owns).

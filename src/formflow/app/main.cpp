@@ -5,6 +5,7 @@
 #include "formflow/app/stop_signals.hpp"
 
 #if FORMFLOW_WITH_PETSC
+#include "formflow/solvers/petsc/ghost_exchange.hpp"
 #include "formflow/solvers/petsc/graph_partition.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
 
@@ -54,7 +55,8 @@ int main(int argc, char** argv) {
     distribution.sum_over_ranks = [](std::span<formflow::Real> values) {
       petsc::sum_over_ranks(values);
     };
-    distribution.partition_cells = petsc::partition_graph; // PT-Scotch, broadcast by rank 0
+    distribution.partition_cells = petsc::partition_graph;         // PT-Scotch, broadcast by rank 0
+    distribution.make_ghost_exchange = petsc::make_ghost_exchange; // VecCreateGhost
     // Every rank's own stderr, for the one message a rank must give itself (a run whose
     // ranks went apart: petsc::agreed_exit_code).
     const int own_stderr = ::dup(STDERR_FILENO);

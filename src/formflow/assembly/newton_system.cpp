@@ -62,11 +62,10 @@ void FormingProblem<dim>::assemble_newton(
   ScatterSink<dim> sink(mesh_, plan(), constraints().values, tangent, &internal_force);
   assembler_->run(request, &sink);
   // A distributed run (issue 20): the tangent and the coupling stay this rank's shares
-  // (its own cells), the force is wanted whole on every rank (the line search, the stop
-  // rule and the reaction read it): the ranks' forces add up.
-  if (const Distribution& distribution = discretisation_->distribution();
-      distribution.distributed())
-    distribution.sum_over_ranks(std::span<Real>(internal_force.data(), internal_force.size()));
+  // (its own cells); the force is ghosted like the velocity: every dof the rank holds
+  // gets the sum of the ranks' shares (the line search's slopes and the stop rule are
+  // inner products over the owners, the reaction a sum over them: driven_force).
+  discretisation_->owned_dofs().sum_shares(internal_force);
 }
 
 template <int dim>
@@ -232,8 +231,13 @@ VectorX FormingProblem<dim>::weighted_cell_forces(const VectorX& u,
 }
 
 template <int dim> Real FormingProblem<dim>::driven_force(const VectorX& internal_force) const {
+  // A distributed run's force is ghosted: each driven dof counted on its owner.
+  const OwnedDofs& owned = discretisation_->owned_dofs();
   Real force = 0.0;
-  for (Index dof : constraints().driven_dofs) force += internal_force[dof];
+  for (Index dof : constraints().driven_dofs)
+    if (owned.owns(dof)) force += internal_force[dof];
+  if (owned.distributed())
+    discretisation_->distribution().sum_over_ranks(std::span<Real>(&force, 1));
   return force;
 }
 

@@ -31,10 +31,32 @@ OwnedDofs::OwnedDofs(const mesh::Mesh<dim>& mesh, const std::vector<int>& cell_r
   for (Index cell = 0; cell < mesh.n_cells(); ++cell)
     if (cell_ranks[cell] == distribution_.rank)
       for (Index k = 0; k < mesh.cells.rows(); ++k) touched[mesh.cells(k, cell)] = 1;
+  // The global numbering the exchange uses: each rank's owned dofs consecutively, ranks
+  // in order, ascending within a rank (every rank computes it alike, without a message).
+  std::vector<Index> first(static_cast<std::size_t>(distribution_.size) + 1, 0);
+  for (Index node = 0; node < mesh.n_nodes(); ++node) first[owner[node] + 1] += dim;
+  for (int r = 0; r < distribution_.size; ++r) first[r + 1] += first[r];
+  std::vector<Index> next(first.begin(), first.end() - 1);
+  std::vector<Index> ghosts, ghost_globals;
+  for (Index node = 0; node < mesh.n_nodes(); ++node)
+    for (int i = 0; i < dim; ++i) {
+      const Index global = next[owner[node]]++;
+      const Index dof = fem::dof_of<dim>(node, i);
+      if (owner[node] == distribution_.rank) {
+        held_.push_back(dof);
+      } else if (touched[node]) {
+        ghosts.push_back(dof);
+        ghost_globals.push_back(global);
+      }
+    }
+  n_owned_ = static_cast<Index>(held_.size());
+  n_ghosts_ = static_cast<Index>(ghosts.size());
+  held_.insert(held_.end(), ghosts.begin(), ghosts.end());
+  for (const Index dof : held_) free_of_held_.push_back(plan.free_index(dof));
+  if (distribution_.make_ghost_exchange)
+    exchange_ = distribution_.make_ghost_exchange(n_owned_, ghost_globals);
   for (Index node = 0; node < mesh.n_nodes(); ++node) {
-    if (touched[node] && owner[node] != distribution_.rank) n_ghosts_ += dim;
     if (owner[node] != distribution_.rank) continue;
-    n_owned_ += dim;
     for (int i = 0; i < dim; ++i) {
       const Index dof = fem::dof_of<dim>(node, i);
       owned_full_[dof] = 1;
@@ -59,6 +81,30 @@ Real OwnedDofs::dot(const VectorX& a, const VectorX& b) const {
     if (owned[i]) sum += a[i] * b[i];
   distribution_.sum_over_ranks(std::span<Real>(&sum, 1));
   return sum;
+}
+
+OwnedDofs::~OwnedDofs() = default;
+
+void OwnedDofs::sum_shares(VectorX& values) const {
+  if (!distributed()) return;
+  if (!exchange_) {
+    distribution_.sum_over_ranks(std::span<Real>(values.data(), values.size()));
+    return;
+  }
+  const bool free = values.size() != static_cast<Index>(owned_full_.size());
+  FF_ASSERT(!free || values.size() == static_cast<Index>(owned_free_.size()),
+            "a full-length or a free dof vector");
+  std::vector<Real> held(held_.size(), 0.0);
+  for (std::size_t k = 0; k < held_.size(); ++k) {
+    const Index index = free ? free_of_held_[k] : held_[k];
+    if (index >= 0) held[k] = values[index];
+  }
+  exchange_->sum_shares(held);
+  values.setConstant(std::numeric_limits<Real>::quiet_NaN());
+  for (std::size_t k = 0; k < held_.size(); ++k) {
+    const Index index = free ? free_of_held_[k] : held_[k];
+    if (index >= 0) values[index] = held[k];
+  }
 }
 
 void OwnedDofs::replicate(VectorX& values) const {

@@ -24,6 +24,9 @@ class OwnedDofs {
 public:
   /// One rank: every dof is its own (n_owned() is left 0: not counted).
   OwnedDofs() = default;
+  OwnedDofs(OwnedDofs&&) = default;
+  OwnedDofs& operator=(OwnedDofs&&) = default;
+  ~OwnedDofs();
   /// The dofs rank `distribution.rank` owns, from every cell's rank (`cell_ranks`, the
   /// same on every rank); `plan` numbers the free dofs.
   template <int dim>
@@ -31,6 +34,8 @@ public:
             const ScatterPlan& plan, Distribution distribution);
 
   bool distributed() const { return distribution_.distributed(); }
+  /// Whether this rank owns the (full-length numbering's) `dof`; always on one rank.
+  bool owns(Index dof) const { return !distributed() || owned_full_[dof] != 0; }
   /// This rank's owned dofs, and its ghosts (the other dofs of its own cells, which it
   /// holds but another rank owns); one rank: every dof is owned, none a ghost.
   Index n_owned() const { return n_owned_; }
@@ -43,6 +48,12 @@ public:
   /// Collective: O(n) traffic, for the end of a loop (the results) and for the few
   /// places that still read whole vectors (docs/petsc.md).
   void replicate(VectorX& values) const;
+  /// The ranks' shares of `values` (full-length or free: each rank's own cells' part,
+  /// zero elsewhere) added up: afterwards every entry the rank holds is the sum, the same
+  /// bits on every rank that holds it, and the others are NaN (a ghosted vector).
+  /// Through the ghost exchange (the interface's traffic); without one, summed whole.
+  /// Collective.
+  void sum_shares(VectorX& values) const;
   /// The R factor (c × c, upper triangular, RᵀR = AᵀA) of a tall matrix A of c
   /// full-length or free columns: each rank's QR of its owned rows, then the QR of the
   /// ranks' R's stacked (TSQR: a least-squares problem over the ranks as accurate as
@@ -56,6 +67,11 @@ private:
   std::vector<char> owned_full_; ///< per dof: this rank owns it
   std::vector<char> owned_free_; ///< per free dof
   Index n_owned_ = 0, n_ghosts_ = 0;
+  /// The dofs this rank holds, owned (ascending) then ghosts (ascending): the order of
+  /// the exchange's entries.
+  std::vector<Index> held_;
+  std::vector<Index> free_of_held_; ///< per held dof, its free index (−1: prescribed)
+  std::unique_ptr<GhostExchange> exchange_;
 };
 
 } // namespace formflow::assembly

@@ -154,7 +154,8 @@ AugmentedOutcome<dim> augment_friction(FormingNonlinearProblem<dim>& problem,
         const Real unbalanced =
             state.internal_force
                 ? power_residual(problem.plan(), problem.forming().constraints().driven_dofs,
-                                 *state.velocity, *state.internal_force)
+                                 *state.velocity, *state.internal_force,
+                                 problem.ghosted() ? &problem : nullptr)
                 : std::numeric_limits<Real>::infinity();
         if (std::isfinite(unbalanced)) outcome.power_residual = unbalanced;
         const bool settled = every_iteration

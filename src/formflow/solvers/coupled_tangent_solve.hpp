@@ -15,6 +15,9 @@ using CouplingProduct = std::function<void(const VectorX& x, VectorX& y)>;
 /// A distributed run's sum of the ranks' shares of a vector, in place (collective;
 /// NonlinearProblem::add_up_shares). Empty on one rank.
 using ShareSum = std::function<void(VectorX& values)>;
+/// A distributed run's inner product of ghosted vectors (NonlinearProblem::dot). Empty
+/// on one rank.
+using GhostedDot = std::function<Real(const VectorX& a, const VectorX& b)>;
 
 struct KrylovOutcome {
   bool converged = false;
@@ -29,16 +32,18 @@ struct KrylovOutcome {
 /// so with N = 0 one iteration solves it. `delta` holds the last iterate even
 /// when GMRES did not reach `tolerance` within `max_iterations`.
 /// Distributed (issue 20): T and N are this rank's shares, `add_up_shares` sums each
-/// product T x + N x over the ranks, `rhs` and every Krylov vector are whole and alike
-/// on every rank (the preconditioner is `factorized`'s solve_whole), so every rank runs
-/// the same GMRES iterations to the same δ. The distributed solve hands each rank the
-/// entries of its own cells' dofs only (a ghosted vector, NonlinearProblem::replicate):
-/// `replicate` makes each preconditioned vector whole before GMRES reads it. Not yet a
-/// ghosted Krylov basis: O(n) per basis vector on every rank (docs/petsc.md).
+/// product T x + N x over the ranks into a ghosted vector (the rank's own cells' dofs),
+/// `rhs` and every Krylov vector are ghosted alike (the preconditioner is `factorized`'s
+/// solve_whole, which reads each rank's owned rows and hands back its own cells' ones),
+/// and `dot` sums the inner products over the owners: the same GMRES on every rank, with
+/// the same decisions, to the same δ (each rank its own cells' entries of it). Eigen's
+/// GMRES cannot reduce its inner products over ranks, hence the GMRES of its own here
+/// (left-preconditioned, modified Gram–Schmidt and Givens rotations, restarted like
+/// Eigen's and stopped by the same measure).
 KrylovOutcome solve_coupled_tangent(const assembly::SparseMatrix& tangent_lower,
                                     const CouplingProduct& coupling, LinearSolver& factorized,
                                     const VectorX& rhs, VectorX& delta, Real tolerance,
                                     int max_iterations, const ShareSum& add_up_shares = {},
-                                    const ShareSum& replicate = {});
+                                    const GhostedDot& dot = {});
 
 } // namespace formflow::solvers

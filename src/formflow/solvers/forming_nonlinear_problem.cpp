@@ -48,16 +48,15 @@ void FormingNonlinearProblem<dim>::assemble_newton(const VectorX& u, const DualS
   if (!tangent) return;
   // A distributed run: a rank whose own cells hold no coupling (a rigid part) still joins
   // the others' GMRES, whose every product is collective.
-  VectorX coupled(1);
-  coupled[0] = coupling_.empty() ? 0.0 : 1.0;
-  add_up_shares(coupled);
-  coupled_ = coupled[0] > 0;
+  Real coupled = coupling_.empty() ? 0.0 : 1.0;
+  if (const assembly::Distribution& distribution = problem_.discretisation().distribution();
+      distribution.distributed())
+    distribution.sum_over_ranks(std::span<Real>(&coupled, 1));
+  coupled_ = coupled > 0;
 }
 
 template <int dim> void FormingNonlinearProblem<dim>::add_up_shares(VectorX& values) const {
-  const assembly::Distribution& distribution = problem_.discretisation().distribution();
-  if (distribution.distributed())
-    distribution.sum_over_ranks(std::span<Real>(values.data(), values.size()));
+  problem_.discretisation().owned_dofs().sum_shares(values);
 }
 
 template <int dim>

@@ -120,12 +120,16 @@ std::optional<VectorX> newton_step(NewtonWork& work, const VectorX& velocity, Re
       y += condensation->project(projected);
     };
     const ShareSum add_up_shares = [&](VectorX& values) { work.problem.add_up_shares(values); };
-    const ShareSum replicate = [&](VectorX& values) { work.problem.replicate(values); };
+    // A distributed run's vectors are ghosted: GMRES then takes its inner products over
+    // the ranks' owned entries (one rank: Eigen's GMRES on whole vectors).
+    GhostedDot dot;
+    if (work.problem.ghosted())
+      dot = [&](const VectorX& a, const VectorX& b) { return work.problem.dot(a, b); };
     const KrylovOutcome krylov =
         solve_coupled_tangent(*matrix, coupling, work.linear.solver(), rhs, free_step, work.forcing,
-                              max_krylov_iterations, add_up_shares, replicate);
+                              max_krylov_iterations, add_up_shares, dot);
     work.linear.times().count("krylov iterations", krylov.iterations);
-    if (!free_step.allFinite()) return std::nullopt;
+    if (!std::isfinite(work.problem.norm(free_step))) return std::nullopt;
   }
   // The line search runs along the unconstrained part z (its slope sees no stuck
   // tangential row, whose balance is the constraint's multiplier, set after the step).

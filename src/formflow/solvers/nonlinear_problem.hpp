@@ -104,8 +104,9 @@ public:
   /// y += N x on free dof vectors (a distributed run: this rank's share of N x).
   virtual void apply_coupling(const VectorX& x_free, VectorX& y_free) const = 0;
   /// A distributed run (issue 20) assembles each rank's own cells: the tangent, the
-  /// coupling and their products are the rank's shares. Replaces `values` by the sum of
-  /// the ranks' (collective; the same result on every rank). One rank: nothing to do.
+  /// coupling and their products are the rank's shares. Replaces `values` (a free
+  /// vector) by the sum of the ranks', ghosted like the velocity (collective; every rank
+  /// holding an entry gets the same bits). One rank: nothing to do.
   virtual void add_up_shares(VectorX& values) const { static_cast<void>(values); }
   /// A distributed run's velocities, steps and solutions are ghosted (docs/petsc.md):
   /// each rank holds the entries of its own cells' dofs, NaN elsewhere. The drivers'

@@ -23,6 +23,7 @@
 
 #include "formflow/assembly/sparsity.hpp"
 #include "formflow/core/types.hpp"
+#include "formflow/solvers/nonlinear_problem.hpp"
 
 #include <cmath>
 #include <limits>
@@ -34,13 +35,23 @@ namespace formflow::solvers {
 /// dof vectors; free rows of f: the residual): the relative difference between the
 /// driven end's load and the total power that the residual makes. Dimensionless,
 /// independent of the mesh's numbering and of units; zero in balance. Infinite when the
-/// driven end does no power (nothing to compare with).
+/// driven end does no power (nothing to compare with). `ghosted`: a distributed run's
+/// problem, whose velocity each rank holds in part: both sums over the ranks' owned dofs
+/// (NonlinearProblem::dot).
 inline Real power_residual(const assembly::ScatterPlan& plan, const std::vector<Index>& driven_dofs,
-                           const VectorX& velocity, const VectorX& internal_force) {
+                           const VectorX& velocity, const VectorX& internal_force,
+                           const NonlinearProblem* ghosted = nullptr) {
   Real free_power = 0.0, driven_power = 0.0;
-  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-    if (plan.free_index(dof) >= 0) free_power += velocity[dof] * internal_force[dof];
-  for (Index dof : driven_dofs) driven_power += velocity[dof] * internal_force[dof];
+  if (ghosted) {
+    free_power = ghosted->dot(plan.free_values(velocity), plan.free_values(internal_force));
+    VectorX driven_velocity = VectorX::Zero(velocity.size());
+    for (Index dof : driven_dofs) driven_velocity[dof] = velocity[dof];
+    driven_power = ghosted->dot(driven_velocity, internal_force);
+  } else {
+    for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+      if (plan.free_index(dof) >= 0) free_power += velocity[dof] * internal_force[dof];
+    for (Index dof : driven_dofs) driven_power += velocity[dof] * internal_force[dof];
+  }
   if (!(std::abs(driven_power) > 0)) return std::numeric_limits<Real>::infinity();
   return std::abs(free_power / driven_power);
 }
