@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/SVD>
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -62,6 +64,68 @@ TEST(CoupledTangentSolve, SolvesTheUnsymmetricSystemPreconditionedByTheSymmetric
   const double condition = (1 + std::cos(theta)) / (1 - std::cos(theta));
   EXPECT_LT((delta - symmetric_step).norm(),
             10 * std::numeric_limits<double>::epsilon() * condition * symmetric_step.norm());
+}
+
+/// The GMRES of ghosted vectors (a distributed run's; here with the plain inner product,
+/// one process): the same answers as Eigen's, also through restarts.
+TEST(CoupledTangentSolve, TheGhostedGmresSolvesItAlikeAndRestarts) {
+  const int m = 12; // 144 unknowns: T⁻¹J is small enough to take its condition exactly
+  const assembly::SparseMatrix lower = grid_laplacian_lower(m);
+  const Index n = lower.rows();
+  std::mt19937 generator(11);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  // N = Σ_k c_k d_kᵀ of rank `rank`: T⁻¹J = I + rank-`rank`, a Krylov space of dimension
+  // ≤ rank + 1; twelve exceeds the basis of eight, so GMRES must restart.
+  const auto coupling_of_rank = [&](int rank) {
+    std::vector<VectorX> c(rank, VectorX(n)), d(rank, VectorX(n));
+    for (int k = 0; k < rank; ++k) {
+      for (Index i = 0; i < n; ++i) c[k][i] = uniform(generator), d[k][i] = uniform(generator);
+      c[k] *= 3.0 / c[k].norm();
+      d[k] /= d[k].norm();
+    }
+    return solvers::CouplingProduct([c, d](const VectorX& x, VectorX& y) {
+      for (std::size_t k = 0; k < c.size(); ++k) y += c[k] * d[k].dot(x);
+    });
+  };
+  VectorX b(n);
+  for (Index i = 0; i < n; ++i) b[i] = uniform(generator);
+  auto solver = solvers::make_cholmod_solver();
+  ASSERT_TRUE(solver->analyze(lower));
+  ASSERT_TRUE(solver->factorize(lower));
+  const solvers::GhostedDot plain = [](const VectorX& x, const VectorX& y) { return x.dot(y); };
+  for (const int rank : {2, 12}) {
+    const solvers::CouplingProduct coupling = coupling_of_rank(rank);
+    VectorX delta;
+    const solvers::KrylovOutcome outcome =
+        solvers::solve_coupled_tangent(lower, coupling, *solver, b, delta, 1e-10, 40, {}, plain);
+    ASSERT_TRUE(outcome.converged) << "rank " << rank;
+    if (rank < 8) {
+      EXPECT_LE(outcome.iterations, rank + 1) << "rank " << rank; // no restart
+    } else {
+      EXPECT_GT(outcome.iterations, 8) << "no restart was needed";
+    }
+    // ‖T⁻¹(b − Jδ)‖ ≤ 1e-10 ‖T⁻¹b‖ bounds ‖b − Jδ‖ by κ(T)·1e-10 ‖b‖ ≈ 7e-9 ‖b‖ (κ ≈ 67).
+    VectorX jacobian_delta = lower.selfadjointView<Eigen::Lower>() * delta;
+    coupling(delta, jacobian_delta);
+    EXPECT_LT((jacobian_delta - b).norm(), 1e-7 * b.norm()) << "rank " << rank;
+    // Eigen's GMRES reaches the same δ: each within κ(T⁻¹J)·1e-10 of the solution δ*
+    // (relative), κ computed from T⁻¹J itself.
+    VectorX eigen_delta;
+    ASSERT_TRUE(solvers::solve_coupled_tangent(lower, coupling, *solver, b, eigen_delta, 1e-10, 40)
+                    .converged);
+    MatrixX preconditioned(n, n);
+    for (Index j = 0; j < n; ++j) {
+      VectorX column = lower.selfadjointView<Eigen::Lower>() * VectorX::Unit(n, j);
+      coupling(VectorX::Unit(n, j), column);
+      VectorX solved;
+      ASSERT_TRUE(solver->solve(column, solved));
+      preconditioned.col(j) = solved;
+    }
+    const VectorX singular = Eigen::BDCSVD<MatrixX>(preconditioned).singularValues();
+    const Real condition = singular[0] / singular[n - 1];
+    EXPECT_LT((delta - eigen_delta).norm(), 2 * condition * 1e-10 * eigen_delta.norm())
+        << "rank " << rank << ", condition " << condition;
+  }
 }
 
 } // namespace
