@@ -89,10 +89,6 @@ public:
   /// friction the traction is proj(λ_T + r u_T) for the given (or zero) multipliers.
   std::vector<ContactPoint<dim>>
   contact_state(const VectorX& u, const FrictionMultipliers<dim>* multipliers = nullptr) const;
-  /// Distributed (issue 20): each rank filled its own cells' Γ3 points from its ghosted
-  /// velocity; afterwards every rank holds every point's velocity, pressure and shear
-  /// yield (collective, a surface's worth of numbers). One rank: nothing to do.
-  void exchange_contact_values(std::vector<ContactPoint<dim>>& state) const;
 
   /// The power of every term at `u` for its Γ3 state `contact` (contact_state(u, …)).
   PowerTerms powers(const VectorX& u, const std::vector<ContactPoint<dim>>& contact) const;
@@ -177,6 +173,10 @@ public:
   }
 
 private:
+  /// Distributed (issue 20): each rank filled its own cells' Γ3 points from its ghosted
+  /// velocity; afterwards every rank holds every point's velocity, pressure and shear
+  /// yield (collective, a surface's worth of numbers). One rank: nothing to do.
+  void exchange_contact_values(std::vector<ContactPoint<dim>>& state) const;
   /// Chooses the terms for the current multipliers (terms/term_set.cpp).
   void choose_terms();
   void reinit_contact(fem::FacetValues<dim>& values, const Gradients& coordinates,
