@@ -257,6 +257,8 @@ DistributedCase by_secant(DistributedCase c) {
 INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
                          ::testing::Values(std::pair(paper_penalty, 2), std::pair(paper_mixed, 2),
                                            std::pair(round_penalty, 2), std::pair(round_mixed, 2),
+                                           // Three ranks: odd parts, dofs ghosted on two others.
+                                           std::pair(round_penalty, 3),
                                            std::pair(paper_exact_friction, 2),
                                            std::pair(by_default(paper_penalty), 4),
                                            std::pair(by_secant(paper_penalty), 2),
