@@ -161,6 +161,23 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
     EXPECT_GT(power_residual, 0.0);
     EXPECT_LT(power_residual, c.delta);
   }
+  // Hot forming: the heat solve on rank 0 at the whole velocity, its T sent to every
+  // rank; the temperatures are functionals of the same velocity (their T solve is a
+  // well-conditioned M-matrix-like LU, far better than the flow's), so the reaction's
+  // agreement bounds them too, relative to the temperature rise.
+  if (run.summary.contains("thermal")) {
+    const auto& thermal = run.summary.at("thermal");
+    const auto& serial_thermal = serial.results.thermal;
+    ASSERT_TRUE(serial_thermal.enabled);
+    EXPECT_EQ(thermal.at("coupling").at("iterations").get<int>(),
+              serial_thermal.coupling_iterations);
+    EXPECT_TRUE(thermal.at("coupling").at("converged").get<bool>());
+    const Real rise = serial_thermal.max_temperature - serial_thermal.min_temperature;
+    EXPECT_NEAR(thermal.at("max_temperature").get<Real>(), serial_thermal.max_temperature,
+                tolerance * rise);
+    EXPECT_NEAR(thermal.at("exit_temperature").at("mean").get<Real>(), serial_thermal.exit_mean,
+                tolerance * rise);
+  }
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
   // The velocity is ghosted: every dof owned by one rank, and no rank holds all of them
   // (a rank holds its own cells' dofs; its ghosts are those another rank owns).
@@ -232,6 +249,11 @@ const DistributedCase paper_exact_friction{
      {"friction.stick", "augmented"}}, // the serial run's default is exact stick on nodes
     1e-7};
 
+/// Hot forming (docs/thermal.md): the AA6063 rod, axisymmetric, Sellars–Tegart law,
+/// Coulomb friction on the die, flow and heat solved in turn.
+const DistributedCase hot_forming{
+    "aa6063_hot_extrusion", "cases/aa6063-hot-extrusion.toml", {{"mesh.size", "10"}}, 1e-7};
+
 /// The paper's case on 4 ranks (oversubscribed) as a user types it: no solver.linear.
 DistributedCase by_default(DistributedCase c) {
   c.name += "_petsc_by_default";
@@ -258,7 +280,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
                          ::testing::Values(std::pair(paper_penalty, 2), std::pair(paper_mixed, 2),
                                            std::pair(round_penalty, 2), std::pair(round_mixed, 2),
                                            // Three ranks: odd parts, dofs ghosted on two others.
-                                           std::pair(round_penalty, 3),
+                                           std::pair(round_penalty, 3), std::pair(hot_forming, 2),
                                            std::pair(paper_exact_friction, 2),
                                            std::pair(by_default(paper_penalty), 4),
                                            std::pair(by_secant(paper_penalty), 2),

@@ -54,8 +54,6 @@ void check_distributed(const io::Case& case_) {
            "set solver.linear = \"petsc\", or run as one process");
   if (case_.manufactured != physics::ManufacturedSolution::None)
     refuse("verification.solution", "solves forming cases only", "run it as one process");
-  if (case_.thermal.enabled)
-    refuse("thermal.enabled", "has no heat solve yet", "run hot forming as one process");
   if (case_.solver.load_error != solvers::LoadErrorMethod::None)
     refuse("solver.load_error", "has no error estimate yet",
            "set solver.load_error = \"none\", or run as one process");

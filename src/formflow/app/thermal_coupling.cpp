@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <span>
 
 namespace formflow::app {
 
@@ -64,6 +66,25 @@ std::optional<VectorX> solve_heat(const assembly::HeatProblem<dim>& heat,
   return heat.expand(free);
 }
 
+/// A distributed run (issue 20, docs/thermal.md): the heat problem is a scalar per node,
+/// small beside the flow, and is solved on rank 0 alone (every rank holds the whole
+/// velocity after each flow solve); its T, or its failure, goes to every rank, so that
+/// the coupling's decisions are the same on all of them. One rank: `solve` itself.
+std::optional<VectorX> heat_on_rank_zero(const assembly::Distribution& distribution,
+                                         Index n_nodes,
+                                         const std::function<std::optional<VectorX>()>& solve) {
+  if (!distribution.distributed()) return solve();
+  VectorX message = VectorX::Zero(n_nodes + 1); // [solved, T]
+  if (distribution.rank == 0)
+    if (const std::optional<VectorX> T = solve()) {
+      message[0] = 1.0;
+      message.tail(n_nodes) = *T;
+    }
+  distribution.sum_over_ranks(std::span<Real>(message.data(), message.size()));
+  if (message[0] != 1.0) return std::nullopt;
+  return VectorX(message.tail(n_nodes));
+}
+
 Real last_pressure(const solvers::SecantOutcome& outcome) {
   return outcome.history.empty() ? 0.0 : outcome.history.back().pressure;
 }
@@ -96,8 +117,10 @@ couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
       solvers::LinearSolverKind::Umfpack, solvers::MatrixStorage::Full));
   const int n_points = static_cast<int>(problem.mesh().n_cells()) * problem.full_rule().size();
   const auto heat_at = [&](const VectorX& u) {
-    const assembly::HeatSources sources = sources_at(u);
-    return solve_heat(heat, sources, u, *heat_solver, results.timing);
+    const assembly::HeatSources sources = sources_at(u); // collective (the contact state)
+    return heat_on_rank_zero(problem.discretisation().distribution(), heat.n_nodes(), [&] {
+      return solve_heat(heat, sources, u, *heat_solver, results.timing);
+    });
   };
   // The first flow solve at the billet's temperature everywhere.
   problem.set_point_temperatures(law_temperatures(

@@ -3,6 +3,7 @@
 #include "formflow/solvers/pattern_reuse.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace formflow::solvers {
 
@@ -40,6 +41,21 @@ public:
   bool take_saddle_point_blocks(const assembly::SparseMatrix& coupling,
                                 const assembly::SparseMatrix& pressure_block) override {
     return solver_->take_saddle_point_blocks(coupling, pressure_block);
+  }
+  // The rest of the interface goes through too: a wrapped iterative back-end keeps its
+  // Schur preconditioner, frames, guesses, inexact tolerances and options prefix.
+  void set_schur_preconditioner(const assembly::SparseMatrix& matrix, Index cell_block) override {
+    solver_->set_schur_preconditioner(matrix, cell_block);
+  }
+  void set_local_frames(std::vector<assembly::LocalFrame> frames) override {
+    solver_->set_local_frames(std::move(frames));
+  }
+  void set_initial_guess(VectorX guess) override { solver_->set_initial_guess(std::move(guess)); }
+  bool set_solve_tolerance(Real reduction) override {
+    return solver_->set_solve_tolerance(reduction);
+  }
+  void set_options_prefix(const std::string& prefix) override {
+    solver_->set_options_prefix(prefix);
   }
 
 private:
