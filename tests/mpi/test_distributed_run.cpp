@@ -254,6 +254,23 @@ const DistributedCase paper_exact_friction{
 const DistributedCase hot_forming{
     "aa6063_hot_extrusion", "cases/aa6063-hot-extrusion.toml", {{"mesh.size", "10"}}, 1e-7};
 
+/// Exact constraints by Uzawa steps (session 16): incompressibility with d = 0 (the
+/// condensed P1disc pressure's multipliers, each rank stepping its own cells'), and exact
+/// contact with d_N = 0 (the Γ3 points' multipliers, alike on every rank).
+const DistributedCase paper_uzawa{"paper_uzawa_exact_incompressibility",
+                                  "",
+                                  {{"mesh.size", "2.5"},
+                                   {"friction.mu", "0.1"},
+                                   {"formulation.type", "mixed"},
+                                   {"formulation.pressure", "P1disc"},
+                                   {"penalty.d", "0"}},
+                                  1e-7};
+const DistributedCase paper_exact_contact{
+    "paper_exact_contact",
+    "",
+    {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}, {"penalty.dN", "0"}},
+    1e-7};
+
 /// The paper's case on 4 ranks (oversubscribed) as a user types it: no solver.linear.
 DistributedCase by_default(DistributedCase c) {
   c.name += "_petsc_by_default";
@@ -281,6 +298,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
                                            std::pair(round_penalty, 2), std::pair(round_mixed, 2),
                                            // Three ranks: odd parts, dofs ghosted on two others.
                                            std::pair(round_penalty, 3), std::pair(hot_forming, 2),
+                                           std::pair(paper_uzawa, 2),
+                                           std::pair(paper_exact_contact, 2),
                                            std::pair(paper_exact_friction, 2),
                                            std::pair(by_default(paper_penalty), 4),
                                            std::pair(by_secant(paper_penalty), 2),

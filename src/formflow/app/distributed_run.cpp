@@ -76,15 +76,12 @@ void check_distributed(const io::Case& case_) {
              "set formulation.pressure = \"P1disc\" or \"P0\" (with "
              "formulation.discontinuous_pressure = \"saddle_point\" for the iterative path), "
              "or run as one process");
-    // Contact multipliers (d_N = 0) take Uzawa steps around the saddle point, which read
-    // every Γ3 point's weight: not summed over the ranks yet.
-    if (plan.shape.exact_contact)
-      refuse("penalty.dN", "serves a penalised contact only (d_N > 0: no Uzawa steps yet)",
-             "give penalty.dN a positive value, or run as one process");
     return;
   }
-  refuse("penalty.d", "serves penalised constraints only (d > 0, d_N > 0: no Uzawa steps yet)",
-         "give penalty.d and penalty.dN positive values, or run as one process");
+  // Exact constraints by Uzawa steps (d = 0 with a condensed pressure, d_N = 0): each
+  // rank steps its own cells' multipliers, the Γ3 points' alike from the exchanged
+  // contact state (ConstraintMultipliers::update, session 16).
+  FF_ASSERT(plan.loop == solvers::LoopKind::UzawaSecant, "every loop kind is handled above");
 }
 
 io::Case load_run_case(const std::string& path, std::vector<io::Override> overrides) {

@@ -7,6 +7,7 @@
 
 #include <Eigen/LU>
 
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -125,21 +126,40 @@ VectorX ConstraintMultipliers<dim>::cell_velocity(Index cell, const VectorX& u) 
 }
 
 template <int dim>
-Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> normal_velocity) {
+Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> normal_velocity,
+                                        const std::vector<int>& cell_ranks,
+                                        const Distribution& distribution) {
+  const bool distributed = distribution.distributed();
+  FF_ASSERT(!distributed || static_cast<Index>(cell_ranks.size()) == mesh_.n_cells(),
+            "a distributed update knows every cell's rank");
+  const auto own = [&](Index cell) {
+    return !distributed || cell_ranks[cell] == distribution.rank;
+  };
   Real change = 0.0;
   if (is_exact_pressure() && !has_global_pressure()) {
-    Real change_norm = 0.0, norm = 0.0;
+    std::array<Real, 2> norms{0.0, 0.0}; // ‖Δλ‖², ‖λ‖² (M-weighted)
     for (Index cell = 0; cell < mesh_.n_cells(); ++cell) {
+      if (!own(cell)) continue;
       const VectorX step = augmentation_[cell] *
                            (inverse_mass_[cell] * (divergence_[cell] * cell_velocity(cell, u)));
       multiplier_[cell] += step;
-      change_norm += step.dot(mass_[cell] * step);
-      norm += multiplier_[cell].dot(mass_[cell] * multiplier_[cell]);
+      norms[0] += step.dot(mass_[cell] * step);
+      norms[1] += multiplier_[cell].dot(mass_[cell] * multiplier_[cell]);
     }
-    change = norm > 0 ? std::sqrt(change_norm / norm) : 0.0;
+    if (distributed) {
+      distribution.sum_over_ranks(norms);
+      gather_cell_multipliers(own, distribution);
+    }
+    change = norms[1] > 0 ? std::sqrt(norms[0] / norms[1]) : 0.0;
   }
   if (is_exact_contact()) {
     FF_ASSERT(normal_velocity.size() == contact_multiplier_.size(), "one u_N per Γ3 point");
+    // Each point's weight was recorded by its face's rank (the others hold 0 or an
+    // earlier sum): the owner's value, the same on every rank.
+    if (distributed && !contact_weights_summed_) {
+      distribution.sum_over_ranks(contact_weight_);
+      contact_weights_summed_ = true;
+    }
     Real change_norm = 0.0, norm = 0.0;
     for (std::size_t k = 0; k < contact_multiplier_.size(); ++k) {
       const Real step = formulation_.contact_augmentation * normal_velocity[k];
@@ -150,6 +170,28 @@ Real ConstraintMultipliers<dim>::update(const VectorX& u, std::span<const Real> 
     if (norm > 0) change = std::max(change, std::sqrt(change_norm / norm));
   }
   return change;
+}
+
+template <int dim>
+void ConstraintMultipliers<dim>::gather_cell_multipliers(const std::function<bool(Index)>& own,
+                                                         const Distribution& distribution) {
+  // Every cell's λ_e and r_e from its rank (the others add zeros): the post-processing
+  // reads every cell's pressure, and the next assembly its own cells' again.
+  const Index n_cells = mesh_.n_cells();
+  const Index per_cell = n_pressure_ + 1;
+  std::vector<Real> values(static_cast<std::size_t>(n_cells * per_cell), 0.0);
+  for (Index cell = 0; cell < n_cells; ++cell) {
+    if (!own(cell)) continue;
+    Real* slot = values.data() + cell * per_cell;
+    for (int i = 0; i < n_pressure_; ++i) slot[i] = multiplier_[cell][i];
+    slot[n_pressure_] = augmentation_[cell];
+  }
+  distribution.sum_over_ranks(values);
+  for (Index cell = 0; cell < n_cells; ++cell) {
+    const Real* slot = values.data() + cell * per_cell;
+    for (int i = 0; i < n_pressure_; ++i) multiplier_[cell][i] = slot[i];
+    augmentation_[cell] = slot[n_pressure_];
+  }
 }
 
 template <int dim>

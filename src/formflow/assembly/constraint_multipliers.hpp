@@ -4,11 +4,13 @@
 // (augmented-Lagrangian) multipliers of incompressibility and contact (issue 5).
 #pragma once
 
+#include "formflow/assembly/distribution.hpp"
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/fem/pressure_space.hpp"
 #include "formflow/mesh/mesh.hpp"
 #include "formflow/physics/process.hpp"
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -110,7 +112,13 @@ public:
   /// One Uzawa step from velocity `u` and the Γ3 normal velocities
   /// (contact_state order). Returns the relative change of the multipliers
   /// (the larger of pressure and contact), 0 when nothing is exact.
-  Real update(const VectorX& u, std::span<const Real> normal_velocity);
+  /// Distributed (issue 20): `u` is ghosted and the assembly recorded r_e and the Γ3
+  /// weights for the rank's own cells (`cell_ranks`, `distribution.rank`) only: each
+  /// rank steps its own cells' λ_e, the changes' norms and the cells' λ_e and r_e are
+  /// summed over the ranks (each cell one rank's, so every rank gets the owner's bits),
+  /// and the Γ3 weights are summed before the (whole, alike) contact step.
+  Real update(const VectorX& u, std::span<const Real> normal_velocity,
+              const std::vector<int>& cell_ranks = {}, const Distribution& distribution = {});
 
   /// σ_H coefficients of `cell` at velocity `u` (length pressure_functions_per_cell).
   VectorX pressure_coefficients(Index cell, const VectorX& u) const;
@@ -150,6 +158,10 @@ public:
   const physics::Penalty& penalty() const { return penalty_; }
 
 private:
+  /// Every cell's λ_e and r_e from the rank that owns the cell (`own`), summed over the
+  /// ranks (collective).
+  void gather_cell_multipliers(const std::function<bool(Index)>& own,
+                               const Distribution& distribution);
   VectorX cell_velocity(Index cell, const VectorX& u) const;
   /// Global pressure: numbers the cell vertices (on first sight) into pressure_dofs_.
   void number_vertices();
@@ -167,6 +179,9 @@ private:
   std::vector<Real> augmentation_;       ///< r_e per cell from the last assembly (d = 0)
   std::vector<Real> contact_multiplier_; ///< λ_k per Γ3 point (d_N = 0)
   std::vector<Real> contact_weight_; ///< JxW per Γ3 point, filled by the augmented contact term
+  /// Distributed: contact_weight_ was summed over the ranks (the weights are geometry:
+  /// every assembly records the same ones, so one sum serves).
+  bool contact_weights_summed_ = false;
   std::vector<Index> pressure_dofs_; ///< global pressure: n_pressure per cell, cell-major
   Index n_pressure_dofs_ = 0;
   VectorX pressure_;                     ///< global pressure: vertex values of σ_H

@@ -85,7 +85,9 @@ Real FormingNonlinearProblem<dim>::update_constraint_multipliers(const VectorX& 
   if (multipliers.is_exact_contact())
     for (const auto& point : problem_.contact_state(velocity))
       normal_velocity.push_back(point.normal_velocity);
-  return multipliers.update(velocity, normal_velocity);
+  const assembly::Discretisation<dim>& discretisation = problem_.discretisation();
+  return multipliers.update(velocity, normal_velocity, discretisation.cell_ranks(),
+                            discretisation.distribution());
 }
 
 template <int dim> void FormingNonlinearProblem<dim>::enable_exact_stick() {
