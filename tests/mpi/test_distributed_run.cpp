@@ -178,6 +178,18 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
     EXPECT_NEAR(thermal.at("exit_temperature").at("mean").get<Real>(), serial_thermal.exit_mean,
                 tolerance * rise);
   }
+  // The load's error bar (solver.load_error = "refined"): its loads on the refined,
+  // coarser and doubled-regularisation problems are each within `tolerance` of the
+  // serial ones relative to p, and the bar F_s|Δ|/(1 − q) + |Δ_ε| combines four of
+  // them with weights ≤ 1.25/(1 − ½) = 2.5: within 2 · (2.5 + 1) · tolerance · |p|.
+  const auto& error_bar = run.summary.at("pressure").at("ram_reaction_error");
+  if (serial.results.load_error.error) {
+    ASSERT_FALSE(error_bar.is_null()) << run.summary.at("pressure");
+    EXPECT_NEAR(error_bar.get<Real>(), *serial.results.load_error.error,
+                7 * tolerance * std::abs(reference));
+  } else {
+    EXPECT_TRUE(error_bar.is_null()) << run.summary.at("pressure");
+  }
   EXPECT_EQ(run.summary.at("linear_algebra").at("ranks"), ranks);
   // The velocity is ghosted: every dof owned by one rank, and no rank holds all of them
   // (a rank holds its own cells' dofs; its ghosts are those another rank owns).
@@ -271,6 +283,15 @@ const DistributedCase paper_exact_contact{
     {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}, {"penalty.dN", "0"}},
     1e-7};
 
+/// The load's error bar on two ranks: the settle on the refined mesh, the adjoint through
+/// the transposed coupling (the nonlocal friction's too), the coarser level and the
+/// doubled regularisations, each distributed.
+const DistributedCase paper_load_error{
+    "paper_load_error",
+    "",
+    {{"mesh.size", "2.5"}, {"friction.mu", "0.1"}, {"solver.load_error", "refined"}},
+    1e-7};
+
 /// The paper's case on 4 ranks (oversubscribed) as a user types it: no solver.linear.
 DistributedCase by_default(DistributedCase c) {
   c.name += "_petsc_by_default";
@@ -300,6 +321,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, DistributedMatchesCholmod,
                                            std::pair(round_penalty, 3), std::pair(hot_forming, 2),
                                            std::pair(paper_uzawa, 2),
                                            std::pair(paper_exact_contact, 2),
+                                           std::pair(paper_load_error, 2),
                                            std::pair(paper_exact_friction, 2),
                                            std::pair(by_default(paper_penalty), 4),
                                            std::pair(by_secant(paper_penalty), 2),

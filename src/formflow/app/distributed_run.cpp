@@ -54,9 +54,6 @@ void check_distributed(const io::Case& case_) {
            "set solver.linear = \"petsc\", or run as one process");
   if (case_.manufactured != physics::ManufacturedSolution::None)
     refuse("verification.solution", "solves forming cases only", "run it as one process");
-  if (case_.solver.load_error != solvers::LoadErrorMethod::None)
-    refuse("solver.load_error", "has no error estimate yet",
-           "set solver.load_error = \"none\", or run as one process");
   const SolvePlan plan = make_solve_plan(case_);
   // Exact friction's multipliers are updated per Γ3 point from the replicated velocity,
   // alike on every rank; its exact stick condenses T, which a rank holds a share of.

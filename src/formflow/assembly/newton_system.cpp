@@ -149,8 +149,10 @@ void FormingProblem<dim>::apply_coupling_transpose(const UnsymmetricTangent<dim>
   // (A the mollifier, the normals fixed), S the per-point (∂τ_f/∂σ̄_N) ĝ, B the
   // tractions' nodal forces ∫ φ_a · dΓ. So N_fᵀ x = Mᵀ Sᵀ Bᵀ x, in two face loops.
   FF_ASSERT(multipliers_ == nullptr, "the friction coupling's transpose is the penalty contact's");
-  FF_ASSERT(!discretisation_->distribution().distributed(),
-            "the adjoint (the load's error estimate) runs on one rank");
+  // A distributed run: each rank its own cells' faces (x ghosted, y a share); the
+  // points' weighted traces are summed over the ranks before the mollifier's transpose,
+  // which reaches every point.
+  const Distribution& distribution = discretisation_->distribution();
   fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
   typename fem::CellValues<dim>::Gradients coordinates, unused;
   const int n_face_q = facet_rule().size();
@@ -159,6 +161,7 @@ void FormingProblem<dim>::apply_coupling_transpose(const UnsymmetricTangent<dim>
   for (int pass = 0; pass < 2; ++pass) {
     for (std::size_t position = 0; position < n_facets; ++position) {
       const mesh::BoundaryFacet& facet = mesh_.facets[discretisation_->contact_facets()[position]];
+      if (!discretisation_->assembles(facet.cell)) continue; // another rank's face
       gather(facet.cell, nullptr, coordinates, unused);
       reinit_contact(facet_values, coordinates, static_cast<Index>(position));
       for (int q = 0; q < n_face_q; ++q) {
@@ -179,7 +182,10 @@ void FormingProblem<dim>::apply_coupling_transpose(const UnsymmetricTangent<dim>
         }
       }
     }
-    if (pass == 0) discretisation_->mollifier().apply_transpose(weighted, spread);
+    if (pass == 0) {
+      if (distribution.distributed()) distribution.sum_over_ranks(weighted);
+      discretisation_->mollifier().apply_transpose(weighted, spread);
+    }
   }
 }
 

@@ -53,6 +53,8 @@ VectorX reaction_gradient(const assembly::FormingProblem<dim>& problem,
   const VectorX full_gradient_t = tangent.reaction_rows.transpose() * row_weights;
   VectorX full_gradient = full_gradient_t;
   if (!coupling.empty()) problem.apply_coupling_transpose(coupling, driven, full_gradient);
+  // A distributed run's rows and coupling are the rank's shares: their sum, ghosted.
+  problem.discretisation().owned_dofs().sum_shares(full_gradient);
   VectorX gradient(plan.n_free());
   for (Index dof = 0; dof < plan.n_dofs(); ++dof)
     if (const Index free = plan.free_index(dof); free >= 0) gradient[free] = full_gradient[dof];
@@ -107,7 +109,9 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
     const solvers::SecantOutcome outcome =
         solvers::newton_iteration(nonlinear, *settle_solver, *settle, {}, inner, &prolonged);
     settle_iterations = static_cast<Index>(outcome.history.size());
-    if (outcome.velocity.allFinite()) prolonged = outcome.velocity;
+    VectorX settled = outcome.velocity;
+    fine.discretisation().owned_dofs().replicate(settled); // ghosted on several ranks
+    if (settled.allFinite()) prolonged = std::move(settled);
     refined_velocity = prolonged;
   }
   const std::vector<Real> thresholds = fine.friction_thresholds(prolonged);
@@ -126,9 +130,12 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
   auto solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
   if (!solver->analyze(tangent.matrix) || !solver->factorize(tangent.matrix))
     return unavailable("the tangent on the refined mesh is not positive definite");
+  // Distributed (issue 20): the gradient is summed (ghosted), the tangent and coupling
+  // are shares; the adjoint comes back ghosted and is made whole for the weights.
+  const assembly::OwnedDofs& owned = fine.discretisation().owned_dofs();
   VectorX adjoint;
   if (coupling.empty()) {
-    if (!solver->solve(gradient, adjoint))
+    if (!solver->solve_whole(gradient, adjoint) || !solver->finite(adjoint))
       return unavailable("the adjoint solve on the refined mesh failed");
   } else {
     // (T + Nᵀ) z = g: T symmetric, so only N is transposed.
@@ -139,12 +146,19 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
       for (Index dof = 0; dof < plan.n_dofs(); ++dof)
         if (const Index free = plan.free_index(dof); free >= 0) y[free] += full_y[dof];
     };
-    const solvers::KrylovOutcome krylov =
-        solvers::solve_coupled_tangent(tangent.matrix, transposed, *solver, gradient, adjoint,
-                                       adjoint_tolerance, max_adjoint_krylov_iterations);
-    if (!krylov.converged || !adjoint.allFinite())
+    solvers::ShareSum add_up_shares;
+    solvers::GhostedDot dot;
+    if (owned.distributed()) {
+      add_up_shares = [&owned](VectorX& values) { owned.sum_shares(values); };
+      dot = [&owned](const VectorX& a, const VectorX& b) { return owned.dot(a, b); };
+    }
+    const solvers::KrylovOutcome krylov = solvers::solve_coupled_tangent(
+        tangent.matrix, transposed, *solver, gradient, adjoint, adjoint_tolerance,
+        max_adjoint_krylov_iterations, add_up_shares, dot);
+    if (!krylov.converged || !std::isfinite(owned.dot(adjoint, adjoint)))
       return unavailable("GMRES on the transposed tangent did not converge");
   }
+  owned.replicate(adjoint);
   if (!adjoint.allFinite()) return unavailable("the adjoint is not finite");
 
   // 3. The weights W (fine) and W_h (its values at the coarse nodes) and the cells' shares.
