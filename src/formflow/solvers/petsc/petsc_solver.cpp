@@ -48,12 +48,12 @@ public:
 
   bool analyze(const assembly::SparseMatrix& matrix) override {
     copy(matrix);
-    return matrix_ != nullptr;
+    return agreed(matrix_ != nullptr);
   }
 
   bool factorize(const assembly::SparseMatrix& matrix) override {
     copy(matrix);
-    if (!matrix_) return false;
+    if (!agreed(matrix_ != nullptr)) return false;
     petsc::ErrorCapture capture;
     if (!ksp_ && !make_ksp(capture)) return false;
     // The KSP sees new values on the same pattern: the factorisation (or the AMG
@@ -89,7 +89,7 @@ public:
     PC preconditioner = nullptr;
     KSPGetPC(ksp_, &preconditioner);
     PCGetFailedReason(preconditioner, &failed);
-    return failed == PC_NOERROR;
+    return agreed(failed == PC_NOERROR); // a PC's failure is its rank's own
   }
 
   bool solve(const VectorX& rhs, VectorX& solution) override {
@@ -126,13 +126,16 @@ public:
       write(solution_, in_solved_unknowns(std::move(*guess)));
     KSPSetInitialGuessNonzero(ksp_, guessed ? PETSC_TRUE : PETSC_FALSE);
     krylov_start_.apply_tolerance(ksp_, matrix_, rhs_, solution_, guessed);
-    if (KSPSolve(ksp_, rhs_, solution_) != 0) return false;
+    const bool solved = KSPSolve(ksp_, rhs_, solution_) == 0;
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
-    KSPGetConvergedReason(ksp_, &reason);
     PetscInt iterations = 0;
-    KSPGetIterationNumber(ksp_, &iterations);
+    if (solved) {
+      KSPGetConvergedReason(ksp_, &reason);
+      KSPGetIterationNumber(ksp_, &iterations);
+    }
     iterations_ += iterations;
-    if (reason < 0) return false;
+    // All ranks reach the solution's scatter below, or none.
+    if (!agreed(solved && reason >= 0)) return false;
     const PetscScalar* result = nullptr;
     solution.resize(n);
     if (distributed_) {
@@ -172,6 +175,11 @@ public:
   }
 
   long krylov_iterations() const override { return iterations_; }
+
+  /// Distributed: whether every rank succeeded (collective). A rank that failed alone (a
+  /// PC's failure is reported on its own rank) would otherwise leave the loop while the
+  /// others wait for it in the next collective call.
+  bool agreed(bool ok) const { return !distributed_ || petsc::max_over_ranks(ok ? 0 : 1) == 0; }
 
   bool finite(const VectorX& solution) const override {
     return distributed_ ? solution_finite_ : solution.allFinite();
