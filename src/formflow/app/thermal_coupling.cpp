@@ -70,8 +70,7 @@ std::optional<VectorX> solve_heat(const assembly::HeatProblem<dim>& heat,
 /// small beside the flow, and is solved on rank 0 alone (every rank holds the whole
 /// velocity after each flow solve); its T, or its failure, goes to every rank, so that
 /// the coupling's decisions are the same on all of them. One rank: `solve` itself.
-std::optional<VectorX> heat_on_rank_zero(const assembly::Distribution& distribution,
-                                         Index n_nodes,
+std::optional<VectorX> heat_on_rank_zero(const assembly::Distribution& distribution, Index n_nodes,
                                          const std::function<std::optional<VectorX>()>& solve) {
   if (!distribution.distributed()) return solve();
   VectorX message = VectorX::Zero(n_nodes + 1); // [solved, T]
