@@ -44,6 +44,8 @@ OwnedDofs::OwnedDofs(const mesh::Mesh<dim>& mesh, const std::vector<int>& cell_r
       const Index dof = fem::dof_of<dim>(node, i);
       if (owner[node] == distribution_.rank) {
         held_.push_back(dof);
+        owned_full_[dof] = 1;
+        if (const Index free = plan.free_index(dof); free >= 0) owned_free_[free] = 1;
       } else if (touched[node]) {
         ghosts.push_back(dof);
         ghost_globals.push_back(global);
@@ -55,14 +57,6 @@ OwnedDofs::OwnedDofs(const mesh::Mesh<dim>& mesh, const std::vector<int>& cell_r
   for (const Index dof : held_) free_of_held_.push_back(plan.free_index(dof));
   if (distribution_.make_ghost_exchange)
     exchange_ = distribution_.make_ghost_exchange(n_owned_, ghost_globals);
-  for (Index node = 0; node < mesh.n_nodes(); ++node) {
-    if (owner[node] != distribution_.rank) continue;
-    for (int i = 0; i < dim; ++i) {
-      const Index dof = fem::dof_of<dim>(node, i);
-      owned_full_[dof] = 1;
-      if (const Index free = plan.free_index(dof); free >= 0) owned_free_[free] = 1;
-    }
-  }
 }
 
 const std::vector<char>& OwnedDofs::mask_of(Index size) const {

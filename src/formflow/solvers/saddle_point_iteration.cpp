@@ -37,6 +37,17 @@ SaddlePointSolve<dim>::SaddlePointSolve(FormingNonlinearProblem<dim>& problem,
   for (Index dof = 0; dof < plan.n_dofs(); ++dof)
     if (const Index row = plan.free_index(dof); row >= 0) dof_of_velocity[row] = dof;
   linear.solver().set_velocity_nodes(dim, std::move(dof_of_velocity));
+  // A distributed run: each pressure dof's owner, the lowest rank among its cells
+  // (replicate_pressure).
+  const assembly::Discretisation<dim>& discretisation = forming.discretisation();
+  if (discretisation.distribution().distributed()) {
+    const std::vector<int>& cell_ranks = discretisation.cell_ranks();
+    pressure_owner_.assign(static_cast<std::size_t>(saddle_->n_pressure()),
+                           discretisation.distribution().size);
+    for (Index cell = 0; cell < static_cast<Index>(cell_ranks.size()); ++cell)
+      for (const Index dof : forming.multipliers()->cell_pressure_dofs(cell))
+        pressure_owner_[dof] = std::min(pressure_owner_[dof], cell_ranks[cell]);
+  }
 }
 
 /// One secant step at the lagged velocity `w` (null: constant viscosity):
@@ -106,20 +117,13 @@ template <int dim> LaggedStep SaddlePointSolve<dim>::solve(const VectorX* w, Vec
 }
 
 template <int dim> void SaddlePointSolve<dim>::replicate_pressure(VectorX& increment) const {
-  const assembly::Discretisation<dim>& discretisation = problem_.forming().discretisation();
-  const assembly::Distribution& distribution = discretisation.distribution();
+  const assembly::Distribution& distribution = problem_.forming().discretisation().distribution();
   if (!distribution.distributed()) return;
   // The solve hands each rank its own cells' pressure dofs (a ghosted solution); the
-  // pressure is kept whole (the post-processing reads every cell's): each dof from the
-  // lowest rank among its cells, the others adding zeros.
-  const assembly::ConstraintMultipliers<dim>& multipliers = *problem_.forming().multipliers();
-  const std::vector<int>& cell_ranks = discretisation.cell_ranks();
-  std::vector<int> owner(static_cast<std::size_t>(increment.size()), distribution.size);
-  for (Index cell = 0; cell < static_cast<Index>(cell_ranks.size()); ++cell)
-    for (const Index dof : multipliers.cell_pressure_dofs(cell))
-      owner[dof] = std::min(owner[dof], cell_ranks[cell]);
+  // pressure is kept whole (the post-processing reads every cell's): each dof from its
+  // owner, the others adding zeros.
   for (Index dof = 0; dof < increment.size(); ++dof)
-    if (owner[dof] != distribution.rank) increment[dof] = 0.0;
+    if (pressure_owner_[dof] != distribution.rank) increment[dof] = 0.0;
   distribution.sum_over_ranks(std::span<Real>(increment.data(), increment.size()));
 }
 

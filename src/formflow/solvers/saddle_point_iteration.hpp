@@ -8,6 +8,7 @@
 #include "formflow/solvers/secant_iteration.hpp"
 
 #include <optional>
+#include <vector>
 
 namespace formflow::solvers {
 
@@ -41,6 +42,7 @@ private:
   assembly::LinearSystem system_;
   std::optional<assembly::SaddlePointSystem<dim>> saddle_;
   bool blocks_decided_ = false, blocks_ = false; ///< LinearSolver::take_saddle_point_blocks
+  std::vector<int> pressure_owner_; ///< distributed: each pressure dof's rank; else empty
 };
 
 } // namespace formflow::solvers
