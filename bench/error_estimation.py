@@ -8,7 +8,10 @@ uniform meshes: the load p_h, the estimate of |p_h - p|, the true error, the
 effectivity index (estimate / true error) and whether p_h +- estimate holds p.
 
     python3 bench/error_estimation.py --binary build/formflow [--sizes 1,0.5,0.25]
-        [--only ram|wedge15|wedge30] [--method refined|linearized]
+        [--only ram|wedge15|wedge30] [--method refined|coarser|auto|linearized]
+
+With "coarser" the two differences are p_h − p_{2h} and p_{2h} − p_{4h}; with
+"refined" p_{h/2} − p_h and p_h − p_{2h} (or p_{h/4} − p_{h/2} where 2h is not made).
 
 Prints a Markdown table. Timings are in the table only as the run's own
 summary.json numbers; take them on a quiet machine.
@@ -61,13 +64,13 @@ def main():
     parser.add_argument("--binary", default="build/formflow")
     parser.add_argument("--only", choices=sorted(CASES))
     parser.add_argument("--sizes", help="comma-separated mesh sizes (default: per case)")
-    parser.add_argument("--method", default="refined", choices=["refined", "linearized"])
+    parser.add_argument("--method", default="refined", choices=["refined", "coarser", "auto", "linearized"])
     parser.add_argument("--set", action="append", default=[], help="extra KEY=VALUE overrides")
     args = parser.parse_args()
-    print("| case | h | dofs | p_h | estimate | p_h − p | effectivity | p in p_h ± est |"
-          " p_{h/2} − p_h | p_h − p_{2h} (or p_{h/4} − p_{h/2}) | ratio q | tail F_s|Δ|/(1−q) | penalties p(2ε) − p(ε) |"
+    print("| case | h | dofs | p_h | method | estimate | p_h − p | effectivity | p in p_h ± est |"
+          " Δ | previous Δ | ratio q | tail | penalties p(2ε) − p(ε) |"
           " run s | estimate s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as scratch:
         for name, (settings, exact, sizes) in CASES.items():
             if args.only and name != args.only:
@@ -85,18 +88,23 @@ def main():
                 error = load - exact
                 timing = summary["timing_s"]
                 if estimate is None:
-                    print(f"| {name} | {size:g} | {summary['mesh']['dofs']} | {load:.4f} | "
-                          f"none ({info['unavailable']}) | {error:+.4f} | | | | | | |")
+                    print(f"| {name} | {size:g} | {summary['mesh']['dofs']} | {load:.4f} | — | "
+                          f"none ({info['unavailable']}) | {error:+.4f} | | | | | | | | | |")
                     continue
                 contained = "yes" if abs(error) <= estimate else "no"
-                coarser = info["coarser_change"]
-                finer = info.get("finer_change")
-                # The third level: 2h where the channel admits it, else h/4.
-                coarser = (f"{coarser:+.4f}" if coarser is not None
-                           else f"(h/4: {finer:+.4f})" if finer is not None else "—")
+                if info["method"] == "coarser":
+                    change = info["coarser_change"]
+                    previous = f"{info['coarsest_change']:+.4f}"
+                else:
+                    change = info["refined_change"]
+                    coarser = info["coarser_change"]
+                    finer = info.get("finer_change")
+                    # The third level: 2h where the channel admits it, else h/4.
+                    previous = (f"{coarser:+.4f}" if coarser is not None
+                                else f"(h/4: {finer:+.4f})" if finer is not None else "—")
                 print(f"| {name} | {size:g} | {summary['mesh']['dofs']} | {load:.4f} | "
-                      f"{estimate:.4f} | {error:+.4f} | {estimate / abs(error):.2f} | "
-                      f"{contained} | {info['refined_change']:+.4f} | {coarser} | "
+                      f"{info['method']} | {estimate:.4f} | {error:+.4f} | "
+                      f"{estimate / abs(error):.2f} | {contained} | {change:+.4f} | {previous} | "
                       f"{info['tail_ratio']:.3f} | {info['discretisation']:.4f} | "
                       f"{info['penalty_change']:+.5f} | {timing['total']:.2f} | "
                       f"{timing.get('error estimate', 0):.2f} |", flush=True)

@@ -5,6 +5,7 @@
 #include "support/angles.hpp"
 #include "support/forming_references.hpp"
 
+#include "formflow/app/load_error.hpp"
 #include "formflow/io/results_writer.hpp"
 #include "formflow/post/load_error_estimate.hpp"
 
@@ -242,6 +243,93 @@ TEST(LoadErrorEstimate, TailRatioIsTheSlowerOfFirstOrderAndTheObserved) {
   EXPECT_DOUBLE_EQ(post::discretisation_tail(-0.04, 0.6), 0.125);
   EXPECT_DOUBLE_EQ(post::load_error_bound(-0.04, 0.6, 0.003), 0.128);
   EXPECT_DOUBLE_EQ(post::tail_beyond_refined(-0.04, 0.6), 0.075);
+}
+
+TEST(LoadErrorEstimate, CoarserLevelsContainHillsValue) {
+  // solver.load_error = "coarser" (the default where the channel admits 2h and 4h):
+  // F_s |p_h − p_{2h}| q/(1 − q) + |p_{2h}(2ε) − p_{2h}(ε)|, q = max(½, observed on 4h,
+  // 2h, h). h = 1/4 is the rung whose 4h = 1 has one row of cells across the exit: the
+  // most pre-asymptotic ratio of the reliability table (30°: 0.726, effectivity 2.82;
+  // docs/error-estimation.md, "An estimate on every run"). Why it contains Hill's
+  // value: the ratios after it on the converged ladders are at most 0.576, below the
+  // observed q, so the geometric tail with q is at least the true one before F_s.
+  for (double degrees : {15.0, 30.0}) {
+    io::Case case_ = hill_drawing(degrees, 0.25);
+    case_.solver.load_error = solvers::LoadErrorMethod::Coarser;
+    const post::Results results = app::simulate(case_).results;
+    ASSERT_TRUE(results.converged());
+    const post::LoadErrorEstimate& estimate = results.load_error;
+    ASSERT_TRUE(estimate.error.has_value()) << estimate.unavailable;
+    EXPECT_EQ(estimate.method, "coarser");
+    ASSERT_TRUE(estimate.coarser_change && estimate.coarsest_change && estimate.observed_ratio);
+    // A kinematic approximation: each coarser level's load lies above.
+    EXPECT_LT(*estimate.coarser_change, 0.0) << degrees << "°";
+    EXPECT_LT(*estimate.coarsest_change, 0.0) << degrees << "°";
+    EXPECT_DOUBLE_EQ(*estimate.observed_ratio,
+                     *estimate.coarser_change / *estimate.coarsest_change);
+    EXPECT_EQ(estimate.ratio, std::max(0.5, *estimate.observed_ratio));
+    EXPECT_DOUBLE_EQ(*estimate.error, 1.25 * std::abs(*estimate.coarser_change) * estimate.ratio /
+                                              (1.0 - estimate.ratio) +
+                                          std::abs(estimate.penalty_change.value_or(NAN)));
+    EXPECT_EQ(estimate.enriched_dofs, 0) << "no mesh finer than the run's";
+    EXPECT_EQ(estimate.cell_indicators.size(), 0) << "no indicators without the adjoint";
+    EXPECT_GT(estimate.coarser_newton_iterations, 0);
+    const double exact = hill_wedge_stress(degrees * degree);
+    const double index = *estimate.error / std::abs(results.pressure.ram_reaction - exact);
+    EXPECT_GE(index, min_effectivity) << degrees << "°";
+    EXPECT_LE(index, max_effectivity) << degrees << "°";
+    EXPECT_LE(std::abs(results.pressure.ram_reaction - exact), *estimate.error)
+        << degrees << "°: p_h = " << results.pressure.ram_reaction << ", exact " << exact;
+    const std::string summary = io::summary_json(case_, results);
+    EXPECT_NE(summary.find("\"method\": \"coarser\""), std::string::npos);
+  }
+  // h = 1/2: 2h = 1 exists but 4h does not; q = ½ assumed there failed (30°: 0.196
+  // against an error of 0.2475), so "coarser" is refused with the reason.
+  io::Case unfit = hill_drawing(30.0, 0.5);
+  unfit.solver.load_error = solvers::LoadErrorMethod::Coarser;
+  const post::Results results = app::simulate(unfit).results;
+  EXPECT_FALSE(results.load_error.error.has_value());
+  EXPECT_NE(results.load_error.unavailable.find("2h and 4h"), std::string::npos)
+      << results.load_error.unavailable;
+}
+
+TEST(LoadErrorEstimate, AutoTakesTheCheapestReliableEstimate) {
+  // The default resolves per mesh (app/load_error.hpp): the coarser levels where the
+  // structured channel admits 2h and 4h, else the refined mesh while it is small.
+  io::Case case_ = hill_drawing(15.0, 0.25);
+  case_.solver.load_error = solvers::LoadErrorMethod::Auto;
+  EXPECT_EQ(io::Case{}.solver.load_error, solvers::LoadErrorMethod::Auto) << "the default";
+  std::string why;
+  EXPECT_EQ(app::resolved_load_error_method(case_, true, 2, 810, why),
+            solvers::LoadErrorMethod::Coarser);
+  // Not the case's own mesh (an adaptive cycle's, a file): refined up to the limit
+  // of refined dofs, 2^dim times the run's, then none with the reason.
+  const Index limit = app::auto_refined_dofs_limit;
+  EXPECT_EQ(app::resolved_load_error_method(case_, false, 2, limit / 4, why),
+            solvers::LoadErrorMethod::Refined);
+  EXPECT_EQ(app::resolved_load_error_method(case_, false, 2, limit / 4 + 1, why),
+            solvers::LoadErrorMethod::None);
+  EXPECT_NE(why.find("\"refined\""), std::string::npos) << why;
+  EXPECT_EQ(app::resolved_load_error_method(case_, false, 3, limit / 8 + 1, why),
+            solvers::LoadErrorMethod::None);
+  EXPECT_EQ(app::resolved_load_error_method(case_, false, 3, limit / 8, why),
+            solvers::LoadErrorMethod::Refined);
+  // h = 1/2 admits 2h but not 4h: the refined estimate.
+  io::Case half = hill_drawing(15.0, 0.5);
+  half.solver.load_error = solvers::LoadErrorMethod::Auto;
+  EXPECT_EQ(app::resolved_load_error_method(half, true, 2, 230, why),
+            solvers::LoadErrorMethod::Refined);
+  // An asked method is kept.
+  half.solver.load_error = solvers::LoadErrorMethod::Coarser;
+  EXPECT_EQ(app::resolved_load_error_method(half, true, 2, 230, why),
+            solvers::LoadErrorMethod::Coarser);
+  // The benchmark's mesh II at h = 1 (the default case) has no 2h: a run gets the
+  // refined estimate, and says so.
+  io::Case ram = sticking_ram(1.0);
+  ram.solver.load_error = solvers::LoadErrorMethod::Auto;
+  const post::Results results = app::simulate(ram).results;
+  ASSERT_TRUE(results.load_error.error.has_value()) << results.load_error.unavailable;
+  EXPECT_EQ(results.load_error.method, "refined");
 }
 
 TEST(LoadErrorEstimate, WithoutEstimateSummarySaysNull) {

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace formflow::app {
@@ -54,7 +55,7 @@ attached_pressure_multipliers(const io::Case& case_, const mesh::Mesh<dim>& mesh
 /// and the doubled-penalty run of the estimate. std::nullopt if it did not converge.
 template <int dim>
 std::optional<Real> solved_load(const io::Case& case_, const mesh::Mesh<dim>& mesh, VectorX start,
-                                Index& iterations) {
+                                Index& iterations, VectorX* solution = nullptr) {
   assembly::FormingProblem<dim> problem(mesh, problem_settings(case_));
   const auto pressure = attached_pressure_multipliers(case_, mesh, problem);
   const assembly::ScatterPlan& plan = problem.plan();
@@ -70,7 +71,37 @@ std::optional<Real> solved_load(const io::Case& case_, const mesh::Mesh<dim>& me
       solvers::newton_iteration(nonlinear, *solver, control, {}, inner, &start);
   iterations = static_cast<Index>(outcome.history.size());
   if (outcome.stop_reason != solvers::StopReason::Converged) return std::nullopt;
+  if (solution) {
+    *solution = outcome.velocity;
+    problem.discretisation().owned_dofs().replicate(*solution); // ghosted on several ranks
+  }
   return post::driven_load(problem, outcome.velocity);
+}
+
+/// A level of the structured channel at `size`, solved to δ from `from`'s velocity
+/// `u` interpolated: its mesh, load and velocity (whole on every rank).
+template <int dim> struct SolvedLevel {
+  mesh::Mesh<dim> mesh;
+  Real load = 0.0;
+  VectorX velocity;
+};
+
+template <int dim>
+std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, Real size,
+                                             const mesh::Mesh<dim>& from, const VectorX& u,
+                                             Index& iterations) {
+  mesh::MeshSpec spec = case_.mesh;
+  spec.size = size;
+  SolvedLevel<dim> level;
+  level.mesh = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec));
+  Index its = 0;
+  const std::optional<Real> load =
+      solved_load(case_, level.mesh, fem::interpolate_nodal_field(from, u, dim, level.mesh), its,
+                  &level.velocity);
+  iterations += its;
+  if (!load) return std::nullopt;
+  level.load = *load;
+  return level;
 }
 
 /// The case with every regularisation doubled: the penalties d (incompressibility,
@@ -165,7 +196,78 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
       post::load_error_bound(estimate.enriched_change, *ratio, *estimate.penalty_change);
 }
 
+/// Whether the mesh that ran is the case's structured channel and that channel can be
+/// made at 2h and 4h: the levels of the "coarser" estimate.
+bool coarser_levels_fit(const io::Case& case_, bool mesh_from_case) {
+  return mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured &&
+         size_fits(case_.mesh, 2 * case_.mesh.size) && size_fits(case_.mesh, 4 * case_.mesh.size);
+}
+
+/// The "coarser" estimate (post::coarser_levels_bound): the loads on the structured
+/// channel at 2h (from u restricted) and 4h (from u_{2h} restricted), each solved to δ,
+/// their ratio of differences, and the regularisations' offset measured on 2h (from
+/// u_{2h}: a quarter of the run's dofs; on the sticking ram the offset shrinks with h,
+/// −3.9e-4 at h = 1 to −1.0e-4 at 1/16, so 2h's is the larger).
+template <int dim>
+post::LoadErrorEstimate coarser_levels_estimate(const io::Case& case_,
+                                                const assembly::FormingProblem<dim>& problem,
+                                                const VectorX& u, PhaseTimes& times) {
+  ScopedTimer timer(times, "error estimate");
+  post::LoadErrorEstimate estimate;
+  estimate.method = "coarser";
+  const Real load = post::driven_load(problem, u);
+  const std::optional<SolvedLevel<dim>> coarser = solved_level(
+      case_, 2 * case_.mesh.size, problem.mesh(), u, estimate.coarser_newton_iterations);
+  if (!coarser) return unavailable("the solve on the mesh coarsened once (2h) did not converge");
+  const std::optional<SolvedLevel<dim>> coarsest =
+      solved_level(case_, 4 * case_.mesh.size, coarser->mesh, coarser->velocity,
+                   estimate.coarser_newton_iterations);
+  if (!coarsest) return unavailable("the solve on the mesh coarsened twice (4h) did not converge");
+  const Real change = load - coarser->load;
+  const Real coarsest_change = coarser->load - coarsest->load;
+  estimate.coarser_change = change;
+  estimate.coarsest_change = coarsest_change;
+  const Real observed = change / coarsest_change;
+  const std::optional<Real> ratio =
+      std::isfinite(observed) ? post::tail_ratio(observed) : std::nullopt;
+  if (!ratio)
+    return unavailable(fmt::format(
+        "the loads on 4h, 2h, h do not converge monotonically (p_h − p_2h = {:.4g}, p_2h − "
+        "p_4h = {:.4g}): no tail can be summed; \"refined\" estimates from h/2",
+        change, coarsest_change));
+  estimate.observed_ratio = observed;
+  estimate.ratio = *ratio;
+  estimate.discretisation_error = post::tail_beyond_refined(change, *ratio);
+  const std::optional<Real> doubled =
+      solved_load(doubled_regularisations(case_), coarser->mesh, coarser->velocity,
+                  estimate.penalty_newton_iterations);
+  if (!doubled) {
+    estimate.unavailable =
+        "the run with doubled regularisations (d, d_N, d_T, α) on 2h did not converge";
+    return estimate;
+  }
+  estimate.penalty_change = *doubled - coarser->load;
+  estimate.error = post::coarser_levels_bound(change, *ratio, *estimate.penalty_change);
+  return estimate;
+}
+
 } // namespace
+
+solvers::LoadErrorMethod resolved_load_error_method(const io::Case& case_, bool mesh_from_case,
+                                                    int dim, Index n_dofs, std::string& why) {
+  const solvers::LoadErrorMethod asked = case_.solver.load_error;
+  if (asked != solvers::LoadErrorMethod::Auto) return asked;
+  if (coarser_levels_fit(case_, mesh_from_case)) return solvers::LoadErrorMethod::Coarser;
+  const Index refined_dofs = n_dofs << dim;
+  if (refined_dofs <= auto_refined_dofs_limit) return solvers::LoadErrorMethod::Refined;
+  why = fmt::format(
+      "solver.load_error = \"auto\": the mesh has no coarser levels 2h and 4h (only a "
+      "structured channel whose lengths admit them has) and its refinement would have about {} "
+      "dofs, above the {} an automatic estimate solves; \"refined\" estimates it at 4–8 times "
+      "the run's cost",
+      refined_dofs, auto_refined_dofs_limit);
+  return solvers::LoadErrorMethod::None;
+}
 
 template <int dim>
 mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim>& mesh,
@@ -188,15 +290,28 @@ template <int dim>
 post::LoadErrorEstimate
 load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,
               bool mesh_from_case, bool converged, PhaseTimes& times) {
-  if (case_.solver.load_error == solvers::LoadErrorMethod::None)
-    return unavailable("solver.load_error = \"none\"");
+  std::string why = "solver.load_error = \"none\"";
+  const solvers::LoadErrorMethod method =
+      resolved_load_error_method(case_, mesh_from_case, dim, problem.plan().n_dofs(), why);
+  if (method == solvers::LoadErrorMethod::None) return unavailable(why);
   if (!converged) return unavailable("the run did not converge");
+  if (case_.thermal.enabled)
+    return unavailable("hot forming: the other levels would solve the flow without the heat "
+                       "coupling's temperature");
   if (problem.has_exact_friction())
     return unavailable("exact friction has no Newton tangent without its multipliers");
   const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;
   if ((mixed && case_.penalty.d == 0) || case_.penalty.d_n == 0)
     return unavailable("exact constraints (d = 0 or dN = 0) have no Newton tangent");
   if (!problem.terms().newton_ready()) return unavailable("this formulation has no Newton tangent");
+  if (method == solvers::LoadErrorMethod::Coarser) {
+    if (!coarser_levels_fit(case_, mesh_from_case))
+      return unavailable(
+          "solver.load_error = \"coarser\" needs the case's structured channel at 2h and 4h "
+          "(twice and four times mesh.size must divide its lengths); \"refined\" estimates "
+          "any mesh");
+    return coarser_levels_estimate(case_, problem, u, times);
+  }
   mesh::Mesh<dim> fine_mesh;
   std::unique_ptr<assembly::FormingProblem<dim>> fine;
   std::unique_ptr<assembly::ConstraintMultipliers<dim>> fine_pressure;
@@ -218,11 +333,12 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
   solvers::IterationControl settle = case_.solver;
   settle.coarse_levels = 0;
   settle.tolerance = case_.solver.tolerance;
-  const bool do_settle = case_.solver.load_error == solvers::LoadErrorMethod::Refined;
+  const bool do_settle = method == solvers::LoadErrorMethod::Refined;
   post::LoadErrorEstimate estimate =
       post::estimate_load_error(problem, u, *fine, parent, make_solve_plan(case_).linear,
                                 do_settle ? &settle : nullptr, times);
   fine.reset(); // the refined mesh's problem is not needed past the adjoint
+  estimate.method = do_settle ? "refined" : "linearized";
   if (estimate.error)
     complete_estimate(case_, problem, u, mesh_from_case, fine_mesh, estimate, times);
   return estimate;

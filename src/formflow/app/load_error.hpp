@@ -10,6 +10,21 @@
 
 namespace formflow::app {
 
+/// solver.load_error = "auto" estimates on the refined mesh (4–8 times the run's cost,
+/// 2^dim times its dofs) only up to this many refined dofs: about 10 s of Newton in 2D
+/// on this project's machine (the adaptive runs' settles: 184 530 dofs, 7 iterations,
+/// docs/error-estimation.md) and a few GB in 3D. Above it a run whose mesh has no
+/// coarser levels gets no estimate unless it asks for "refined".
+inline constexpr Index auto_refined_dofs_limit = 200000;
+
+/// solver.load_error with "auto" resolved for a run of `n_dofs` dofs on a mesh of
+/// dimension `dim` (`mesh_from_case`: the case's own mesh source made it): "coarser"
+/// where the case's structured channel admits 2h and 4h, else "refined" up to
+/// auto_refined_dofs_limit refined dofs, else None with `why` set. Any other asked
+/// method is returned as it is.
+solvers::LoadErrorMethod resolved_load_error_method(const io::Case& case_, bool mesh_from_case,
+                                                    int dim, Index n_dofs, std::string& why);
+
 /// The refined mesh of the estimate and each of its cells' parent in `mesh`: the
 /// structured channel at half the size when the case's structured mesh ran
 /// (`mesh_from_case`), else `mesh` split uniformly.

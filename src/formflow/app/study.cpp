@@ -59,7 +59,9 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
     io::Case rung_case = plan.cases[k];
     if (against_adaptive) {
       rung_case.adapt.target_error = 0;
-      if (rung_case.solver.load_error == solvers::LoadErrorMethod::None)
+      // The DWR estimate the adaptive cycles use, unless the case asked for another.
+      if (rung_case.solver.load_error == solvers::LoadErrorMethod::None ||
+          rung_case.solver.load_error == solvers::LoadErrorMethod::Auto)
         rung_case.solver.load_error = solvers::LoadErrorMethod::Refined;
     }
     Simulation simulation = simulate(rung_case, on_iteration, estimate_condition);

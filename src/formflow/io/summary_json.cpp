@@ -39,6 +39,18 @@ template <typename Json> void require_finite(const Json& value, const std::strin
       require_finite(value[i], key + "[" + std::to_string(i) + "]");
 }
 
+/// What the load's error estimate of `method` (LoadErrorEstimate::method) computed.
+json error_estimate_description(const std::string& method) {
+  if (method == "coarser")
+    return "loads solved on the structured channel at 2h and 4h: the geometric tail beyond p_h "
+           "of the differences, ratio observed on 4h, 2h, h, times the safety factor, plus the "
+           "doubled regularisations' offset on 2h";
+  if (method == "refined" || method == "linearized")
+    return "adjoint of the reaction on the mesh refined once (dual-weighted residual), its "
+           "geometric tail times the safety factor, plus the doubled regularisations' offset";
+  return nullptr;
+}
+
 json pressure_json(const Case& case_, const post::Results& results) {
   const post::Pressures& pressure = results.pressure;
   json out = {{"ram_reaction", pressure.ram_reaction},
@@ -55,9 +67,8 @@ json pressure_json(const Case& case_, const post::Results& results) {
     out["drawing_stress_error"] = error;
   }
   out["error_estimate"] = {
-      {"method", "adjoint of the reaction on the mesh refined once (dual-weighted residual), "
-                 "its geometric tail times the safety factor, plus the doubled penalties' "
-                 "offset"},
+      {"method", estimate.method.empty() ? json(nullptr) : json(estimate.method)},
+      {"description", error_estimate_description(estimate.method)},
       {"computed", estimate.error.has_value()},
       {"unavailable", estimate.error ? json(nullptr) : json(estimate.unavailable)},
       {"refined_dofs", estimate.enriched_dofs},
@@ -65,6 +76,9 @@ json pressure_json(const Case& case_, const post::Results& results) {
       {"refined_change", estimate.error ? json(estimate.enriched_change) : json(nullptr)},
       {"coarser_change", estimate.coarser_change ? json(*estimate.coarser_change) : json(nullptr)},
       {"finer_change", estimate.finer_change ? json(*estimate.finer_change) : json(nullptr)},
+      {"coarsest_change",
+       estimate.coarsest_change ? json(*estimate.coarsest_change) : json(nullptr)},
+      {"coarser_newton_iterations", estimate.coarser_newton_iterations},
       {"observed_ratio", estimate.observed_ratio ? json(*estimate.observed_ratio) : json(nullptr)},
       {"tail_ratio", estimate.error ? json(estimate.ratio) : json(nullptr)},
       {"discretisation", estimate.error ? json(estimate.discretisation_error) : json(nullptr)},

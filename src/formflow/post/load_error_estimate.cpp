@@ -217,6 +217,10 @@ Real load_error_bound(Real refined_change, Real ratio, Real penalty_change) {
   return discretisation_tail(refined_change, ratio) + std::abs(penalty_change);
 }
 
+Real coarser_levels_bound(Real coarser_change, Real ratio, Real penalty_change) {
+  return tail_beyond_refined(coarser_change, ratio) + std::abs(penalty_change);
+}
+
 template <int dim>
 std::vector<Index> parent_cells(const mesh::Mesh<dim>& coarse, const mesh::Mesh<dim>& fine) {
   using Box = Eigen::AlignedBox<Real, dim>;

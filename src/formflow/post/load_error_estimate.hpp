@@ -50,6 +50,14 @@ Real discretisation_tail(Real refined_change, Real ratio);
 /// F_s |p_{h/2} − p_h| q / (1 − q).
 Real tail_beyond_refined(Real refined_change, Real ratio);
 
+/// The estimate of |p_h − p| from the loads on coarser levels (solver.load_error =
+/// "coarser"): the tail beyond p_h of the geometric series whose last difference is
+/// p_h − p_{2h}, F_s |p_h − p_{2h}| q / (1 − q) (tail_beyond_refined with h in the
+/// role of the refined level), plus |penalty_change|, in magnitude. No solve finer
+/// than the run's: the difference is one level coarser than the refined estimate's,
+/// so q is observed on 4h, 2h, h (docs/error-estimation.md, "The cheap default").
+Real coarser_levels_bound(Real coarser_change, Real ratio, Real penalty_change);
+
 /// The estimate of |p_h − p|: discretisation_tail (the discretisation error) plus
 /// |p_h(2ε) − p_h(ε)| (the penalties' first-order offset p(ε) − p(0), estimated on
 /// the same mesh). Both added in magnitude: their signs are not assumed to cancel.

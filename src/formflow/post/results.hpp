@@ -132,6 +132,9 @@ struct LoadErrorEstimate {
   /// computed (`unavailable` says why).
   std::optional<Real> error;
   std::string unavailable;
+  /// The method that ran: "coarser", "refined" or "linearized" (solver.load_error
+  /// "auto" resolved); empty when none did.
+  std::string method;
   /// p_{h/2} − p_h linearised at the prolonged solution (signed): the DWR sum.
   Real enriched_change = 0.0;
   Index enriched_dofs = 0;
@@ -143,6 +146,11 @@ struct LoadErrorEstimate {
   /// Where the channel admits no 2h: p_{h/4} − p_{h/2} from a solve on the mesh
   /// refined twice, and observed_ratio = (p_{h/4} − p_{h/2})/(p_{h/2} − p_h).
   std::optional<Real> finer_change;
+  /// "coarser" only: p_{2h} − p_{4h} from a solve on the mesh coarsened twice, and
+  /// observed_ratio = (p_h − p_{2h})/(p_{2h} − p_{4h}); the Newton iterations on 2h
+  /// and 4h together.
+  std::optional<Real> coarsest_change;
+  Index coarser_newton_iterations = 0;
   std::optional<Real> observed_ratio;
   /// The ratio q used for the tail: max(2^{-r_max}, observed ratio) (post::tail_ratio).
   Real ratio = 0.5;

@@ -48,10 +48,13 @@ enum class NonlinearAcceleration { None, Anderson };
 
 /// Stopping rule of the secant iteration (SPEC §3): ‖uⁿ⁺¹ − uⁿ‖/‖uⁿ⁺¹‖ < tolerance.
 /// Newton uses the same rule on its (damped) steps, so counts are comparable.
-/// The load's error estimate: none; the adjoint at the solution prolonged to the
-/// mesh refined once (one factorisation, linearised); or the same after a loose
-/// Newton solve on the refined mesh (the nonlinearity settled first).
-enum class LoadErrorMethod { None, Linearized, Refined };
+/// The load's error estimate (docs/error-estimation.md): none; the adjoint at the
+/// solution prolonged to the mesh refined once (one factorisation, linearised); the
+/// same after a Newton solve on the refined mesh (the nonlinearity settled first);
+/// the loads solved on the structured channel coarsened once and twice (2h, 4h: no
+/// refined mesh, a fraction of the run's cost); or auto, the cheapest of these that is
+/// reliable for the run's mesh (app/load_error.cpp).
+enum class LoadErrorMethod { None, Linearized, Refined, Coarser, Auto };
 
 struct IterationControl {
   Real tolerance = 1e-4;    ///< δ
@@ -74,7 +77,7 @@ struct IterationControl {
   std::string petsc_options;
   /// solver.load_error: how the load's discretisation error is estimated after the
   /// solve (post/load_error_estimate.hpp, docs/error-estimation.md).
-  LoadErrorMethod load_error = LoadErrorMethod::None;
+  LoadErrorMethod load_error = LoadErrorMethod::Auto;
 };
 
 /// One line of the iteration history.

@@ -17,7 +17,7 @@ std::vector<CaseKey> adapt_keys() {
                       "the load's error is not estimated (Coulomb friction, Taylor–Hood) the "
                       "cycles stop after the first, summary.json adapt.stop saying why")
           .doc("relative error of the load to reach: the cycles stop once the estimate of "
-               "|p_h − p| (solver.load_error; \"none\" counts as \"refined\" here) is at most "
+               "|p_h − p| (solver.load_error: \"refined\" here unless \"linearized\") is at most "
                "this times |p_h|; 0: no adaptivity"),
       integer_key(
           "adapt.max_cycles", 8, [](auto& c) -> auto& { return c.adapt.max_cycles; })

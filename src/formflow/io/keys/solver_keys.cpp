@@ -105,20 +105,25 @@ std::vector<CaseKey> solver_keys() {
                "solution; levels the geometry does not admit (or a mesh from a file) are skipped, "
                "and summary.json coarse_mesh_sizes lists those used"),
       enum_key(
-          "solver.load_error", "none",
-          {{"refined", solvers::LoadErrorMethod::Refined},
+          "solver.load_error", "auto",
+          {{"auto", solvers::LoadErrorMethod::Auto},
+           {"coarser", solvers::LoadErrorMethod::Coarser},
+           {"refined", solvers::LoadErrorMethod::Refined},
            {"linearized", solvers::LoadErrorMethod::Linearized},
            {"none", solvers::LoadErrorMethod::None}},
           [](auto& c) -> auto& { return c.solver.load_error; })
           .doc("estimate of |p_h − p| for the load (summary.json pressure.ram_reaction_error, "
-               "drawing_stress_error; docs/error-estimation.md): |p_{h/2} − p_h|/(1 − q) with "
-               "q the slower of first order and the ratio observed on 2h, h, h/2, plus the "
-               "load's change when d, d_N, d_T and the power law's α are doubled; refined = "
-               "p_{h/2} from Newton on the mesh refined once, to δ, and the reaction's adjoint "
-               "there (effectivity 0.98–1.14; costs 4–8 times the run); linearized = the "
-               "adjoint at the prolonged solution only (one factorisation; underestimates "
-               "nearly rate-insensitive loads by ≈ 2.6×); none = no estimate (the default while "
-               "the estimate costs more than the run)"),
+               "drawing_stress_error; docs/error-estimation.md): a geometric tail of load "
+               "differences times F_s = 1.25, plus the load's change when d, d_N, d_T and the "
+               "power law's α are doubled; coarser = p_h − p_{2h} with the ratio observed on "
+               "4h, 2h, h (the structured channel must admit 2h and 4h; it adds "
+               "20–30 % to the run's time, no cell indicators); refined = p_{h/2} from Newton on "
+               "the mesh "
+               "refined once, to δ, and the reaction's adjoint there (cell indicators; costs 4–8 "
+               "times the run); linearized = the adjoint at the prolonged solution only "
+               "(underestimates nearly rate-insensitive loads by ≈ 2.6×); auto = coarser where "
+               "the mesh admits it, else refined when the refined mesh has at most 200 000 dofs, "
+               "else none (said why); none = no estimate"),
   };
 }
 
