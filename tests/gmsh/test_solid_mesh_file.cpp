@@ -146,7 +146,7 @@ TEST(SolidMeshFile, AWrittenChannelGivesTheStructuredRamReaction) {
         "entry_half_height = 1\nexit_half_height = 0.5\nexit_length = 1\n"
         "entry_half_width = 1\nexit_half_width = 0.5\n\n"
         "[friction]\nmu = 0.1\nradius = 0.3\n\n"
-        "[solver]\ntolerance = 1e-10\ncoarse_levels = 0\n\n";
+        "[solver]\ntolerance = 1e-10\ncoarse_levels = 0\nload_error = \"none\"\n\n";
     const std::string element = "element = \"Q" + std::to_string(order) + "\"\n";
     const double structured =
         ram_reaction(scratch, "structured", physics + "[mesh]\n" + element + "size = 0.5\n");

@@ -9,11 +9,13 @@
 #include "formflow/io/results_writer.hpp"
 #include "formflow/post/load_error_estimate.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace formflow::testing {
 namespace {
@@ -293,6 +295,61 @@ TEST(LoadErrorEstimate, CoarserLevelsContainHillsValue) {
       << results.load_error.unavailable;
 }
 
+/// Hill's 15° wedge at h = 1/4 read as the CLI reads it (io::load_case_text resolves
+/// the solve plan), with `extra` overrides.
+io::Case hill_drawing_read(std::vector<io::Override> extra) {
+  const double r = hill_special_reduction(15.0 * degree);
+  std::vector<io::Override> overrides = {{"process.type", "drawing"},
+                                         {"geometry.die", "wedge"},
+                                         {"geometry.die_angle", "15"},
+                                         {"geometry.entry_half_height", "1"},
+                                         {"geometry.container_length", "2"},
+                                         {"geometry.exit_length", "2"},
+                                         {"geometry.exit_half_height", fmt::format("{}", 1.0 - r)},
+                                         {"material.alpha", "1e-4"},
+                                         {"mesh.element", "Q2"},
+                                         {"mesh.size", "0.25"}};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  return io::load_case_text("", "wedge.toml", overrides);
+}
+
+TEST(LoadErrorEstimate, CoarserLevelsReachTheLoopsNewtonDoesNot) {
+  // Exact incompressibility (mixed, d = 0: Uzawa steps around the secant loop) has no
+  // Newton tangent, so no refined estimate; "coarser" solves its levels by the run's own
+  // loop. Hill's value is the referee: the same argument as the penalty's (the tail
+  // with q ≥ every later ratio of the ladders), and no d to double (α and d_N are).
+  const io::Case exact = hill_drawing_read({{"formulation.type", "mixed"}, {"penalty.d", "0"}});
+  const post::Results results = app::simulate(exact).results;
+  ASSERT_TRUE(results.converged());
+  const post::LoadErrorEstimate& estimate = results.load_error;
+  ASSERT_TRUE(estimate.error.has_value()) << estimate.unavailable;
+  EXPECT_EQ(estimate.method, "coarser") << "auto, the channel admits 2h and 4h";
+  ASSERT_TRUE(estimate.coarser_change && estimate.coarsest_change && estimate.penalty_change);
+  EXPECT_DOUBLE_EQ(*estimate.error,
+                   post::coarser_levels_bound(*estimate.coarser_change, estimate.ratio,
+                                              *estimate.penalty_change));
+  const double hill = hill_wedge_stress(15.0 * degree);
+  const double index = *estimate.error / std::abs(results.pressure.ram_reaction - hill);
+  EXPECT_GE(index, min_effectivity);
+  EXPECT_LE(index, max_effectivity);
+  EXPECT_LE(std::abs(results.pressure.ram_reaction - hill), *estimate.error)
+      << "p_h = " << results.pressure.ram_reaction << ", Hill " << hill;
+  // Exact Coulomb friction (semismooth Newton with its multipliers): computed too, its
+  // levels by the augmented loop (no referee with friction: only that it is there and
+  // is the bound of its levels).
+  const io::Case friction = hill_drawing_read(
+      {{"friction.mu", "0.1"}, {"friction.law", "coulomb"}, {"friction.regularization", "none"}});
+  const post::Results rough = app::simulate(friction).results;
+  ASSERT_TRUE(rough.converged());
+  ASSERT_TRUE(rough.load_error.error.has_value()) << rough.load_error.unavailable;
+  EXPECT_EQ(rough.load_error.method, "coarser");
+  EXPECT_GT(rough.load_error.coarser_newton_iterations, 0);
+  EXPECT_DOUBLE_EQ(*rough.load_error.error,
+                   post::coarser_levels_bound(*rough.load_error.coarser_change,
+                                              rough.load_error.ratio,
+                                              *rough.load_error.penalty_change));
+}
+
 TEST(LoadErrorEstimate, AutoTakesTheCheapestReliableEstimate) {
   // The default resolves per mesh (app/load_error.hpp): the coarser levels where the
   // structured channel admits 2h and 4h, else the refined mesh while it is small.
@@ -304,15 +361,17 @@ TEST(LoadErrorEstimate, AutoTakesTheCheapestReliableEstimate) {
             solvers::LoadErrorMethod::Coarser);
   // Not the case's own mesh (an adaptive cycle's, a file): refined up to the limit
   // of refined dofs, 2^dim times the run's, then none with the reason.
-  const Index limit = app::auto_refined_dofs_limit;
+  const Index limit = app::auto_refined_dofs_limit(2);
   EXPECT_EQ(app::resolved_load_error_method(case_, false, 2, limit / 4, why),
             solvers::LoadErrorMethod::Refined);
   EXPECT_EQ(app::resolved_load_error_method(case_, false, 2, limit / 4 + 1, why),
             solvers::LoadErrorMethod::None);
   EXPECT_NE(why.find("\"refined\""), std::string::npos) << why;
-  EXPECT_EQ(app::resolved_load_error_method(case_, false, 3, limit / 8 + 1, why),
+  const Index solid_limit = app::auto_refined_dofs_limit(3);
+  EXPECT_LT(solid_limit, limit) << "a hexahedral factor fills more";
+  EXPECT_EQ(app::resolved_load_error_method(case_, false, 3, solid_limit / 8 + 1, why),
             solvers::LoadErrorMethod::None);
-  EXPECT_EQ(app::resolved_load_error_method(case_, false, 3, limit / 8, why),
+  EXPECT_EQ(app::resolved_load_error_method(case_, false, 3, solid_limit / 8, why),
             solvers::LoadErrorMethod::Refined);
   // h = 1/2 admits 2h but not 4h: the refined estimate.
   io::Case half = hill_drawing(15.0, 0.5);

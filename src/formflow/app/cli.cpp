@@ -165,10 +165,10 @@ int run_case(const Options& options) {
     const char* load =
         case_.process.type == physics::ProcessType::Drawing ? "drawing stress" : "ram pressure";
     if (results.load_error.error)
-      fmt::print(
-          "load: {} p = {:.4f} ± {:.4f} (estimated error: discretisation and regularisations, "
-          "docs/error-estimation.md)\n",
-          load, results.pressure.ram_reaction, *results.load_error.error);
+      fmt::print("load: {} p = {:.4f} ± {:.4f} (estimated error: discretisation and "
+                 "regularisations, \"{}\" levels, docs/error-estimation.md)\n",
+                 load, results.pressure.ram_reaction, *results.load_error.error,
+                 results.load_error.method);
     else
       fmt::print("load: {} p = {:.4f} (no error estimate: {})\n", load,
                  results.pressure.ram_reaction, results.load_error.unavailable);

@@ -104,6 +104,37 @@ std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, Real size,
   return level;
 }
 
+/// The same level solved by the run's own loop (simulate_from: exact friction's
+/// augmentation, Uzawa steps, the saddle point), started from `from`'s velocity where
+/// that loop takes a start, its load the reported reaction. For the problems Newton
+/// does not reach: their load is the secant system's driven force with the multipliers.
+template <int dim>
+std::optional<SolvedLevel<dim>> solved_by_own_loop(const io::Case& case_, mesh::Mesh<dim> mesh,
+                                                   const mesh::Mesh<dim>& from, const VectorX& u,
+                                                   Index& iterations) {
+  io::Case level_case = case_;
+  level_case.solver.load_error = solvers::LoadErrorMethod::None; // no estimate of its own
+  const VectorX start = fem::interpolate_nodal_field(from, u, dim, mesh);
+  Simulation simulation = simulate_from<dim>(level_case, std::move(mesh), start);
+  iterations += simulation.results.iterations;
+  if (!simulation.results.converged()) return std::nullopt;
+  SolvedLevel<dim> level;
+  level.mesh = std::move(std::get<mesh::Mesh<dim>>(simulation.mesh));
+  level.load = simulation.results.pressure.ram_reaction;
+  level.velocity = std::move(simulation.results.fields.velocity);
+  return level;
+}
+
+template <int dim>
+std::optional<SolvedLevel<dim>> solved_by_own_loop(const io::Case& case_, Real size,
+                                                   const mesh::Mesh<dim>& from, const VectorX& u,
+                                                   Index& iterations) {
+  mesh::MeshSpec spec = case_.mesh;
+  spec.size = size;
+  return solved_by_own_loop(case_, std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec)), from, u,
+                            iterations);
+}
+
 /// The case with every regularisation doubled: the penalties d (incompressibility,
 /// also the mixed formulation's), d_N (contact) and d_T (friction), and the paper's
 /// power law's rate sensitivity α, which makes σ_p = A ε̄̇^α "nearly perfectly
@@ -203,28 +234,33 @@ bool coarser_levels_fit(const io::Case& case_, bool mesh_from_case) {
          size_fits(case_.mesh, 2 * case_.mesh.size) && size_fits(case_.mesh, 4 * case_.mesh.size);
 }
 
-/// The "coarser" estimate (post::coarser_levels_bound): the loads on the structured
-/// channel at 2h (from u restricted) and 4h (from u_{2h} restricted), each solved to δ,
-/// their ratio of differences, and the regularisations' offset measured on 2h (from
-/// u_{2h}: a quarter of the run's dofs; on the sticking ram the offset shrinks with h,
-/// −3.9e-4 at h = 1 to −1.0e-4 at 1/16, so 2h's is the larger).
+/// The "coarser" estimate (post::coarser_levels_bound) of a run whose load is `load`:
+/// the loads on the structured channel at 2h (from u restricted) and 4h (from u_{2h}
+/// restricted), each solved to δ, their ratio of differences, and the regularisations'
+/// offset measured on 2h (from u_{2h}: a quarter of the run's dofs; on the sticking ram
+/// the offset shrinks with h, −3.9e-4 at h = 1 to −1.0e-4 at 1/16, so 2h's is the
+/// larger). `own_loop`: the levels are solved by the run's loop, not by Newton.
 template <int dim>
-post::LoadErrorEstimate coarser_levels_estimate(const io::Case& case_,
-                                                const assembly::FormingProblem<dim>& problem,
-                                                const VectorX& u, PhaseTimes& times) {
+post::LoadErrorEstimate coarser_levels_estimate(const io::Case& case_, const mesh::Mesh<dim>& mesh,
+                                                const VectorX& u, Real load, bool own_loop,
+                                                PhaseTimes& times) {
   ScopedTimer timer(times, "error estimate");
   post::LoadErrorEstimate estimate;
-  estimate.method = "coarser";
-  const Real load = post::driven_load(problem, u);
-  const std::optional<SolvedLevel<dim>> coarser = solved_level(
-      case_, 2 * case_.mesh.size, problem.mesh(), u, estimate.coarser_newton_iterations);
+  const auto level = [&](const io::Case& level_case, Real size, const mesh::Mesh<dim>& from,
+                         const VectorX& start, Index& iterations) {
+    return own_loop ? solved_by_own_loop(level_case, size, from, start, iterations)
+                    : solved_level(level_case, size, from, start, iterations);
+  };
+  const std::optional<SolvedLevel<dim>> coarser =
+      level(case_, 2 * case_.mesh.size, mesh, u, estimate.coarser_newton_iterations);
   if (!coarser) return unavailable("the solve on the mesh coarsened once (2h) did not converge");
   const std::optional<SolvedLevel<dim>> coarsest =
-      solved_level(case_, 4 * case_.mesh.size, coarser->mesh, coarser->velocity,
-                   estimate.coarser_newton_iterations);
+      level(case_, 4 * case_.mesh.size, coarser->mesh, coarser->velocity,
+            estimate.coarser_newton_iterations);
   if (!coarsest) return unavailable("the solve on the mesh coarsened twice (4h) did not converge");
   const Real change = load - coarser->load;
   const Real coarsest_change = coarser->load - coarsest->load;
+  estimate.method = "coarser";
   estimate.coarser_change = change;
   estimate.coarsest_change = coarsest_change;
   const Real observed = change / coarsest_change;
@@ -238,9 +274,17 @@ post::LoadErrorEstimate coarser_levels_estimate(const io::Case& case_,
   estimate.observed_ratio = observed;
   estimate.ratio = *ratio;
   estimate.discretisation_error = post::tail_beyond_refined(change, *ratio);
-  const std::optional<Real> doubled =
-      solved_load(doubled_regularisations(case_), coarser->mesh, coarser->velocity,
-                  estimate.penalty_newton_iterations);
+  const io::Case doubled_case = doubled_regularisations(case_);
+  std::optional<Real> doubled;
+  if (own_loop) {
+    const auto doubled_level =
+        solved_by_own_loop(doubled_case, coarser->mesh, coarser->mesh, coarser->velocity,
+                           estimate.penalty_newton_iterations);
+    if (doubled_level) doubled = doubled_level->load;
+  } else {
+    doubled = solved_load(doubled_case, coarser->mesh, coarser->velocity,
+                          estimate.penalty_newton_iterations);
+  }
   if (!doubled) {
     estimate.unavailable =
         "the run with doubled regularisations (d, d_N, d_T, α) on 2h did not converge";
@@ -259,13 +303,13 @@ solvers::LoadErrorMethod resolved_load_error_method(const io::Case& case_, bool 
   if (asked != solvers::LoadErrorMethod::Auto) return asked;
   if (coarser_levels_fit(case_, mesh_from_case)) return solvers::LoadErrorMethod::Coarser;
   const Index refined_dofs = n_dofs << dim;
-  if (refined_dofs <= auto_refined_dofs_limit) return solvers::LoadErrorMethod::Refined;
+  if (refined_dofs <= auto_refined_dofs_limit(dim)) return solvers::LoadErrorMethod::Refined;
   why = fmt::format(
       "solver.load_error = \"auto\": the mesh has no coarser levels 2h and 4h (only a "
       "structured channel whose lengths admit them has) and its refinement would have about {} "
       "dofs, above the {} an automatic estimate solves; \"refined\" estimates it at 4–8 times "
       "the run's cost",
-      refined_dofs, auto_refined_dofs_limit);
+      refined_dofs, auto_refined_dofs_limit(dim));
   return solvers::LoadErrorMethod::None;
 }
 
@@ -289,7 +333,7 @@ mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim
 template <int dim>
 post::LoadErrorEstimate
 load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,
-              bool mesh_from_case, bool converged, PhaseTimes& times) {
+              Real run_load, bool mesh_from_case, bool converged, PhaseTimes& times) {
   std::string why = "solver.load_error = \"none\"";
   const solvers::LoadErrorMethod method =
       resolved_load_error_method(case_, mesh_from_case, dim, problem.plan().n_dofs(), why);
@@ -298,20 +342,28 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
   if (case_.thermal.enabled)
     return unavailable("hot forming: the other levels would solve the flow without the heat "
                        "coupling's temperature");
-  if (problem.has_exact_friction())
-    return unavailable("exact friction has no Newton tangent without its multipliers");
   const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;
-  if ((mixed && case_.penalty.d == 0) || case_.penalty.d_n == 0)
-    return unavailable("exact constraints (d = 0 or dN = 0) have no Newton tangent");
-  if (!problem.terms().newton_ready()) return unavailable("this formulation has no Newton tangent");
+  const bool newton_reaches = !problem.has_exact_friction() &&
+                              !((mixed && case_.penalty.d == 0) || case_.penalty.d_n == 0) &&
+                              problem.terms().newton_ready();
   if (method == solvers::LoadErrorMethod::Coarser) {
     if (!coarser_levels_fit(case_, mesh_from_case))
       return unavailable(
           "solver.load_error = \"coarser\" needs the case's structured channel at 2h and 4h "
           "(twice and four times mesh.size must divide its lengths); \"refined\" estimates "
           "any mesh");
-    return coarser_levels_estimate(case_, problem, u, times);
+    // Newton's levels where it reaches the problem (the load then its driven force at
+    // u, as the levels'), else the run's own loop on each level and its reported load.
+    return newton_reaches
+               ? coarser_levels_estimate(case_, problem.mesh(), u, post::driven_load(problem, u),
+                                         false, times)
+               : coarser_levels_estimate(case_, problem.mesh(), u, run_load, true, times);
   }
+  if (problem.has_exact_friction())
+    return unavailable("exact friction has no Newton tangent without its multipliers");
+  if ((mixed && case_.penalty.d == 0) || case_.penalty.d_n == 0)
+    return unavailable("exact constraints (d = 0 or dN = 0) have no Newton tangent");
+  if (!problem.terms().newton_ready()) return unavailable("this formulation has no Newton tangent");
   mesh::Mesh<dim> fine_mesh;
   std::unique_ptr<assembly::FormingProblem<dim>> fine;
   std::unique_ptr<assembly::ConstraintMultipliers<dim>> fine_pressure;
@@ -349,17 +401,18 @@ post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<di
                                       const VectorX& u, bool mesh_from_case, PhaseTimes& times) {
   assembly::FormingProblem<dim> problem(mesh, problem_settings(case_));
   const auto pressure = attached_pressure_multipliers(case_, mesh, problem);
-  return load_error_of(case_, problem, u, mesh_from_case, true, times);
+  return load_error_of(case_, problem, u, post::driven_load(problem, u), mesh_from_case, true,
+                       times);
 }
 
 template mesh::RefinedMesh<2> estimate_mesh<2>(const io::Case&, const mesh::Mesh<2>&, bool);
 template mesh::RefinedMesh<3> estimate_mesh<3>(const io::Case&, const mesh::Mesh<3>&, bool);
 template post::LoadErrorEstimate load_error_of<2>(const io::Case&,
                                                   const assembly::FormingProblem<2>&,
-                                                  const VectorX&, bool, bool, PhaseTimes&);
+                                                  const VectorX&, Real, bool, bool, PhaseTimes&);
 template post::LoadErrorEstimate load_error_of<3>(const io::Case&,
                                                   const assembly::FormingProblem<3>&,
-                                                  const VectorX&, bool, bool, PhaseTimes&);
+                                                  const VectorX&, Real, bool, bool, PhaseTimes&);
 template post::LoadErrorEstimate load_error_on<2>(const io::Case&, const mesh::Mesh<2>&,
                                                   const VectorX&, bool, PhaseTimes&);
 template post::LoadErrorEstimate load_error_on<3>(const io::Case&, const mesh::Mesh<3>&,

@@ -301,8 +301,9 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
   post::evaluate_results(*problem, outcome.velocity, results, &multipliers, stick_speed);
   if (results.thermal.enabled) results.fields.temperature = results.thermal.temperature;
   // The load's error bar (docs/error-estimation.md): one adjoint solve on the mesh refined once.
-  results.load_error = load_error_of(case_, *problem, outcome.velocity, mesh_from_case,
-                                     results.converged(), results.timing);
+  results.load_error =
+      load_error_of(case_, *problem, outcome.velocity, results.pressure.ram_reaction,
+                    mesh_from_case, results.converged(), results.timing);
   results.fields.cell_load_error = results.load_error.cell_indicators;
   if (estimate_condition)
     simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);

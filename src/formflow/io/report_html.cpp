@@ -70,10 +70,12 @@ void loads_section(Out out, const Case& case_, const post::Results& results) {
   out = fmt::format_to(out, "</table>\n");
   // The load's error bar (docs/error-estimation.md), or why there is none.
   const post::LoadErrorEstimate& estimate = results.load_error;
+  const char* how = estimate.method == "coarser" ? "loads on the meshes coarsened once and twice"
+                                                 : "adjoint on the mesh refined once";
   out = estimate.error ? fmt::format_to(out,
                                         "<p>Estimated discretisation error of the load: ± {} "
-                                        "(adjoint on the mesh refined once).</p>\n",
-                                        number(*estimate.error))
+                                        "({}).</p>\n",
+                                        number(*estimate.error), how)
                        : fmt::format_to(out, "<p>No estimate of the load's error: {}.</p>\n",
                                         html_escaped(estimate.unavailable));
   const post::PowerTerms& power = results.power;

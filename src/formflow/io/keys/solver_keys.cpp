@@ -122,7 +122,8 @@ std::vector<CaseKey> solver_keys() {
                "refined once, to δ, and the reaction's adjoint there (cell indicators; costs 4–8 "
                "times the run); linearized = the adjoint at the prolonged solution only "
                "(underestimates nearly rate-insensitive loads by ≈ 2.6×); auto = coarser where "
-               "the mesh admits it, else refined when the refined mesh has at most 200 000 dofs, "
+               "the mesh admits it, else refined when the refined mesh has at most 200 000 dofs "
+               "(25 000 in 3D), "
                "else none (said why); none = no estimate"),
   };
 }
