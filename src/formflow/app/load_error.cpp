@@ -227,6 +227,21 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
       post::load_error_bound(estimate.enriched_change, *ratio, *estimate.penalty_change);
 }
 
+/// Why Newton's tangent does not reach the run's problem, empty if it does: the refined
+/// estimate's settle and adjoint need it; the coarser one then solves its levels by the
+/// run's own loop.
+template <int dim>
+std::string without_newton_tangent(const io::Case& case_,
+                                   const assembly::FormingProblem<dim>& problem) {
+  if (problem.has_exact_friction())
+    return "exact friction has no Newton tangent without its multipliers";
+  const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;
+  if ((mixed && case_.penalty.d == 0) || case_.penalty.d_n == 0)
+    return "exact constraints (d = 0 or dN = 0) have no Newton tangent";
+  if (!problem.terms().newton_ready()) return "this formulation has no Newton tangent";
+  return {};
+}
+
 /// Whether the mesh that ran is the case's structured channel and that channel can be
 /// made at 2h and 4h: the levels of the "coarser" estimate.
 bool coarser_levels_fit(const io::Case& case_, bool mesh_from_case) {
@@ -342,10 +357,7 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
   if (case_.thermal.enabled)
     return unavailable("hot forming: the other levels would solve the flow without the heat "
                        "coupling's temperature");
-  const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;
-  const bool newton_reaches = !problem.has_exact_friction() &&
-                              !((mixed && case_.penalty.d == 0) || case_.penalty.d_n == 0) &&
-                              problem.terms().newton_ready();
+  const std::string no_tangent = without_newton_tangent(case_, problem);
   if (method == solvers::LoadErrorMethod::Coarser) {
     if (!coarser_levels_fit(case_, mesh_from_case))
       return unavailable(
@@ -354,16 +366,13 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
           "any mesh");
     // Newton's levels where it reaches the problem (the load then its driven force at
     // u, as the levels'), else the run's own loop on each level and its reported load.
-    return newton_reaches
+    return no_tangent.empty()
                ? coarser_levels_estimate(case_, problem.mesh(), u, post::driven_load(problem, u),
                                          false, times)
                : coarser_levels_estimate(case_, problem.mesh(), u, run_load, true, times);
   }
-  if (problem.has_exact_friction())
-    return unavailable("exact friction has no Newton tangent without its multipliers");
-  if ((mixed && case_.penalty.d == 0) || case_.penalty.d_n == 0)
-    return unavailable("exact constraints (d = 0 or dN = 0) have no Newton tangent");
-  if (!problem.terms().newton_ready()) return unavailable("this formulation has no Newton tangent");
+  if (!no_tangent.empty()) return unavailable(no_tangent);
+  const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;
   mesh::Mesh<dim> fine_mesh;
   std::unique_ptr<assembly::FormingProblem<dim>> fine;
   std::unique_ptr<assembly::ConstraintMultipliers<dim>> fine_pressure;
