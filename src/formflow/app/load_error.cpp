@@ -78,22 +78,28 @@ std::optional<Real> solved_load(const io::Case& case_, const mesh::Mesh<dim>& me
   return post::driven_load(problem, outcome.velocity);
 }
 
-/// A level of the structured channel at `size`, solved to δ from `from`'s velocity
-/// `u` interpolated: its mesh, load and velocity (whole on every rank).
+/// The case's structured channel at `size` (a level of the estimate).
+template <int dim> mesh::Mesh<dim> channel_at(const io::Case& case_, Real size) {
+  mesh::MeshSpec spec = case_.mesh;
+  spec.size = size;
+  return std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec));
+}
+
+/// A level of the estimate: its mesh, load and velocity (whole on every rank).
 template <int dim> struct SolvedLevel {
   mesh::Mesh<dim> mesh;
   Real load = 0.0;
   VectorX velocity;
 };
 
+/// `mesh` solved to δ by Newton from `from`'s velocity `u` interpolated; its load the
+/// driven force (solved_load).
 template <int dim>
-std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, Real size,
+std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, mesh::Mesh<dim> mesh,
                                              const mesh::Mesh<dim>& from, const VectorX& u,
                                              Index& iterations) {
-  mesh::MeshSpec spec = case_.mesh;
-  spec.size = size;
   SolvedLevel<dim> level;
-  level.mesh = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec));
+  level.mesh = std::move(mesh);
   Index its = 0;
   const std::optional<Real> load =
       solved_load(case_, level.mesh, fem::interpolate_nodal_field(from, u, dim, level.mesh), its,
@@ -123,16 +129,6 @@ std::optional<SolvedLevel<dim>> solved_by_own_loop(const io::Case& case_, mesh::
   level.load = simulation.results.pressure.ram_reaction;
   level.velocity = std::move(simulation.results.fields.velocity);
   return level;
-}
-
-template <int dim>
-std::optional<SolvedLevel<dim>> solved_by_own_loop(const io::Case& case_, Real size,
-                                                   const mesh::Mesh<dim>& from, const VectorX& u,
-                                                   Index& iterations) {
-  mesh::MeshSpec spec = case_.mesh;
-  spec.size = size;
-  return solved_by_own_loop(case_, std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec)), from, u,
-                            iterations);
 }
 
 /// The case with every regularisation doubled: the penalties d (incompressibility,
@@ -167,9 +163,7 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
   const Real coarser_size = 2 * case_.mesh.size;
   if (mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured &&
       size_fits(case_.mesh, coarser_size)) {
-    mesh::MeshSpec spec = case_.mesh;
-    spec.size = coarser_size;
-    const auto coarser = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec));
+    const auto coarser = channel_at<dim>(case_, coarser_size);
     Index iterations = 0;
     const std::optional<Real> coarser_load = solved_load(
         case_, coarser, fem::interpolate_nodal_field(mesh, u, dim, coarser), iterations);
@@ -186,9 +180,7 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
     // its bar (docs/error-estimation.md, "The two-grid factor"). It costs a solve on
     // 16× the run's dofs, so it is made only where no 2h exists, and not in an
     // adaptive run's cycle 0, whose marking does not need it.
-    mesh::MeshSpec spec = case_.mesh;
-    spec.size = case_.mesh.size / 4;
-    const auto finer = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec));
+    const auto finer = channel_at<dim>(case_, case_.mesh.size / 4);
     Index iterations = 0;
     const std::optional<Real> finer_load = solved_load(
         case_, finer, fem::interpolate_nodal_field(refined, estimate.refined_velocity, dim, finer),
@@ -261,16 +253,17 @@ post::LoadErrorEstimate coarser_levels_estimate(const io::Case& case_, const mes
                                                 PhaseTimes& times) {
   ScopedTimer timer(times, "error estimate");
   post::LoadErrorEstimate estimate;
-  const auto level = [&](const io::Case& level_case, Real size, const mesh::Mesh<dim>& from,
-                         const VectorX& start, Index& iterations) {
-    return own_loop ? solved_by_own_loop(level_case, size, from, start, iterations)
-                    : solved_level(level_case, size, from, start, iterations);
+  const auto level = [&](const io::Case& level_case, mesh::Mesh<dim> level_mesh,
+                         const mesh::Mesh<dim>& from, const VectorX& start, Index& iterations) {
+    return own_loop ? solved_by_own_loop(level_case, std::move(level_mesh), from, start, iterations)
+                    : solved_level(level_case, std::move(level_mesh), from, start, iterations);
   };
   const std::optional<SolvedLevel<dim>> coarser =
-      level(case_, 2 * case_.mesh.size, mesh, u, estimate.coarser_newton_iterations);
+      level(case_, channel_at<dim>(case_, 2 * case_.mesh.size), mesh, u,
+            estimate.coarser_newton_iterations);
   if (!coarser) return unavailable("the solve on the mesh coarsened once (2h) did not converge");
   const std::optional<SolvedLevel<dim>> coarsest =
-      level(case_, 4 * case_.mesh.size, coarser->mesh, coarser->velocity,
+      level(case_, channel_at<dim>(case_, 4 * case_.mesh.size), coarser->mesh, coarser->velocity,
             estimate.coarser_newton_iterations);
   if (!coarsest) return unavailable("the solve on the mesh coarsened twice (4h) did not converge");
   const Real change = load - coarser->load;
@@ -289,23 +282,15 @@ post::LoadErrorEstimate coarser_levels_estimate(const io::Case& case_, const mes
   estimate.observed_ratio = observed;
   estimate.ratio = *ratio;
   estimate.discretisation_error = post::tail_beyond_refined(change, *ratio);
-  const io::Case doubled_case = doubled_regularisations(case_);
-  std::optional<Real> doubled;
-  if (own_loop) {
-    const auto doubled_level =
-        solved_by_own_loop(doubled_case, coarser->mesh, coarser->mesh, coarser->velocity,
-                           estimate.penalty_newton_iterations);
-    if (doubled_level) doubled = doubled_level->load;
-  } else {
-    doubled = solved_load(doubled_case, coarser->mesh, coarser->velocity,
-                          estimate.penalty_newton_iterations);
-  }
+  const std::optional<SolvedLevel<dim>> doubled =
+      level(doubled_regularisations(case_), coarser->mesh, coarser->mesh, coarser->velocity,
+            estimate.penalty_newton_iterations);
   if (!doubled) {
     estimate.unavailable =
         "the run with doubled regularisations (d, d_N, d_T, α) on 2h did not converge";
     return estimate;
   }
-  estimate.penalty_change = *doubled - coarser->load;
+  estimate.penalty_change = doubled->load - coarser->load;
   estimate.error = post::coarser_levels_bound(change, *ratio, *estimate.penalty_change);
   return estimate;
 }
