@@ -274,7 +274,16 @@ TEST(LoadErrorEstimate, CoarserLevelsContainHillsValue) {
                                               (1.0 - estimate.ratio) +
                                           std::abs(estimate.penalty_change.value_or(NAN)));
     EXPECT_EQ(estimate.enriched_dofs, 0) << "no mesh finer than the run's";
-    EXPECT_EQ(estimate.cell_indicators.size(), 0) << "no indicators without the adjoint";
+    // The cell indicators (the adjoint on the run's mesh, weighted residuals of u_h and
+    // u_2h) sum to the solved p_h − p_2h up to the two levels' iteration errors: each
+    // Newton solve stops after a change below δ with a contraction of at most 0.7
+    // (docs/error-estimation.md), so its velocity is within δ 0.7/0.3 < 2.5 δ of the
+    // discrete solution and its load, nearly homogeneous in u, within 2.5 δ |p|.
+    ASSERT_EQ(estimate.cell_indicators.size(), results.n_cells);
+    const double delta = case_.solver.tolerance;
+    EXPECT_NEAR(estimate.cell_indicators.sum(), *estimate.coarser_change,
+                2 * 2.5 * delta * std::abs(results.pressure.ram_reaction))
+        << degrees << "°";
     EXPECT_GT(estimate.coarser_newton_iterations, 0);
     const double exact = hill_wedge_stress(degrees * degree);
     const double index = *estimate.error / std::abs(results.pressure.ram_reaction - exact);

@@ -241,6 +241,32 @@ bool coarser_levels_fit(const io::Case& case_, bool mesh_from_case) {
          size_fits(case_.mesh, 2 * case_.mesh.size) && size_fits(case_.mesh, 4 * case_.mesh.size);
 }
 
+/// The "coarser" estimate's cell indicators (empty when its adjoint cannot be solved):
+/// the weighted residuals of the run's u against u_{2h} with the reaction's adjoint at
+/// u on the run's mesh (post::weighted_residual_estimate; one factorisation there), each
+/// 2h cell's share split evenly among its children. They sum to p_h − p_{2h} (both
+/// fields converged: no linearisation), at the resolution of 2h: where the load's error
+/// comes from, as the refined estimate's indicators say it at h.
+template <int dim>
+VectorX indicators_over_coarser(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
+                                const VectorX& u, const SolvedLevel<dim>& coarser) {
+  assembly::FormingProblem<dim> coarser_problem(coarser.mesh, problem_settings(case_));
+  const auto pressure = attached_pressure_multipliers(case_, coarser.mesh, coarser_problem);
+  const std::vector<Index> parent = post::parent_cells(coarser.mesh, problem.mesh());
+  const post::LoadErrorEstimate weighted = post::weighted_residual_estimate(
+      coarser_problem, coarser.velocity, problem, u, parent, make_solve_plan(case_).linear);
+  if (!weighted.unavailable.empty()) return {};
+  std::vector<int> children(static_cast<std::size_t>(coarser.mesh.n_cells()), 0);
+  for (Index cell : parent) ++children[static_cast<std::size_t>(cell)];
+  VectorX indicators(problem.mesh().n_cells());
+  for (Index cell = 0; cell < indicators.size(); ++cell) {
+    const Index coarse_cell = parent[static_cast<std::size_t>(cell)];
+    indicators[cell] =
+        weighted.cell_indicators[coarse_cell] / children[static_cast<std::size_t>(coarse_cell)];
+  }
+  return indicators;
+}
+
 /// The "coarser" estimate (post::coarser_levels_bound) of a run whose load is `load`:
 /// the loads on the structured channel at 2h (from u restricted) and 4h (from u_{2h}
 /// restricted), each solved to δ, their ratio of differences, and the regularisations'
@@ -248,10 +274,11 @@ bool coarser_levels_fit(const io::Case& case_, bool mesh_from_case) {
 /// the offset shrinks with h, −3.9e-4 at h = 1 to −1.0e-4 at 1/16, so 2h's is the
 /// larger). `own_loop`: the levels are solved by the run's loop, not by Newton.
 template <int dim>
-post::LoadErrorEstimate coarser_levels_estimate(const io::Case& case_, const mesh::Mesh<dim>& mesh,
-                                                const VectorX& u, Real load, bool own_loop,
-                                                PhaseTimes& times) {
+post::LoadErrorEstimate
+coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
+                        const VectorX& u, Real load, bool own_loop, PhaseTimes& times) {
   ScopedTimer timer(times, "error estimate");
+  const mesh::Mesh<dim>& mesh = problem.mesh();
   post::LoadErrorEstimate estimate;
   const auto level = [&](const io::Case& level_case, mesh::Mesh<dim> level_mesh,
                          const mesh::Mesh<dim>& from, const VectorX& start, Index& iterations) {
@@ -292,6 +319,7 @@ post::LoadErrorEstimate coarser_levels_estimate(const io::Case& case_, const mes
   }
   estimate.penalty_change = doubled->load - coarser->load;
   estimate.error = post::coarser_levels_bound(change, *ratio, *estimate.penalty_change);
+  if (!own_loop) estimate.cell_indicators = indicators_over_coarser(case_, problem, u, *coarser);
   return estimate;
 }
 
@@ -351,10 +379,9 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
           "any mesh");
     // Newton's levels where it reaches the problem (the load then its driven force at
     // u, as the levels'), else the run's own loop on each level and its reported load.
-    return no_tangent.empty()
-               ? coarser_levels_estimate(case_, problem.mesh(), u, post::driven_load(problem, u),
-                                         false, times)
-               : coarser_levels_estimate(case_, problem.mesh(), u, run_load, true, times);
+    return no_tangent.empty() ? coarser_levels_estimate(case_, problem, u,
+                                                        post::driven_load(problem, u), false, times)
+                              : coarser_levels_estimate(case_, problem, u, run_load, true, times);
   }
   if (!no_tangent.empty()) return unavailable(no_tangent);
   const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;

@@ -73,7 +73,9 @@ json pressure_json(const Case& case_, const post::Results& results) {
       {"unavailable", estimate.error ? json(nullptr) : json(estimate.unavailable)},
       {"refined_dofs", estimate.enriched_dofs},
       {"refined_newton_iterations", estimate.settle_iterations},
-      {"refined_change", estimate.error ? json(estimate.enriched_change) : json(nullptr)},
+      {"refined_change", estimate.error && estimate.method != "coarser"
+                             ? json(estimate.enriched_change)
+                             : json(nullptr)},
       {"coarser_change", estimate.coarser_change ? json(*estimate.coarser_change) : json(nullptr)},
       {"finer_change", estimate.finer_change ? json(*estimate.finer_change) : json(nullptr)},
       {"coarsest_change",

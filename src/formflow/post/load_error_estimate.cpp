@@ -70,57 +70,18 @@ LoadErrorEstimate unavailable(std::string why) {
 } // namespace
 
 template <int dim>
-LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
-                                      const assembly::FormingProblem<dim>& fine,
-                                      const std::vector<Index>& parent,
-                                      solvers::LinearSolverKind kind,
-                                      const solvers::IterationControl* settle, PhaseTimes& times) {
-  ScopedTimer timer(times, "error estimate");
+LoadErrorEstimate
+weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
+                           const assembly::FormingProblem<dim>& fine, const VectorX& fine_velocity,
+                           const std::vector<Index>& parent, solvers::LinearSolverKind kind) {
   const assembly::ScatterPlan& plan = fine.plan();
-  // 1. The coarse solution on the fine mesh, its prescribed values the fine ones.
-  VectorX prolonged = fem::interpolate_nodal_field(coarse.mesh(), u, dim, fine.mesh());
-  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-    if (plan.free_index(dof) < 0) prolonged[dof] = fine.constraints().values[dof];
-  // 1b. Settle the nonlinearity on the fine mesh (a loose Newton solve from ũ): the
-  // near rate-insensitive law makes the one-step linearisation miss most of the change.
-  Index settle_iterations = 0;
-  VectorX refined_velocity; // the settled field, kept for an adaptive run's last step
-  if (settle) {
-    PhaseTimes inner;
-    auto settle_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
-    solvers::FormingNonlinearProblem<dim> nonlinear(fine);
-    const Real coarse_load = driven_load(coarse, u);
-    Real previous_load = std::numeric_limits<Real>::quiet_NaN();
-    int quiet_iterations = 0;
-    nonlinear.set_after_iteration(
-        [&](const solvers::IterationState& state) {
-          solvers::AfterIteration after;
-          if (!state.internal_force) return after; // a secant step: no load at hand
-          const Real load = fine.driven_force(*state.internal_force) / fine.driven_height();
-          const Real moved = std::abs(load - previous_load);
-          quiet_iterations = moved <= settle_load_fraction * std::abs(load - coarse_load)
-                                 ? quiet_iterations + 1
-                                 : 0;
-          previous_load = load;
-          if (quiet_iterations >= 2) after.stop = solvers::StopReason::Converged;
-          return after;
-        },
-        false);
-    const solvers::SecantOutcome outcome =
-        solvers::newton_iteration(nonlinear, *settle_solver, *settle, {}, inner, &prolonged);
-    settle_iterations = static_cast<Index>(outcome.history.size());
-    VectorX settled = outcome.velocity;
-    fine.discretisation().owned_dofs().replicate(settled); // ghosted on several ranks
-    if (settled.allFinite()) prolonged = std::move(settled);
-    refined_velocity = prolonged;
-  }
-  const std::vector<Real> thresholds = fine.friction_thresholds(prolonged);
+  const std::vector<Real> thresholds = fine.friction_thresholds(fine_velocity);
 
   // 2. The exact Jacobian at ũ (primal: no duals) and the adjoint.
   assembly::LinearSystem tangent = plan.make_system();
   assembly::UnsymmetricTangent<dim> coupling;
   VectorX force;
-  fine.assemble_newton(prolonged, thresholds, assembly::NewtonDuals<dim>{}, force, &tangent,
+  fine.assemble_newton(fine_velocity, thresholds, assembly::NewtonDuals<dim>{}, force, &tangent,
                        &coupling);
   if (coupling.has_friction && fine.multipliers())
     return unavailable("a pressure-dependent friction threshold with constraint multipliers "
@@ -166,7 +127,7 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
   for (Index dof : fine.constraints().driven_dofs) weight[dof] = 1.0;
   const VectorX coarse_weight =
       fem::interpolate_nodal_field(fine.mesh(), weight, dim, coarse.mesh());
-  const VectorX fine_shares = fine.weighted_cell_forces(prolonged, thresholds, weight);
+  const VectorX fine_shares = fine.weighted_cell_forces(fine_velocity, thresholds, weight);
   LoadErrorEstimate estimate;
   estimate.cell_indicators =
       -coarse.weighted_cell_forces(u, coarse.friction_thresholds(u), coarse_weight);
@@ -177,10 +138,60 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
   estimate.cell_indicators /= height;
   estimate.enriched_change = estimate.cell_indicators.sum();
   estimate.enriched_dofs = fine.n_dofs();
-  estimate.settle_iterations = static_cast<int>(settle_iterations);
-  estimate.refined_velocity = std::move(refined_velocity);
   if (!std::isfinite(estimate.enriched_change) || !estimate.cell_indicators.allFinite())
     return unavailable("the weighted residual is not finite");
+  return estimate;
+}
+
+template <int dim>
+LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
+                                      const assembly::FormingProblem<dim>& fine,
+                                      const std::vector<Index>& parent,
+                                      solvers::LinearSolverKind kind,
+                                      const solvers::IterationControl* settle, PhaseTimes& times) {
+  ScopedTimer timer(times, "error estimate");
+  const assembly::ScatterPlan& plan = fine.plan();
+  // 1. The coarse solution on the fine mesh, its prescribed values the fine ones.
+  VectorX prolonged = fem::interpolate_nodal_field(coarse.mesh(), u, dim, fine.mesh());
+  for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+    if (plan.free_index(dof) < 0) prolonged[dof] = fine.constraints().values[dof];
+  // 1b. Settle the nonlinearity on the fine mesh (a loose Newton solve from ũ): the
+  // near rate-insensitive law makes the one-step linearisation miss most of the change.
+  Index settle_iterations = 0;
+  VectorX refined_velocity; // the settled field, kept for an adaptive run's last step
+  if (settle) {
+    PhaseTimes inner;
+    auto settle_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
+    solvers::FormingNonlinearProblem<dim> nonlinear(fine);
+    const Real coarse_load = driven_load(coarse, u);
+    Real previous_load = std::numeric_limits<Real>::quiet_NaN();
+    int quiet_iterations = 0;
+    nonlinear.set_after_iteration(
+        [&](const solvers::IterationState& state) {
+          solvers::AfterIteration after;
+          if (!state.internal_force) return after; // a secant step: no load at hand
+          const Real load = fine.driven_force(*state.internal_force) / fine.driven_height();
+          const Real moved = std::abs(load - previous_load);
+          quiet_iterations = moved <= settle_load_fraction * std::abs(load - coarse_load)
+                                 ? quiet_iterations + 1
+                                 : 0;
+          previous_load = load;
+          if (quiet_iterations >= 2) after.stop = solvers::StopReason::Converged;
+          return after;
+        },
+        false);
+    const solvers::SecantOutcome outcome =
+        solvers::newton_iteration(nonlinear, *settle_solver, *settle, {}, inner, &prolonged);
+    settle_iterations = static_cast<Index>(outcome.history.size());
+    VectorX settled = outcome.velocity;
+    fine.discretisation().owned_dofs().replicate(settled); // ghosted on several ranks
+    if (settled.allFinite()) prolonged = std::move(settled);
+    refined_velocity = prolonged;
+  }
+  LoadErrorEstimate estimate = weighted_residual_estimate(coarse, u, fine, prolonged, parent, kind);
+  if (!estimate.unavailable.empty()) return estimate;
+  estimate.settle_iterations = static_cast<int>(settle_iterations);
+  estimate.refined_velocity = std::move(refined_velocity);
   // 4. From the two-level change to the error of p_h (assumed_load_error_order); the
   // caller may observe the ratio on a third level and adds the penalties' part.
   estimate.ratio = std::pow(2.0, -assumed_load_error_order);
@@ -291,6 +302,16 @@ template LoadErrorEstimate
 estimate_load_error<3>(const assembly::FormingProblem<3>&, const VectorX&,
                        const assembly::FormingProblem<3>&, const std::vector<Index>&,
                        solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&);
+template LoadErrorEstimate weighted_residual_estimate<2>(const assembly::FormingProblem<2>&,
+                                                         const VectorX&,
+                                                         const assembly::FormingProblem<2>&,
+                                                         const VectorX&, const std::vector<Index>&,
+                                                         solvers::LinearSolverKind);
+template LoadErrorEstimate weighted_residual_estimate<3>(const assembly::FormingProblem<3>&,
+                                                         const VectorX&,
+                                                         const assembly::FormingProblem<3>&,
+                                                         const VectorX&, const std::vector<Index>&,
+                                                         solvers::LinearSolverKind);
 template Real driven_load<2>(const assembly::FormingProblem<2>&, const VectorX&);
 template Real driven_load<3>(const assembly::FormingProblem<3>&, const VectorX&);
 template std::vector<Index> parent_cells<2>(const mesh::Mesh<2>&, const mesh::Mesh<2>&);

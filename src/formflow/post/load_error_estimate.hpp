@@ -90,6 +90,19 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
                                       solvers::LinearSolverKind kind,
                                       const solvers::IterationControl* settle, PhaseTimes& times);
 
+/// Steps 2 and 3 of estimate_load_error at a given fine field `fine_velocity` (whole
+/// on every rank; the settled ũ there): the adjoint at it, the weights and the cell
+/// indicators of `coarse` (each fine cell's share to its `parent`), their sum in
+/// enriched_change. With both fields converged solutions the sum is the solved
+/// difference p_fine − p_coarse (the residuals vanish to δ), so the "coarser" estimate
+/// gets its cell indicators from the run's mesh over 2h (app/load_error.cpp).
+/// `error` is left unset; `unavailable` says why when no adjoint could be solved.
+template <int dim>
+LoadErrorEstimate
+weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
+                           const assembly::FormingProblem<dim>& fine, const VectorX& fine_velocity,
+                           const std::vector<Index>& parent, solvers::LinearSolverKind kind);
+
 /// The load Q(u)/height of `problem` at `u`: the driven rows of the Newton assembly's
 /// internal force, as the estimate's weighted residuals count it.
 template <int dim> Real driven_load(const assembly::FormingProblem<dim>& problem, const VectorX& u);

@@ -71,14 +71,20 @@ void draw_cell_pressure(const Canvas& canvas, const PictureData& data, const Vec
 
 void draw_load_error(const Canvas& canvas, const PictureData& data) {
   const post::LoadErrorEstimate& estimate = data.results.load_error;
+  // "coarser" indicators share p_h − p_{2h} (the run's mesh over 2h), the refined
+  // estimate's p_{h/2} − p_h.
+  const bool coarser = estimate.method == "coarser";
+  const VectorX& indicators = data.results.fields.cell_load_error;
   const std::string title =
-      estimate.error ? fmt::format("Load error indicators: Σ η_K = {:.4g}, p = {:.4f} ± {:.4f}",
-                                   estimate.enriched_change, data.results.pressure.ram_reaction,
-                                   *estimate.error)
-                     : std::string("Load error indicators");
-  draw_cell_values(canvas, data, data.results.fields.cell_load_error, title,
+      estimate.error
+          ? fmt::format("Load error indicators: Σ η_K = {:.4g}, p = {:.4f} ± {:.4f}",
+                        indicators.size() > 0 ? indicators.sum() : estimate.enriched_change,
+                        data.results.pressure.ram_reaction, *estimate.error)
+          : std::string("Load error indicators");
+  draw_cell_values(canvas, data, indicators, title,
                    estimate.error ? "no indicators" : "no error estimate (solver.load_error)",
-                   "η_{K}: the cell's share of p_{h/2} − p_{h}");
+                   coarser ? "η_{K}: the cell's share of p_{h} − p_{2h}"
+                           : "η_{K}: the cell's share of p_{h/2} − p_{h}");
 }
 
 } // namespace formflow::io::plot
