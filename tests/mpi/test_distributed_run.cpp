@@ -178,15 +178,20 @@ TEST_P(DistributedMatchesCholmod, RamReactionOfTheSerialRun) {
     EXPECT_NEAR(thermal.at("exit_temperature").at("mean").get<Real>(), serial_thermal.exit_mean,
                 tolerance * rise);
   }
-  // The load's error bar (solver.load_error = "refined"): its loads on the refined,
-  // coarser and doubled-regularisation problems are each within `tolerance` of the
-  // serial ones relative to p, and the bar F_s|Δ|/(1 − q) + |Δ_ε| combines four of
-  // them with weights ≤ 1.25/(1 − ½) = 2.5: within 2 · (2.5 + 1) · tolerance · |p|.
+  // The load's error bar (solver.load_error "refined", or "auto"'s choice): its loads on
+  // the refined or coarser levels and the doubled-regularisation problem are each within
+  // `tolerance` of the serial ones relative to p, and the bar, F_s|Δ|/(1 − q) (refined)
+  // or F_s|Δ| q/(1 − q) (coarser) plus |Δ_ε|, combines four of them with weights at
+  // most F_s/(1 − q): within 2 · (F_s/(1 − q) + 1) · tolerance · |p|, q the serial run's
+  // tail ratio.
   const auto& error_bar = run.summary.at("pressure").at("ram_reaction_error");
   if (serial.results.load_error.error) {
     ASSERT_FALSE(error_bar.is_null()) << run.summary.at("pressure");
+    const Real weight = 1.25 / (1.0 - serial.results.load_error.ratio);
     EXPECT_NEAR(error_bar.get<Real>(), *serial.results.load_error.error,
-                7 * tolerance * std::abs(reference));
+                2 * (weight + 1) * tolerance * std::abs(reference));
+    EXPECT_EQ(run.summary.at("pressure").at("error_estimate").at("method"),
+              serial.results.load_error.method);
   } else {
     EXPECT_TRUE(error_bar.is_null()) << run.summary.at("pressure");
   }
