@@ -222,6 +222,24 @@ void bind_result(py::module_& module) {
           },
           "cell means of σ_H, (n_cells,)")
       .def_property_readonly(
+          "load_error",
+          [](const PythonResult& result) -> py::object {
+            const post::LoadErrorEstimate& estimate = result.simulation.results.load_error;
+            return estimate.error ? py::object(py::float_(*estimate.error)) : py::none();
+          },
+          "the estimate of |p_h − p| for the load (summary.json pressure.ram_reaction_error); "
+          "None when not computed, summary['pressure']['error_estimate']['unavailable'] "
+          "says why")
+      .def_property_readonly(
+          "cell_load_error",
+          [results](Self self) -> py::object {
+            const VectorX& indicators = results(self).fields.cell_load_error;
+            if (indicators.size() == 0) return py::none();
+            return scalar_field(self, indicators);
+          },
+          "the load's error indicators per cell (fields.vtu load_error_indicator), (n_cells,); "
+          "None without them")
+      .def_property_readonly(
           "contact",
           [](const PythonResult& result) {
             return contact_profile(result.simulation.results.contact);

@@ -57,6 +57,21 @@ def test_attributes_are_the_summary_numbers(friction_run):
     assert result.timings == summary["timing_s"] and result.timings["total"] > 0
 
 
+def test_the_load_error_bar_is_the_summarys(friction_run):
+    # The default ("auto") estimate: mesh I admits no 2h, so the refined one, with
+    # one indicator per cell summing to its refined change.
+    result, _ = friction_run
+    pressure = result.summary["pressure"]
+    assert result.load_error is not None and result.load_error == pressure["ram_reaction_error"]
+    assert pressure["error_estimate"]["method"] == "refined"
+    indicators = result.cell_load_error
+    assert indicators.shape == (result.summary["mesh"]["elements"],)
+    change = pressure["error_estimate"]["refined_change"]
+    assert abs(indicators.sum() - change) <= 1e-12 * np.abs(indicators).sum()
+    unestimated = formflow.run(formflow.Case({**MESH_I, "solver.load_error": "none"}))
+    assert unestimated.load_error is None and unestimated.cell_load_error is None
+
+
 def test_the_callback_receives_every_iteration(friction_run):
     result, iterations = friction_run
     assert [record.iteration for record in iterations] == [r.iteration for r in result.history]
