@@ -20,7 +20,7 @@ row() { # $1 = label, $2 = case file, rest = --set overrides
   shift 2
   i=0
   while [ "$i" -lt "$repeat" ]; do
-    "$binary" run -q "$case_file" "$@" -o "$work/$label.$i" >/dev/null || true
+    "$binary" run -q --set solver.load_error=none "$case_file" "$@" -o "$work/$label.$i" >/dev/null || true
     i=$((i + 1))
   done
   /usr/bin/python3 - "$work" "$label" "$repeat" <<'PY'

@@ -48,7 +48,7 @@ PATHS = {
 def run(binary, case, size, path, steps, extra, work):
     out = os.path.join(work, f"{path}-{size}")
     timing = out + ".time"
-    command = ["/usr/bin/time", "-f", "%e %U %S %M", "-o", timing, binary, "run", "-q", *case,
+    command = ["/usr/bin/time", "-f", "%e %U %S %M", "-o", timing, binary, "run", "-q", "--set", "solver.load_error=none", *case,
                "-o", out, "--set", f"mesh.size={size}", *PATHS[path], *extra]
     if steps:
         command += ["--set", f"solver.max_iterations={steps}", "--set",

@@ -26,7 +26,7 @@ run() { # name, petsc options, launcher words and the binary
   name=$1
   options=$2
   shift 2
-  /usr/bin/time -f "%e %U %S %M" -o "$work/$name.time" "$@" run -q cases/round-rod-3d.toml \
+  /usr/bin/time -f "%e %U %S %M" -o "$work/$name.time" "$@" run -q --set solver.load_error=none cases/round-rod-3d.toml \
     -o "$work/$name" --set mesh.size="$size" --set "solver.petsc_options=$options" \
     --set formulation.type=mixed \
     --set formulation.pressure=P1disc --set formulation.discontinuous_pressure=saddle_point \

@@ -31,7 +31,7 @@ TOLERANCE = "1e-8"
 
 def solve(binary, out, name, settings, tolerance=TOLERANCE, method="secant"):
     directory = Path(out) / name
-    command = [binary, "run", "-q", "-o", str(directory), "--set", f"solver.tolerance={tolerance}",
+    command = [binary, "run", "-q", "--set", "solver.load_error=none", "-o", str(directory), "--set", f"solver.tolerance={tolerance}",
                "--set", "solver.max_iterations=100000", "--set", f'solver.method="{method}"']
     for key, value in settings.items():
         command += ["--set", f"{key}={value}"]

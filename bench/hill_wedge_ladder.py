@@ -35,7 +35,7 @@ def drawing_stress(binary, directory, degrees, size, tolerance, extra):
                 "geometry.container_length": 2, "geometry.exit_length": 2,
                 "geometry.exit_half_height": repr(1 - r), "mesh.element": '"Q2"',
                 "mesh.size": size, "material.alpha": 1e-4, "solver.tolerance": tolerance}
-    command = [binary, "run", "-q", "-o", str(directory)]
+    command = [binary, "run", "-q", "--set", "solver.load_error=none", "-o", str(directory)]
     for key, value in settings.items():
         command += ["--set", f"{key}={value}"]
     for setting in extra:

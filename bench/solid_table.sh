@@ -18,7 +18,7 @@ row() { # $1 = label, $2 = case file, rest = --set overrides
   i=0
   while [ "$i" -lt "$repeat" ]; do
     /usr/bin/time -f "%M" -o "$work/$label.$i.mem" \
-      "$binary" run -q "$case_file" "$@" -o "$work/$label.$i" >/dev/null
+      "$binary" run -q --set solver.load_error=none "$case_file" "$@" -o "$work/$label.$i" >/dev/null
     i=$((i + 1))
   done
   /usr/bin/python3 - "$work" "$label" "$repeat" <<'PY'

@@ -17,7 +17,7 @@ run() { # $1 = label, rest = --set overrides
   shift
   i=0
   while [ "$i" -lt "$repeat" ]; do
-    "$binary" run -q "$case_file" --set mesh.size="$size" "$@" -o "$work/$label$i" >/dev/null
+    "$binary" run -q --set solver.load_error=none "$case_file" --set mesh.size="$size" "$@" -o "$work/$label$i" >/dev/null
     i=$((i + 1))
   done
 }
