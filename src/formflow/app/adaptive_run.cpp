@@ -10,6 +10,7 @@
 #include "formflow/post/load_error_estimate.hpp"
 #if FORMFLOW_WITH_GMSH
 #include "formflow/mesh/die_face.hpp"
+#include "formflow/mesh/gmsh_mesh.hpp"
 #include "formflow/mesh/gmsh_meshers.hpp"
 #endif
 
@@ -299,9 +300,22 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     }
 #if FORMFLOW_WITH_GMSH
     const mesh::Mesh<2>& current = simulation.plane_mesh();
-    mesh::Mesh<2> next = mesh::gmsh_meshers().sized_channel_mesh(
-        run.mesh.geometry, mesh::die_face_polyline(run.mesh.geometry, run.mesh.size), current,
-        post::target_node_sizes(current, marked), current.order);
+    mesh::Mesh<2> next;
+    try {
+      next = mesh::gmsh_meshers().sized_channel_mesh(
+          run.mesh.geometry, mesh::die_face_polyline(run.mesh.geometry, run.mesh.size), current,
+          post::target_node_sizes(
+              current, marked,
+              post::coarsening_marking(results.load_error.cell_indicators, adapt.coarsen_fraction),
+              run.mesh.size),
+          current.order);
+    } catch (const mesh::MeshFileError& error) {
+      // Gmsh could not make the sized mesh (e.g. left triangles it could not recombine):
+      // the run ends on this cycle, its bar the full estimate, and says why.
+      estimate_fully_once();
+      finish(fmt::format("the remesh for the next cycle failed: {}", error.what()));
+      break;
+    }
     if (run.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(next);
     const VectorX start = fem::interpolate_nodal_field(current, results.fields.velocity, 2, next);
     cycle_clock.stamp(entry, results);

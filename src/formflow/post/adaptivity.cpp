@@ -41,13 +41,56 @@ Real cell_side(const mesh::Mesh<2>& mesh, Index cell) {
   return std::sqrt(std::abs(twice_area) / 2);
 }
 
-VectorX target_node_sizes(const mesh::Mesh<2>& mesh, const std::vector<bool>& marked) {
-  FF_ASSERT(static_cast<Index>(marked.size()) == mesh.n_cells(), "one flag per cell");
+std::vector<bool> coarsening_marking(const VectorX& indicators, Real fraction) {
+  const Index n = indicators.size();
+  std::vector<bool> coarsened(static_cast<std::size_t>(n), false);
+  std::vector<Index> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), Index{0});
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
+    return std::abs(indicators[a]) < std::abs(indicators[b]);
+  });
+  const Real total = indicators.cwiseAbs().sum();
+  Real sum = 0;
+  for (Index cell : order) {
+    sum += std::abs(indicators[cell]);
+    if (sum > fraction * total) break;
+    coarsened[static_cast<std::size_t>(cell)] = true;
+  }
+  return coarsened;
+}
+
+VectorX target_node_sizes(const mesh::Mesh<2>& mesh, const std::vector<bool>& marked,
+                          const std::vector<bool>& coarsened, Real largest_size) {
+  FF_ASSERT(static_cast<Index>(marked.size()) == mesh.n_cells() &&
+                static_cast<Index>(coarsened.size()) == mesh.n_cells(),
+            "one flag per cell");
   VectorX sizes = VectorX::Constant(mesh.n_nodes(), std::numeric_limits<Real>::infinity());
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
-    const Real side = cell_side(mesh, cell) * (marked[static_cast<std::size_t>(cell)] ? 0.5 : 1.0);
+    const auto k = static_cast<std::size_t>(cell);
+    Real side = cell_side(mesh, cell);
+    if (marked[k])
+      side *= 0.5;
+    else if (coarsened[k])
+      side = std::max(side, std::min(2 * side, largest_size)); // never below its own side
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       sizes[mesh.cells(a, cell)] = std::min(sizes[mesh.cells(a, cell)], side);
+  }
+  // Grading: within a cell, sizes differ by at most 2 (each sweep only lowers sizes,
+  // toward the smallest, so the sweeps end).
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
+      Real smallest = std::numeric_limits<Real>::infinity();
+      for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+        smallest = std::min(smallest, sizes[mesh.cells(a, cell)]);
+      for (int a = 0; a < mesh.nodes_per_cell(); ++a) {
+        Real& size = sizes[mesh.cells(a, cell)];
+        if (size > 2 * smallest) {
+          size = 2 * smallest;
+          changed = true;
+        }
+      }
+    }
   }
   return sizes;
 }

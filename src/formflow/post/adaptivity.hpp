@@ -19,6 +19,9 @@ struct AdaptSettings {
   int max_cycles = 8;      ///< solves, the first (on the case's mesh) included
   Index max_dofs = 400000; ///< no cycle on a mesh expected to have more dofs
   Real fraction = 0.5;     ///< Dörfler's θ: refine the cells holding this share of Σ|η_K|
+  /// Coarsen (double the size of, up to the case's mesh.size) the most cells, smallest
+  /// |η_K| first, that hold at most this share of Σ|η_K|; 0: never coarsen.
+  Real coarsen_fraction = 0.05;
   /// Not a key: inside an adaptive run, the target its cycles' estimates are held to
   /// (the estimate skips its penalty run while its discretisation part alone exceeds it).
   Real cycle_target = 0.0;
@@ -63,13 +66,24 @@ struct AdaptRecord {
 /// Returns one flag per cell.
 std::vector<bool> dorfler_marking(const VectorX& indicators, Real fraction);
 
+/// Coarsening's counterpart of dorfler_marking: the most cells, smallest |η_K| first,
+/// whose |η_K| sum to at most `fraction` of Σ|η_K| (none for fraction 0). Coarsening
+/// them at most doubles their share at first order, so the estimate grows by at most
+/// `fraction` of itself while the marked cells remove θ of it.
+std::vector<bool> coarsening_marking(const VectorX& indicators, Real fraction);
+
 /// The side of a square of the cell's area (corner nodes; Q2's curved edges
 /// ignored), the size Gmsh's target sizes mean.
 Real cell_side(const mesh::Mesh<2>& mesh, Index cell);
 
 /// The target size at each node of `mesh` for the next mesh: marked cells halve
-/// their side, the others keep it; a node takes the smallest of its cells' (so a
-/// refined cell is not widened by its neighbours' interpolation).
-VectorX target_node_sizes(const mesh::Mesh<2>& mesh, const std::vector<bool>& marked);
+/// their side, `coarsened` ones double it up to `largest_size` (the case's mesh.size),
+/// the others keep it; a node takes the smallest of its cells' (so a refined cell is
+/// not widened by its neighbours' interpolation). Then no node of a cell may be more
+/// than twice the cell's smallest node size (swept until it holds): without that
+/// grading a coarsened cell beside a refined one asked Gmsh for a jump it could not
+/// recombine into quadrilaterals (Hill's 15° wedge: triangles left, the remesh refused).
+VectorX target_node_sizes(const mesh::Mesh<2>& mesh, const std::vector<bool>& marked,
+                          const std::vector<bool>& coarsened, Real largest_size);
 
 } // namespace formflow::post

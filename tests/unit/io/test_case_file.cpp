@@ -412,6 +412,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"adapt.max_cycles", "5"},
       {"adapt.max_dofs", "12345"},
       {"adapt.fraction", "0.3"},
+      {"adapt.coarsen_fraction", "0.02"},
       {"verification.solution", "\"smooth\""},
       {"verification.distortion", "\"random\""},
       {"verification.amplitude", "0.2"},

@@ -38,6 +38,13 @@ std::vector<CaseKey> adapt_keys() {
                "with a nonzero indicator")
           .doc("Dörfler marking: refine (halve the size of) the fewest cells, largest |η_K| "
                "first, that hold this share of Σ|η_K|"),
+      real_key(
+          "adapt.coarsen_fraction", 0.05, [](auto& c) -> auto& { return c.adapt.coarsen_fraction; })
+          .within(0, 0.5)
+          .why("a share of Σ|η_K| to give up: beyond a half, coarsening would undo what "
+               "Dörfler's θ (0.5 by default) refines")
+          .doc("coarsen (double the size of, up to mesh.size) the most cells, smallest |η_K| "
+               "first, that hold at most this share of Σ|η_K|; 0: never coarsen"),
   };
 }
 
