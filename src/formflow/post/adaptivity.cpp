@@ -11,14 +11,24 @@
 
 namespace formflow::post {
 
-std::vector<bool> dorfler_marking(const VectorX& indicators, Real fraction) {
-  const Index n = indicators.size();
-  std::vector<bool> marked(static_cast<std::size_t>(n), false);
-  std::vector<Index> order(static_cast<std::size_t>(n));
+namespace {
+
+/// The cells in order of |η_K|: largest first, or smallest first (ties keep their order).
+std::vector<Index> cells_by_magnitude(const VectorX& indicators, bool largest_first) {
+  std::vector<Index> order(static_cast<std::size_t>(indicators.size()));
   std::iota(order.begin(), order.end(), Index{0});
   std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
-    return std::abs(indicators[a]) > std::abs(indicators[b]);
+    const Real size_a = std::abs(indicators[a]), size_b = std::abs(indicators[b]);
+    return largest_first ? size_a > size_b : size_a < size_b;
   });
+  return order;
+}
+
+} // namespace
+
+std::vector<bool> dorfler_marking(const VectorX& indicators, Real fraction) {
+  std::vector<bool> marked(static_cast<std::size_t>(indicators.size()), false);
+  const std::vector<Index> order = cells_by_magnitude(indicators, true);
   const Real total = indicators.cwiseAbs().sum();
   Real sum = 0;
   for (Index cell : order) {
@@ -42,13 +52,8 @@ Real cell_side(const mesh::Mesh<2>& mesh, Index cell) {
 }
 
 std::vector<bool> coarsening_marking(const VectorX& indicators, Real fraction) {
-  const Index n = indicators.size();
-  std::vector<bool> coarsened(static_cast<std::size_t>(n), false);
-  std::vector<Index> order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), Index{0});
-  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
-    return std::abs(indicators[a]) < std::abs(indicators[b]);
-  });
+  std::vector<bool> coarsened(static_cast<std::size_t>(indicators.size()), false);
+  const std::vector<Index> order = cells_by_magnitude(indicators, false);
   const Real total = indicators.cwiseAbs().sum();
   Real sum = 0;
   for (Index cell : order) {
