@@ -383,7 +383,17 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
                                                         post::driven_load(problem, u), false, times)
                               : coarser_levels_estimate(case_, problem, u, run_load, true, times);
   }
-  if (!no_tangent.empty()) return unavailable(no_tangent);
+  if (!no_tangent.empty()) {
+    // "auto" fell back to the refined estimate because the mesh has no coarser levels:
+    // say both, so the reader knows what would give a bar (a mesh.size admitting 4h).
+    if (case_.solver.load_error == solvers::LoadErrorMethod::Auto)
+      return unavailable(
+          "solver.load_error = \"auto\": the mesh has no coarser levels 2h and 4h (a "
+          "structured channel whose lengths admit them would give the \"coarser\" bar), and "
+          "the refined estimate needs Newton's tangent: " +
+          no_tangent);
+    return unavailable(no_tangent);
+  }
   const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;
   mesh::Mesh<dim> fine_mesh;
   std::unique_ptr<assembly::FormingProblem<dim>> fine;
