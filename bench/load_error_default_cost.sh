@@ -26,7 +26,7 @@ for case in "${cases[@]}"; do
     for _ in $(seq "$runs"); do
       start=$(date +%s.%N)
       "$binary" run -q -o "$scratch/out" "$case" --set solver.load_error="$method" >/dev/null
-      times+=("$(echo "$(date +%s.%N) - $start" | bc)")
+      times+=("$(awk -v start="$start" -v end="$(date +%s.%N)" 'BEGIN { print end - start }')")
     done
     median[$method]=$(printf '%s\n' "${times[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
   done

@@ -92,18 +92,16 @@ template <int dim> struct SolvedLevel {
   VectorX velocity;
 };
 
-/// `mesh` solved to δ by Newton from `from`'s velocity `u` interpolated; its load the
-/// driven force (solved_load).
+/// `mesh` solved to δ by Newton from `start` (a field on `mesh`); its load the driven
+/// force (solved_load).
 template <int dim>
 std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, mesh::Mesh<dim> mesh,
-                                             const mesh::Mesh<dim>& from, const VectorX& u,
-                                             Index& iterations) {
+                                             VectorX start, Index& iterations) {
   SolvedLevel<dim> level;
   level.mesh = std::move(mesh);
   Index its = 0;
   const std::optional<Real> load =
-      solved_load(case_, level.mesh, fem::interpolate_nodal_field(from, u, dim, level.mesh), its,
-                  &level.velocity);
+      solved_load(case_, level.mesh, std::move(start), its, &level.velocity);
   iterations += its;
   if (!load) return std::nullopt;
   level.load = *load;
@@ -111,16 +109,14 @@ std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, mesh::Mesh<d
 }
 
 /// The same level solved by the run's own loop (simulate_from: exact friction's
-/// augmentation, Uzawa steps, the saddle point), started from `from`'s velocity where
-/// that loop takes a start, its load the reported reaction. For the problems Newton
-/// does not reach: their load is the secant system's driven force with the multipliers.
+/// augmentation, Uzawa steps, the saddle point), started from `start` where that loop
+/// takes a start, its load the reported reaction. For the problems Newton does not
+/// reach: their load is the secant system's driven force with the multipliers.
 template <int dim>
 std::optional<SolvedLevel<dim>> solved_by_own_loop(const io::Case& case_, mesh::Mesh<dim> mesh,
-                                                   const mesh::Mesh<dim>& from, const VectorX& u,
-                                                   Index& iterations) {
+                                                   const VectorX& start, Index& iterations) {
   io::Case level_case = case_;
   level_case.solver.load_error = solvers::LoadErrorMethod::None; // no estimate of its own
-  const VectorX start = fem::interpolate_nodal_field(from, u, dim, mesh);
   Simulation simulation = simulate_from<dim>(level_case, std::move(mesh), start);
   iterations += simulation.results.iterations;
   if (!simulation.results.converged()) return std::nullopt;
@@ -280,27 +276,30 @@ coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<di
   ScopedTimer timer(times, "error estimate");
   const mesh::Mesh<dim>& mesh = problem.mesh();
   post::LoadErrorEstimate estimate;
+  // A level on `level_mesh` from `start`, a field on it.
   const auto level = [&](const io::Case& level_case, mesh::Mesh<dim> level_mesh,
-                         const mesh::Mesh<dim>& from, const VectorX& start, Index& iterations) {
-    return own_loop ? solved_by_own_loop(level_case, std::move(level_mesh), from, start, iterations)
-                    : solved_level(level_case, std::move(level_mesh), from, start, iterations);
+                         const VectorX& start, Index& iterations) {
+    return own_loop ? solved_by_own_loop(level_case, std::move(level_mesh), start, iterations)
+                    : solved_level(level_case, std::move(level_mesh), start, iterations);
   };
-  const std::optional<SolvedLevel<dim>> coarser =
-      level(case_, channel_at<dim>(case_, 2 * case_.mesh.size), mesh, u,
-            estimate.coarser_newton_iterations);
+  // The next coarser level from `from`'s velocity `field` restricted (interpolated).
+  const auto coarsened = [&](Real size, const mesh::Mesh<dim>& from, const VectorX& field) {
+    mesh::Mesh<dim> level_mesh = channel_at<dim>(case_, size);
+    const VectorX start = fem::interpolate_nodal_field(from, field, dim, level_mesh);
+    return level(case_, std::move(level_mesh), start, estimate.coarser_newton_iterations);
+  };
+  const std::optional<SolvedLevel<dim>> coarser = coarsened(2 * case_.mesh.size, mesh, u);
   if (!coarser) return unavailable("the solve on the mesh coarsened once (2h) did not converge");
   const std::optional<SolvedLevel<dim>> coarsest =
-      level(case_, channel_at<dim>(case_, 4 * case_.mesh.size), coarser->mesh, coarser->velocity,
-            estimate.coarser_newton_iterations);
+      coarsened(4 * case_.mesh.size, coarser->mesh, coarser->velocity);
   if (!coarsest) return unavailable("the solve on the mesh coarsened twice (4h) did not converge");
   const Real change = load - coarser->load;
   const Real coarsest_change = coarser->load - coarsest->load;
   estimate.method = "coarser";
   estimate.coarser_change = change;
   estimate.coarsest_change = coarsest_change;
-  const Real observed = change / coarsest_change;
-  const std::optional<Real> ratio =
-      std::isfinite(observed) ? post::tail_ratio(observed) : std::nullopt;
+  const Real observed = change / coarsest_change; // ±inf or NaN: refused by tail_ratio
+  const std::optional<Real> ratio = post::tail_ratio(observed);
   if (!ratio)
     return unavailable(fmt::format(
         "the loads on 4h, 2h, h do not converge monotonically (p_h − p_2h = {:.4g}, p_2h − "
@@ -310,7 +309,7 @@ coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<di
   estimate.ratio = *ratio;
   estimate.discretisation_error = post::tail_beyond_refined(change, *ratio);
   const std::optional<SolvedLevel<dim>> doubled =
-      level(doubled_regularisations(case_), coarser->mesh, coarser->mesh, coarser->velocity,
+      level(doubled_regularisations(case_), coarser->mesh, coarser->velocity,
             estimate.penalty_newton_iterations);
   if (!doubled) {
     estimate.unavailable =
@@ -346,10 +345,8 @@ mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim
                                      bool mesh_from_case) {
   if (mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured) {
     // The structured channel at half the size: nested in the one that ran.
-    mesh::MeshSpec spec = case_.mesh;
-    spec.size = case_.mesh.size / 2;
     mesh::RefinedMesh<dim> refined;
-    refined.mesh = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec));
+    refined.mesh = channel_at<dim>(case_, case_.mesh.size / 2);
     refined.parent = post::parent_cells(mesh, refined.mesh);
     return refined;
   }
@@ -394,7 +391,6 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
           no_tangent);
     return unavailable(no_tangent);
   }
-  const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;
   mesh::Mesh<dim> fine_mesh;
   std::unique_ptr<assembly::FormingProblem<dim>> fine;
   std::unique_ptr<assembly::ConstraintMultipliers<dim>> fine_pressure;
@@ -405,11 +401,8 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
     fine_mesh = std::move(refined.mesh);
     parent = std::move(refined.parent);
     fine = std::make_unique<assembly::FormingProblem<dim>>(fine_mesh, problem_settings(case_));
-    if (mixed) { // the condensed pressure, as on the mesh that ran (d > 0 here)
-      fine_pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-          fine_mesh, case_.penalty, case_.formulation, fine->full_rule(), fine->n_contact_points());
-      fine->attach_multipliers(fine_pressure.get());
-    }
+    // The condensed pressure, as on the mesh that ran (d > 0 here).
+    fine_pressure = attached_pressure_multipliers(case_, fine_mesh, *fine);
     if (!fine->terms().newton_ready())
       return unavailable("the refined problem has no Newton tangent");
   }
