@@ -5,6 +5,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/plot/mesh_drawing.hpp"
+#include "formflow/io/plot/picture_rendering.hpp"
 
 #include <fmt/format.h>
 
@@ -101,20 +102,19 @@ std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mes
                                   draw_contact,     draw_convergence, draw_load_error};
   const std::span<const std::string> names = picture_names();
   FF_ASSERT(names.size() == std::size(drawings), "one name per picture");
-  std::vector<Picture> out;
+  std::vector<PictureJob> jobs;
   // Hot forming adds temperature.png (io/results_writer.cpp lists it for every run).
   const bool thermal = results.thermal.enabled;
   for (std::size_t k = 0; k < names.size() + (thermal ? 1 : 0); ++k) {
     const DrawPicture picture = k < names.size() ? drawings[k] : draw_temperature;
     const std::string name = k < names.size() ? names[k] : std::string("temperature");
-    const DrawFunction function = [&data, picture](Canvas& canvas) {
-      picture(canvas, data);
-      if (!data.results.converged()) draw_not_converged_mark(canvas, data.results.stop_reason);
-    };
-    out.push_back({name, render_png(picture_width, picture_height, function),
-                   render_svg(picture_width, picture_height, function)});
+    jobs.push_back({name, [&data, picture](Canvas& canvas) {
+                      picture(canvas, data);
+                      if (!data.results.converged())
+                        draw_not_converged_mark(canvas, data.results.stop_reason);
+                    }});
   }
-  return out;
+  return render_jobs(jobs);
 }
 
 } // namespace formflow::io::plot

@@ -4,6 +4,7 @@
 #include "formflow/io/plot/solid_pictures.hpp"
 
 #include "formflow/core/error.hpp"
+#include "formflow/io/plot/picture_rendering.hpp"
 #include "formflow/io/plot/solid_section.hpp"
 
 #include <fmt/format.h>
@@ -210,22 +211,21 @@ std::vector<Picture> render_solid_pictures(const Case& case_, const mesh::Mesh<3
       {draw_contact_surface, &z0_data, ""},          {draw_convergence, &z0_data, ""}};
   const std::span<const std::string> names = solid_picture_names();
   FF_ASSERT(names.size() == std::size(drawings), "one name per picture");
-  std::vector<Picture> out;
+  std::vector<PictureJob> jobs;
   for (std::size_t k = 0; k < names.size(); ++k) {
     const Drawing drawing = drawings[k];
     // A solid mesh without that symmetry plane (a box with walls there) has no section.
     if (*drawing.note && drawing.data->mesh.n_cells() == 0) continue;
-    const DrawFunction function = [&results, drawing](Canvas& canvas) {
-      drawing.draw(canvas, *drawing.data);
-      if (*drawing.note)
-        canvas.text({canvas.width() - 12, 20}, drawing.note, Font{13.0, true, {0.2, 0.2, 0.2}},
-                    HAlign::Right, VAlign::Top);
-      if (!results.converged()) draw_not_converged_mark(canvas, results.stop_reason);
-    };
-    out.push_back({names[k], render_png(picture_width, picture_height, function),
-                   render_svg(picture_width, picture_height, function)});
+    jobs.push_back({names[k], [&results, drawing](Canvas& canvas) {
+                      drawing.draw(canvas, *drawing.data);
+                      if (*drawing.note)
+                        canvas.text({canvas.width() - 12, 20}, drawing.note,
+                                    Font{13.0, true, {0.2, 0.2, 0.2}}, HAlign::Right, VAlign::Top);
+                      if (!results.converged())
+                        draw_not_converged_mark(canvas, results.stop_reason);
+                    }});
   }
-  return out;
+  return render_jobs(jobs);
 }
 
 } // namespace formflow::io::plot
