@@ -112,6 +112,10 @@ void bind_values(py::module_& module) {
       .def_readonly("mixed_columns", &solvers::IterationRecord::mixed_columns,
                     "solver.acceleration = \"anderson\": the difference columns mixed into "
                     "the iterate this step started from (0: a plain step)")
+      .def_readonly("stage", &solvers::IterationRecord::stage,
+                    "which solve the iteration belongs to: empty for the run's own, else "
+                    "e.g. \"error estimate: the mesh refined once, 5042 dofs\" (an on_iteration "
+                    "callback sees the error estimate's and adaptive cycles' solves too)")
       .def("__repr__", [](const solvers::IterationRecord& record) {
         return fmt::format("Iteration({}, relative_change={:.6g}, pressure={:.6g})",
                            record.iteration, record.relative_change, record.pressure);

@@ -102,6 +102,22 @@ TEST_P(InterruptedRun, SignalDuringTheSolveExitsCleanlyAndKeepsThePreviousResult
   EXPECT_EQ(snapshot(out()), before); // no staging directory, no new file
 }
 
+TEST_P(InterruptedRun, SignalDuringTheErrorEstimateStopsItThere) {
+  // The sticking ram at h = 1 (mesh II: no 2h) takes the refined estimate: a settle on
+  // 5 042 dofs, the third level on h/4 and the doubled regularisations' solve, each
+  // iteration a safe point. Stopped in it, the run writes nothing; had the estimate run
+  // to its end first, the results would be written before the signal was seen.
+  write_previous_results(out(), {"summary.json", "fields.vtu", "history.csv"});
+  const auto before = snapshot(out());
+  const std::vector<std::string> arguments = {
+      "run", "--set", "process.ram=sticking", "--set", "mesh.element=Q2", "-o", out().string()};
+  const int code = run_and_signal(arguments, scratch_.path(), "-- error estimate: ", GetParam());
+  EXPECT_EQ(code, 128 + GetParam()) << read_text(scratch_ / "stderr.txt");
+  EXPECT_TRUE(has_text(read_text(scratch_ / "stderr.txt"), "stopped by a signal during the solve"))
+      << read_text(scratch_ / "stderr.txt");
+  EXPECT_EQ(snapshot(out()), before);
+}
+
 TEST_P(InterruptedRun, SignalDuringAStudyExitsCleanlyAndKeepsThePreviousStudy) {
   write_previous_results(out(), {"study.csv", "study.png"});
   const auto before = snapshot(out());

@@ -76,11 +76,17 @@ def test_the_load_error_bar_is_the_summarys(friction_run):
 
 
 def test_the_callback_receives_every_iteration(friction_run):
-    result, iterations = friction_run
+    result, records = friction_run
+    # The run's own iterations (no stage) are its history; the error estimate's solves
+    # come after them, each record naming its level.
+    iterations = [record for record in records if not record.stage]
     assert [record.iteration for record in iterations] == [r.iteration for r in result.history]
     assert [record.relative_change for record in iterations] == \
         [r.relative_change for r in result.history]
     assert len(iterations) == result.iterations > 0
+    estimate = records[len(iterations):]
+    assert result.load_error is not None and estimate
+    assert all(record.stage.startswith("error estimate: ") for record in estimate)
 
 
 def test_fields_are_numpy_arrays_of_the_mesh(friction_run):

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <vector>
 
@@ -88,7 +89,25 @@ void expect_effective_and_containing(const post::Results& results, double exact,
 TEST(LoadErrorEstimate, StickingRamCoarseRungIsEffective) {
   // Exact (1 + π/2) k, k = 1 (SPEC §4); h = 1: 1 322 dofs, 5 042 on the refined mesh.
   const double exact = 1.0 + std::numbers::pi / 2.0;
-  const post::Results results = app::simulate(sticking_ram(1.0)).results;
+  // Every solve of the run reaches its callback, the estimate's under their stages (a
+  // monitor shows what runs during the estimate; a stop signal is checked there).
+  std::map<std::string, int> records;
+  const auto count = [&records](const solvers::IterationRecord& record) {
+    ++records[record.stage];
+  };
+  const post::Results results = app::simulate(sticking_ram(1.0), count).results;
+  EXPECT_EQ(records[""], results.iterations);
+  EXPECT_EQ(records["error estimate: the mesh refined once, 5042 dofs"],
+            results.load_error.settle_iterations);
+  EXPECT_EQ(records["error estimate: the regularisations doubled, 1322 dofs"],
+            results.load_error.penalty_newton_iterations);
+  // The third level (h/4, mesh II has no 2h), named with its own dofs.
+  const std::string third = "error estimate: the third level, the mesh refined twice, ";
+  const auto third_level = records.lower_bound(third);
+  ASSERT_NE(third_level, records.end());
+  EXPECT_EQ(third_level->first.rfind(third, 0), 0u) << third_level->first;
+  EXPECT_GT(third_level->second, 0);
+  EXPECT_EQ(records.size(), 4u);
   const double index = effectivity(results, exact);
   EXPECT_GE(index, min_effectivity);
   EXPECT_LE(index, max_effectivity);

@@ -67,7 +67,10 @@ Simulation simulate_on_refined_mesh(const io::Case& run, const Simulation& simul
   last.solver.load_error = solvers::LoadErrorMethod::None;
   mesh::RefinedMesh<2> refined = estimate_mesh(run, simulation.plane_mesh(), mesh_from_case);
   const VectorX& start = simulation.results.load_error.refined_velocity;
-  Simulation result = simulate_from<2>(last, std::move(refined.mesh), start, on_iteration);
+  const IterationCallback staged =
+      with_stage(on_iteration, fmt::format("adapt: the last cycle's mesh split, {} dofs",
+                                           2 * refined.mesh.n_nodes()));
+  Simulation result = simulate_from<2>(last, std::move(refined.mesh), start, staged);
   // Its error bar (refined_mesh_error) and the cycle's indicators, each parent's
   // shared among its children (a density on the mesh that ran last).
   post::LoadErrorEstimate estimate = simulation.results.load_error;
@@ -182,11 +185,12 @@ bool predicts_target(const CheapEstimateScale& scale, const post::Results& resul
 
 /// Replaces a cheap cycle's estimate by the full one (`run`'s) on the same solution and
 /// recalibrates `scale` with the pair.
-void estimate_fully(const io::Case& run, Simulation& simulation, CheapEstimateScale& scale) {
+void estimate_fully(const io::Case& run, Simulation& simulation, CheapEstimateScale& scale,
+                    const IterationCallback& on_iteration) {
   post::Results& results = simulation.results;
   const Real linearised_change = results.load_error.enriched_change;
   results.load_error = load_error_on<2>(run, simulation.plane_mesh(), results.fields.velocity,
-                                        false, results.timing);
+                                        false, results.timing, on_iteration);
   results.fields.cell_load_error = results.load_error.cell_indicators;
   if (results.load_error.error) scale.update(results.load_error, linearised_change);
 }
@@ -224,7 +228,14 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   const post::AdaptSettings& adapt = case_.adapt;
   post::AdaptRecord record;
   CycleClock cycle_clock;
-  Simulation simulation = simulate(run, on_iteration); // cycle 0: the case's mesh
+  // The monitor's stage of cycle k's solves (its estimate's levels name themselves).
+  const auto cycle_stage = [&on_iteration](int cycle, const mesh::Mesh<2>* mesh) {
+    return with_stage(on_iteration,
+                      mesh ? fmt::format("adapt cycle {}, {} dofs", cycle, 2 * mesh->n_nodes())
+                           : fmt::format("adapt cycle {}, the case's mesh", cycle));
+  };
+  IterationCallback staged = cycle_stage(0, nullptr);
+  Simulation simulation = simulate(run, staged); // cycle 0: the case's mesh
   // Later cycles mark with the cheap estimate; the full one only where it may stop.
   const io::Case cheap = cheap_cycle_case(run);
   CheapEstimateScale scale =
@@ -255,7 +266,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     // (and the last cycle, whatever stops it) gets the full estimate, which decides.
     bool fully_estimated = !cheap_cycle;
     const auto estimate_fully_once = [&] {
-      if (!fully_estimated) estimate_fully(run, simulation, scale);
+      if (!fully_estimated) estimate_fully(run, simulation, scale, staged);
       fully_estimated = true;
       entry.estimate = results.load_error.error;
       entry.estimate_predicted = false;
@@ -322,7 +333,8 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     record.cycles.push_back(entry);
     cycle_clock = CycleClock{};
     cheap_cycle = scale.calibrated();
-    simulation = simulate_from<2>(cheap_cycle ? cheap : run, std::move(next), start, on_iteration);
+    staged = cycle_stage(cycle + 1, &next);
+    simulation = simulate_from<2>(cheap_cycle ? cheap : run, std::move(next), start, staged);
 #else
     finish("adaptivity needs Gmsh (FORMFLOW_WITH_GMSH=OFF)");
     break;

@@ -36,6 +36,15 @@ post::LoadErrorEstimate unavailable(std::string why) {
   return estimate;
 }
 
+/// The monitor's stage of one of the estimate's solves: what it solves and on how many
+/// dofs (a user waiting through a long estimate sees what is running).
+template <int dim>
+IterationCallback level_stage(const IterationCallback& on_iteration, std::string_view what,
+                              const mesh::Mesh<dim>& mesh) {
+  return with_stage(on_iteration,
+                    fmt::format("error estimate: {}, {} dofs", what, dim * mesh.n_nodes()));
+}
+
 /// The mixed formulation's condensed pressure (and contact multipliers) attached to
 /// `problem`; null for the penalty formulation. Owned by the caller, who keeps it alive
 /// as long as `problem`.
@@ -55,7 +64,8 @@ attached_pressure_multipliers(const io::Case& case_, const mesh::Mesh<dim>& mesh
 /// and the doubled-penalty run of the estimate. std::nullopt if it did not converge.
 template <int dim>
 std::optional<Real> solved_load(const io::Case& case_, const mesh::Mesh<dim>& mesh, VectorX start,
-                                Index& iterations, VectorX* solution = nullptr) {
+                                Index& iterations, const IterationCallback& on_iteration,
+                                VectorX* solution = nullptr) {
   assembly::FormingProblem<dim> problem(mesh, problem_settings(case_));
   const auto pressure = attached_pressure_multipliers(case_, mesh, problem);
   const assembly::ScatterPlan& plan = problem.plan();
@@ -68,7 +78,7 @@ std::optional<Real> solved_load(const io::Case& case_, const mesh::Mesh<dim>& me
   solvers::FormingNonlinearProblem<dim> nonlinear(problem);
   PhaseTimes inner; // timed as a whole by the caller ("error estimate")
   const solvers::SecantOutcome outcome =
-      solvers::newton_iteration(nonlinear, *solver, control, {}, inner, &start);
+      solvers::newton_iteration(nonlinear, *solver, control, on_iteration, inner, &start);
   iterations = static_cast<Index>(outcome.history.size());
   if (outcome.stop_reason != solvers::StopReason::Converged) return std::nullopt;
   if (solution) {
@@ -96,12 +106,13 @@ template <int dim> struct SolvedLevel {
 /// force (solved_load).
 template <int dim>
 std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, mesh::Mesh<dim> mesh,
-                                             VectorX start, Index& iterations) {
+                                             VectorX start, Index& iterations,
+                                             const IterationCallback& on_iteration) {
   SolvedLevel<dim> level;
   level.mesh = std::move(mesh);
   Index its = 0;
   const std::optional<Real> load =
-      solved_load(case_, level.mesh, std::move(start), its, &level.velocity);
+      solved_load(case_, level.mesh, std::move(start), its, on_iteration, &level.velocity);
   iterations += its;
   if (!load) return std::nullopt;
   level.load = *load;
@@ -114,10 +125,11 @@ std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, mesh::Mesh<d
 /// reach: their load is the secant system's driven force with the multipliers.
 template <int dim>
 std::optional<SolvedLevel<dim>> solved_by_own_loop(const io::Case& case_, mesh::Mesh<dim> mesh,
-                                                   const VectorX& start, Index& iterations) {
+                                                   const VectorX& start, Index& iterations,
+                                                   const IterationCallback& on_iteration) {
   io::Case level_case = case_;
   level_case.solver.load_error = solvers::LoadErrorMethod::None; // no estimate of its own
-  Simulation simulation = simulate_from<dim>(level_case, std::move(mesh), start);
+  Simulation simulation = simulate_from<dim>(level_case, std::move(mesh), start, on_iteration);
   iterations += simulation.results.iterations;
   if (!simulation.results.converged()) return std::nullopt;
   SolvedLevel<dim> level;
@@ -151,7 +163,8 @@ io::Case doubled_regularisations(const io::Case& case_) {
 template <int dim>
 void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
                        const VectorX& u, bool mesh_from_case, const mesh::Mesh<dim>& refined,
-                       post::LoadErrorEstimate& estimate, PhaseTimes& times) {
+                       post::LoadErrorEstimate& estimate, PhaseTimes& times,
+                       const IterationCallback& on_iteration) {
   if (case_.adapt.indicators_only) return; // an adaptive run's marking-only cycle
   ScopedTimer timer(times, "error estimate");
   const Real load = post::driven_load(problem, u);
@@ -161,8 +174,9 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
       size_fits(case_.mesh, coarser_size)) {
     const auto coarser = channel_at<dim>(case_, coarser_size);
     Index iterations = 0;
-    const std::optional<Real> coarser_load = solved_load(
-        case_, coarser, fem::interpolate_nodal_field(mesh, u, dim, coarser), iterations);
+    const std::optional<Real> coarser_load =
+        solved_load(case_, coarser, fem::interpolate_nodal_field(mesh, u, dim, coarser), iterations,
+                    level_stage(on_iteration, "the third level, the mesh coarsened once", coarser));
     if (coarser_load && *coarser_load != load) {
       estimate.coarser_change = load - *coarser_load;
       estimate.observed_ratio = estimate.enriched_change / *estimate.coarser_change;
@@ -180,7 +194,7 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
     Index iterations = 0;
     const std::optional<Real> finer_load = solved_load(
         case_, finer, fem::interpolate_nodal_field(refined, estimate.refined_velocity, dim, finer),
-        iterations);
+        iterations, level_stage(on_iteration, "the third level, the mesh refined twice", finer));
     const Real refined_load = load + estimate.enriched_change; // linearised from settled: δ²
     if (finer_load && estimate.enriched_change != 0) {
       estimate.finer_change = *finer_load - refined_load;
@@ -204,7 +218,8 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
   const Real target = case_.adapt.cycle_target * std::abs(load);
   if (target > 0 && post::tail_beyond_refined(estimate.enriched_change, *ratio) > target) return;
   const std::optional<Real> doubled =
-      solved_load(doubled_regularisations(case_), mesh, u, estimate.penalty_newton_iterations);
+      solved_load(doubled_regularisations(case_), mesh, u, estimate.penalty_newton_iterations,
+                  level_stage(on_iteration, "the regularisations doubled", mesh));
   if (!doubled) {
     estimate.error.reset();
     estimate.unavailable = "the run with doubled regularisations (d, d_N, d_T, α) did not converge";
@@ -272,26 +287,31 @@ VectorX indicators_over_coarser(const io::Case& case_, const assembly::FormingPr
 template <int dim>
 post::LoadErrorEstimate
 coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
-                        const VectorX& u, Real load, bool own_loop, PhaseTimes& times) {
+                        const VectorX& u, Real load, bool own_loop, PhaseTimes& times,
+                        const IterationCallback& on_iteration) {
   ScopedTimer timer(times, "error estimate");
   const mesh::Mesh<dim>& mesh = problem.mesh();
   post::LoadErrorEstimate estimate;
   // A level on `level_mesh` from `start`, a field on it.
   const auto level = [&](const io::Case& level_case, mesh::Mesh<dim> level_mesh,
-                         const VectorX& start, Index& iterations) {
-    return own_loop ? solved_by_own_loop(level_case, std::move(level_mesh), start, iterations)
-                    : solved_level(level_case, std::move(level_mesh), start, iterations);
+                         const VectorX& start, Index& iterations, std::string_view what) {
+    const IterationCallback staged = level_stage(on_iteration, what, level_mesh);
+    return own_loop
+               ? solved_by_own_loop(level_case, std::move(level_mesh), start, iterations, staged)
+               : solved_level(level_case, std::move(level_mesh), start, iterations, staged);
   };
   // The next coarser level from `from`'s velocity `field` restricted (interpolated).
-  const auto coarsened = [&](Real size, const mesh::Mesh<dim>& from, const VectorX& field) {
+  const auto coarsened = [&](Real size, const mesh::Mesh<dim>& from, const VectorX& field,
+                             std::string_view what) {
     mesh::Mesh<dim> level_mesh = channel_at<dim>(case_, size);
     const VectorX start = fem::interpolate_nodal_field(from, field, dim, level_mesh);
-    return level(case_, std::move(level_mesh), start, estimate.coarser_newton_iterations);
+    return level(case_, std::move(level_mesh), start, estimate.coarser_newton_iterations, what);
   };
-  const std::optional<SolvedLevel<dim>> coarser = coarsened(2 * case_.mesh.size, mesh, u);
+  const std::optional<SolvedLevel<dim>> coarser =
+      coarsened(2 * case_.mesh.size, mesh, u, "the mesh coarsened once (2h)");
   if (!coarser) return unavailable("the solve on the mesh coarsened once (2h) did not converge");
-  const std::optional<SolvedLevel<dim>> coarsest =
-      coarsened(4 * case_.mesh.size, coarser->mesh, coarser->velocity);
+  const std::optional<SolvedLevel<dim>> coarsest = coarsened(
+      4 * case_.mesh.size, coarser->mesh, coarser->velocity, "the mesh coarsened twice (4h)");
   if (!coarsest) return unavailable("the solve on the mesh coarsened twice (4h) did not converge");
   const Real change = load - coarser->load;
   const Real coarsest_change = coarser->load - coarsest->load;
@@ -310,7 +330,7 @@ coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<di
   estimate.discretisation_error = post::tail_beyond_refined(change, *ratio);
   const std::optional<SolvedLevel<dim>> doubled =
       level(doubled_regularisations(case_), coarser->mesh, coarser->velocity,
-            estimate.penalty_newton_iterations);
+            estimate.penalty_newton_iterations, "the regularisations doubled on 2h");
   if (!doubled) {
     estimate.unavailable =
         "the run with doubled regularisations (d, d_N, d_T, α) on 2h did not converge";
@@ -358,7 +378,8 @@ mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim
 template <int dim>
 post::LoadErrorEstimate
 load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,
-              Real run_load, bool mesh_from_case, bool converged, PhaseTimes& times) {
+              Real run_load, bool mesh_from_case, bool converged, PhaseTimes& times,
+              const IterationCallback& on_iteration) {
   std::string why = "solver.load_error = \"none\"";
   const solvers::LoadErrorMethod method =
       resolved_load_error_method(case_, mesh_from_case, dim, problem.plan().n_dofs(), why);
@@ -376,9 +397,10 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
           "any mesh");
     // Newton's levels where it reaches the problem (the load then its driven force at
     // u, as the levels'), else the run's own loop on each level and its reported load.
-    return no_tangent.empty() ? coarser_levels_estimate(case_, problem, u,
-                                                        post::driven_load(problem, u), false, times)
-                              : coarser_levels_estimate(case_, problem, u, run_load, true, times);
+    return no_tangent.empty()
+               ? coarser_levels_estimate(case_, problem, u, post::driven_load(problem, u), false,
+                                         times, on_iteration)
+               : coarser_levels_estimate(case_, problem, u, run_load, true, times, on_iteration);
   }
   if (!no_tangent.empty()) {
     // "auto" fell back to the refined estimate because the mesh has no coarser levels:
@@ -410,36 +432,41 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
   settle.coarse_levels = 0;
   settle.tolerance = case_.solver.tolerance;
   const bool do_settle = method == solvers::LoadErrorMethod::Refined;
-  post::LoadErrorEstimate estimate =
-      post::estimate_load_error(problem, u, *fine, parent, make_solve_plan(case_).linear,
-                                do_settle ? &settle : nullptr, times);
+  post::LoadErrorEstimate estimate = post::estimate_load_error(
+      problem, u, *fine, parent, make_solve_plan(case_).linear, do_settle ? &settle : nullptr,
+      times, level_stage(on_iteration, "the mesh refined once", fine_mesh));
   fine.reset(); // the refined mesh's problem is not needed past the adjoint
   estimate.method = do_settle ? "refined" : "linearized";
   if (estimate.error)
-    complete_estimate(case_, problem, u, mesh_from_case, fine_mesh, estimate, times);
+    complete_estimate(case_, problem, u, mesh_from_case, fine_mesh, estimate, times, on_iteration);
   return estimate;
 }
 
 template <int dim>
 post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<dim>& mesh,
-                                      const VectorX& u, bool mesh_from_case, PhaseTimes& times) {
+                                      const VectorX& u, bool mesh_from_case, PhaseTimes& times,
+                                      const IterationCallback& on_iteration) {
   assembly::FormingProblem<dim> problem(mesh, problem_settings(case_));
   const auto pressure = attached_pressure_multipliers(case_, mesh, problem);
   return load_error_of(case_, problem, u, post::driven_load(problem, u), mesh_from_case, true,
-                       times);
+                       times, on_iteration);
 }
 
 template mesh::RefinedMesh<2> estimate_mesh<2>(const io::Case&, const mesh::Mesh<2>&, bool);
 template mesh::RefinedMesh<3> estimate_mesh<3>(const io::Case&, const mesh::Mesh<3>&, bool);
 template post::LoadErrorEstimate load_error_of<2>(const io::Case&,
                                                   const assembly::FormingProblem<2>&,
-                                                  const VectorX&, Real, bool, bool, PhaseTimes&);
+                                                  const VectorX&, Real, bool, bool, PhaseTimes&,
+                                                  const IterationCallback&);
 template post::LoadErrorEstimate load_error_of<3>(const io::Case&,
                                                   const assembly::FormingProblem<3>&,
-                                                  const VectorX&, Real, bool, bool, PhaseTimes&);
+                                                  const VectorX&, Real, bool, bool, PhaseTimes&,
+                                                  const IterationCallback&);
 template post::LoadErrorEstimate load_error_on<2>(const io::Case&, const mesh::Mesh<2>&,
-                                                  const VectorX&, bool, PhaseTimes&);
+                                                  const VectorX&, bool, PhaseTimes&,
+                                                  const IterationCallback&);
 template post::LoadErrorEstimate load_error_on<3>(const io::Case&, const mesh::Mesh<3>&,
-                                                  const VectorX&, bool, PhaseTimes&);
+                                                  const VectorX&, bool, PhaseTimes&,
+                                                  const IterationCallback&);
 
 } // namespace formflow::app

@@ -52,12 +52,14 @@ mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim
 template <int dim>
 post::LoadErrorEstimate
 load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,
-              Real run_load, bool mesh_from_case, bool converged, PhaseTimes& times);
+              Real run_load, bool mesh_from_case, bool converged, PhaseTimes& times,
+              const IterationCallback& on_iteration = {});
 
 /// load_error_of for a converged solution `u` of `case_` on `mesh`, the problem built
 /// again (an adaptive run asks the full estimate of a cycle that ran with the cheap one).
 template <int dim>
 post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<dim>& mesh,
-                                      const VectorX& u, bool mesh_from_case, PhaseTimes& times);
+                                      const VectorX& u, bool mesh_from_case, PhaseTimes& times,
+                                      const IterationCallback& on_iteration = {});
 
 } // namespace formflow::app

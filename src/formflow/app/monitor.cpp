@@ -29,6 +29,11 @@ void Monitor::operator()(const solvers::IterationRecord& record) {
     std::fflush(out_);
     return;
   }
+  if (record.stage != stage_) {
+    stage_ = record.stage;
+    recent_changes_.clear();
+    fmt::print(out_, "  -- {}\n", stage_.empty() ? std::string("the run's solve") : stage_);
+  }
   elapsed_ += record.seconds;
   constexpr std::size_t window = 5;
   recent_changes_.push_back(record.relative_change);

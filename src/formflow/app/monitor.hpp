@@ -15,7 +15,9 @@ namespace formflow::app {
 /// last few iterations (one step's ratio is too noisy to extrapolate), and
 /// never exceeds what the iterations left before `max_iterations` would take. With
 /// `krylov` (an iterative back-end, solver.linear = "petsc") a last column shows the
-/// Krylov iterations of each step.
+/// Krylov iterations of each step. A record of another stage than the last (an error
+/// estimate's level, an adaptive cycle: IterationRecord::stage) is headed by a line
+/// naming it, and the time-left estimate restarts there.
 class Monitor {
 public:
   Monitor(std::FILE* out, Real tolerance, int max_iterations, bool krylov = false)
@@ -29,6 +31,7 @@ private:
   int max_iterations_;
   bool krylov_;
   std::deque<Real> recent_changes_; ///< the last few relative changes, oldest first
+  std::string stage_;               ///< the stage of the last record (empty: the run's solve)
   Real elapsed_ = 0.0;
 };
 

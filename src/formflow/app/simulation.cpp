@@ -303,7 +303,7 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
   // The load's error bar (docs/error-estimation.md): one adjoint solve on the mesh refined once.
   results.load_error =
       load_error_of(case_, *problem, outcome.velocity, results.pressure.ram_reaction,
-                    mesh_from_case, results.converged(), results.timing);
+                    mesh_from_case, results.converged(), results.timing, on_iteration);
   results.fields.cell_load_error = results.load_error.cell_indicators;
   if (estimate_condition)
     simulation.reciprocal_condition = condition_at(*problem, outcome.velocity);
@@ -314,6 +314,16 @@ void add_total(post::Results& results, Clock::time_point start) {
 }
 
 } // namespace
+
+IterationCallback with_stage(const IterationCallback& on_iteration, std::string stage) {
+  if (!on_iteration) return {};
+  return [on_iteration, stage = std::move(stage)](const solvers::IterationRecord& record) {
+    solvers::IterationRecord staged = record;
+    // A stage inside a stage (an adaptive cycle's error estimate) names both.
+    staged.stage = record.stage.empty() ? stage : stage + " · " + record.stage;
+    on_iteration(staged);
+  };
+}
 
 Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration,
                     bool estimate_condition) {

@@ -16,6 +16,13 @@ namespace formflow::app {
 /// Called once per nonlinear iteration with its record (for the monitor).
 using IterationCallback = std::function<void(const solvers::IterationRecord&)>;
 
+/// `on_iteration` with every record's `stage` set to `stage`, for a solve that is not
+/// the run's own (an error estimate's level, an adaptive cycle), after the stage a
+/// nested with_stage set ("adapt cycle 3, 2938 dofs · error estimate: ..."); empty if
+/// `on_iteration` is. The records reach the caller's callback, so a stop signal is
+/// honoured during those solves too.
+IterationCallback with_stage(const IterationCallback& on_iteration, std::string stage);
+
 /// One run's mesh and what was computed on it, of either dimension.
 ///
 /// Why a variant of meshes and not a Simulation<dim>: everything a run

@@ -144,11 +144,11 @@ weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const Ve
 }
 
 template <int dim>
-LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
-                                      const assembly::FormingProblem<dim>& fine,
-                                      const std::vector<Index>& parent,
-                                      solvers::LinearSolverKind kind,
-                                      const solvers::IterationControl* settle, PhaseTimes& times) {
+LoadErrorEstimate
+estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
+                    const assembly::FormingProblem<dim>& fine, const std::vector<Index>& parent,
+                    solvers::LinearSolverKind kind, const solvers::IterationControl* settle,
+                    PhaseTimes& times, const solvers::IterationObserver& on_iteration) {
   ScopedTimer timer(times, "error estimate");
   const assembly::ScatterPlan& plan = fine.plan();
   // 1. The coarse solution on the fine mesh, its prescribed values the fine ones.
@@ -180,8 +180,8 @@ LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coars
           return after;
         },
         false);
-    const solvers::SecantOutcome outcome =
-        solvers::newton_iteration(nonlinear, *settle_solver, *settle, {}, inner, &prolonged);
+    const solvers::SecantOutcome outcome = solvers::newton_iteration(
+        nonlinear, *settle_solver, *settle, on_iteration, inner, &prolonged);
     settle_iterations = static_cast<Index>(outcome.history.size());
     VectorX settled = outcome.velocity;
     fine.discretisation().owned_dofs().replicate(settled); // ghosted on several ranks
@@ -297,11 +297,13 @@ std::vector<Index> parent_cells(const mesh::Mesh<dim>& coarse, const mesh::Mesh<
 template LoadErrorEstimate
 estimate_load_error<2>(const assembly::FormingProblem<2>&, const VectorX&,
                        const assembly::FormingProblem<2>&, const std::vector<Index>&,
-                       solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&);
+                       solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&,
+                       const solvers::IterationObserver&);
 template LoadErrorEstimate
 estimate_load_error<3>(const assembly::FormingProblem<3>&, const VectorX&,
                        const assembly::FormingProblem<3>&, const std::vector<Index>&,
-                       solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&);
+                       solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&,
+                       const solvers::IterationObserver&);
 template LoadErrorEstimate weighted_residual_estimate<2>(const assembly::FormingProblem<2>&,
                                                          const VectorX&,
                                                          const assembly::FormingProblem<2>&,

@@ -9,6 +9,7 @@
 #include "formflow/solvers/linear_solver_kind.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -82,13 +83,15 @@ Real load_error_bound(Real refined_change, Real ratio, Real penalty_change);
 ///  4. discretisation_error = F_s |Σ η_K| / (1 − 2^{-r}) / height, r =
 ///     assumed_load_error_order (the caller may replace the ratio from a third
 ///     level and add the penalties' part: app/load_error.cpp).
-/// `parent` maps each fine cell to its coarse cell. Timed as "error estimate".
+/// `parent` maps each fine cell to its coarse cell. Timed as "error estimate". The
+/// settle's iterations go to `on_iteration` (a monitor; a stop signal's check).
 template <int dim>
-LoadErrorEstimate estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
-                                      const assembly::FormingProblem<dim>& fine,
-                                      const std::vector<Index>& parent,
-                                      solvers::LinearSolverKind kind,
-                                      const solvers::IterationControl* settle, PhaseTimes& times);
+LoadErrorEstimate
+estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
+                    const assembly::FormingProblem<dim>& fine, const std::vector<Index>& parent,
+                    solvers::LinearSolverKind kind, const solvers::IterationControl* settle,
+                    PhaseTimes& times,
+                    const std::function<void(const solvers::IterationRecord&)>& on_iteration = {});
 
 /// Steps 2 and 3 of estimate_load_error at a given fine field `fine_velocity` (whole
 /// on every rank; the settled ũ there): the adjoint at it, the weights and the cell

@@ -99,6 +99,11 @@ struct IterationRecord {
   /// Anderson acceleration: the difference columns mixed into the iterate this step
   /// started from (0: a plain step, the last step's result).
   int mixed_columns = 0;
+  /// Which solve the iteration belongs to when a run makes several: empty for the run's
+  /// own, else e.g. "error estimate: the mesh refined once, 88714 dofs" or "adapt cycle 3,
+  /// 2938 dofs" (app::with_stage), so that a monitor can say what is being solved
+  /// while the error estimate's levels run.
+  std::string stage = {};
 };
 
 } // namespace formflow::solvers

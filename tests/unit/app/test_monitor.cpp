@@ -63,5 +63,41 @@ TEST(Monitor, FastConvergenceKeepsItsOwnEstimate) {
   EXPECT_NEAR(std::stod(left.back()), 2.0, 1e-9);
 }
 
+TEST(Monitor, EachStageIsHeadedByItsNameAndRestartsTheEstimate) {
+  std::FILE* out = std::tmpfile();
+  Monitor monitor(out, 1e-4, 50);
+  const auto iterate = [&monitor](int iteration, Real change, const std::string& stage) {
+    solvers::IterationRecord record;
+    record.iteration = iteration;
+    record.relative_change = change;
+    record.seconds = 1.0;
+    record.stage = stage;
+    monitor(record);
+  };
+  iterate(1, 1e-1, "");
+  iterate(2, 1e-2, "");
+  iterate(1, 1e-1, "error estimate: the mesh refined once, 5042 dofs");
+  iterate(2, 1e-2, "error estimate: the mesh refined once, 5042 dofs");
+  iterate(1, 1e-1, "");
+  std::rewind(out);
+  std::vector<std::string> lines;
+  std::string line;
+  for (int c; (c = std::fgetc(out)) != EOF;) {
+    if (c != '\n') {
+      line += static_cast<char>(c);
+      continue;
+    }
+    lines.push_back(line);
+    line.clear();
+  }
+  std::fclose(out);
+  ASSERT_EQ(lines.size(), 7u);
+  EXPECT_EQ(lines[2], "  -- error estimate: the mesh refined once, 5042 dofs");
+  EXPECT_EQ(lines[5], "  -- the run's solve");
+  // The first line of a stage has no contraction to extrapolate from yet.
+  EXPECT_EQ(lines[3].substr(lines[3].size() - 1), "-");
+  EXPECT_EQ(lines[6].substr(lines[6].size() - 1), "-");
+}
+
 } // namespace
 } // namespace formflow::app
