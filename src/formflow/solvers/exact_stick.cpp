@@ -11,7 +11,7 @@ namespace formflow::solvers {
 
 StepCondensation::StepCondensation(std::vector<StepConstraint> constraints, Index n_free)
     : constraints_(std::move(constraints)), n_free_(n_free) {
-  for (const StepConstraint& c : constraints_)
+  for ([[maybe_unused]] const StepConstraint& c : constraints_)
     FF_ASSERT(c.rows.size() == c.coefficients.size(), "one coefficient per row");
 }
 
