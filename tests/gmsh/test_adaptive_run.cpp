@@ -136,6 +136,30 @@ TEST(AdaptiveRun, EndsOnTheEstimatesRefinedMeshWhenItsOwnErrorIsWithinTarget) {
             20 * case_.solver.tolerance);
 }
 
+TEST(AdaptiveRun, StopsWhenTheRegularisationsAloneExceedTheTarget) {
+  // d = 1e-2: the volumetric penalty's offset (0.036 here) is above a target of 1 % of
+  // the load (0.026), which no mesh lowers: the run stops on the first cycle whose
+  // estimate measured it, says so, and does not refine on to max_cycles.
+  io::Case case_ = two_cycles();
+  case_.penalty.d = 1e-2;
+  case_.adapt.target_error = 1e-2;
+  case_.adapt.max_cycles = 12;
+  case_.adapt.fraction = 0.5;
+  const post::Results results = app::simulate(case_).results;
+  ASSERT_TRUE(results.converged());
+  const post::AdaptRecord& record = results.adapt;
+  EXPECT_FALSE(record.reached_target);
+  EXPECT_EQ(record.stop.rfind("the regularisations' offset", 0), 0u) << record.stop;
+  EXPECT_LT(record.cycles.size(), 12u);
+  ASSERT_TRUE(results.load_error.penalty_change && results.load_error.error);
+  const Real offset = std::abs(*results.load_error.penalty_change);
+  const Real target = case_.adapt.target_error * std::abs(results.pressure.ram_reaction);
+  EXPECT_GE(offset, target);
+  // The bar holds the offset: it cannot be within the target either.
+  EXPECT_GE(*results.load_error.error, offset);
+  EXPECT_EQ(record.cycles.back().dofs, results.n_dofs) << "the results are the last cycle's";
+}
+
 TEST(AdaptiveRun, WithoutAdaptTheSummaryHasNoAdaptBlock) {
   io::Case case_;
   case_.process.ram = physics::RamCondition::Sticking;
