@@ -18,7 +18,9 @@ std::vector<CaseKey> adapt_keys() {
                       "cycles stop after the first, summary.json adapt.stop saying why")
           .doc("relative error of the load to reach: the cycles stop once the estimate of "
                "|p_h − p| (solver.load_error: \"refined\" here unless \"linearized\") is at most "
-               "this times |p_h|; 0: no adaptivity"),
+               "this times |p_h|, or once the regularisations' offset |p(2ε) − p(ε)| alone "
+               "is (no mesh lowers it: summary.json adapt.stop names the keys to lower); 0: no "
+               "adaptivity"),
       integer_key(
           "adapt.max_cycles", 8, [](auto& c) -> auto& { return c.adapt.max_cycles; })
           .at_least(1)
