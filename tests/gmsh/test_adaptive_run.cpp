@@ -151,6 +151,8 @@ TEST(AdaptiveRun, StopsWhenTheRegularisationsAloneExceedTheTarget) {
   const post::AdaptRecord& record = results.adapt;
   EXPECT_FALSE(record.reached_target);
   EXPECT_EQ(record.stop.rfind("the regularisations' offset", 0), 0u) << record.stop;
+  // And which to lower: d, ten times the others here, comes first.
+  EXPECT_NE(record.stop.find("doubled alone: penalty.d ("), std::string::npos) << record.stop;
   EXPECT_LT(record.cycles.size(), 12u);
   ASSERT_TRUE(results.load_error.penalty_change && results.load_error.error);
   const Real offset = std::abs(*results.load_error.penalty_change);

@@ -8,6 +8,7 @@
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/mesh/uniform_refinement.hpp"
+#include "formflow/physics/friction.hpp"
 #include "formflow/post/load_error_estimate.hpp"
 #include "formflow/solvers/forming_nonlinear_problem.hpp"
 #include "formflow/solvers/linear_solver.hpp"
@@ -16,8 +17,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <string_view>
 
 namespace formflow::app {
 
@@ -139,18 +142,34 @@ std::optional<SolvedLevel<dim>> solved_by_own_loop(const io::Case& case_, mesh::
   return level;
 }
 
-/// The case with every regularisation doubled: the penalties d (incompressibility,
-/// also the mixed formulation's), d_N (contact) and d_T (friction), and the paper's
-/// power law's rate sensitivity α, which makes σ_p = A ε̄̇^α "nearly perfectly
-/// plastic" (SPEC §1): its limit α → 0 is the rigid-plastic problem the slip-line
-/// referees solve. Other laws' rate dependence is the material's, not doubled.
+/// The regularisations the estimate doubles: the penalties d (incompressibility, also
+/// the mixed formulation's), d_N (contact) and d_T (friction), and the paper's power
+/// law's rate sensitivity α, which makes σ_p = A ε̄̇^α "nearly perfectly plastic"
+/// (SPEC §1): its limit α → 0 is the rigid-plastic problem the slip-line referees
+/// solve. Other laws' rate dependence is the material's, not doubled.
+constexpr std::array<std::string_view, 4> regularisation_keys = {"penalty.d", "penalty.d_n",
+                                                                 "friction.d_t", "material.alpha"};
+
+/// Whether `key` (of regularisation_keys) regularises `case_`: α only for the power law.
+bool regularises(const io::Case& case_, std::string_view key) {
+  return key != "material.alpha" || case_.material.law == physics::PiecewisePower::name;
+}
+
+/// `case_` with the regularisation `key` doubled.
+io::Case with_doubled(const io::Case& case_, std::string_view key) {
+  io::Case doubled = case_;
+  if (key == "penalty.d") doubled.penalty.d *= 2;
+  if (key == "penalty.d_n") doubled.penalty.d_n *= 2;
+  if (key == "friction.d_t") doubled.friction.d_t *= 2;
+  if (key == "material.alpha") doubled.material.parameters_of<physics::PiecewisePower>().alpha *= 2;
+  return doubled;
+}
+
+/// The case with every regularisation doubled.
 io::Case doubled_regularisations(const io::Case& case_) {
   io::Case doubled = case_;
-  doubled.penalty.d *= 2;
-  doubled.penalty.d_n *= 2;
-  doubled.friction.d_t *= 2;
-  if (doubled.material.law == physics::PiecewisePower::name)
-    doubled.material.parameters_of<physics::PiecewisePower>().alpha *= 2;
+  for (std::string_view key : regularisation_keys)
+    if (regularises(case_, key)) doubled = with_doubled(doubled, key);
   return doubled;
 }
 
@@ -452,6 +471,31 @@ post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<di
                        times, on_iteration);
 }
 
+template <int dim>
+std::vector<std::pair<std::string, Real>> regularisation_offsets(const io::Case& case_,
+                                                                 const mesh::Mesh<dim>& mesh,
+                                                                 const VectorX& u, Real load) {
+  std::vector<std::pair<std::string, Real>> offsets;
+  for (std::string_view key : regularisation_keys) {
+    // d_T regularises nothing without friction.
+    if (!regularises(case_, key) ||
+        (key == "friction.d_t" && physics::friction_vanishes(case_.friction)))
+      continue;
+    Index iterations = 0;
+    if (const std::optional<Real> doubled =
+            solved_load(with_doubled(case_, key), mesh, u, iterations, IterationCallback{}))
+      offsets.emplace_back(std::string(key), *doubled - load);
+  }
+  std::stable_sort(offsets.begin(), offsets.end(), [](const auto& a, const auto& b) {
+    return std::abs(a.second) > std::abs(b.second);
+  });
+  return offsets;
+}
+
+template std::vector<std::pair<std::string, Real>>
+regularisation_offsets<2>(const io::Case&, const mesh::Mesh<2>&, const VectorX&, Real);
+template std::vector<std::pair<std::string, Real>>
+regularisation_offsets<3>(const io::Case&, const mesh::Mesh<3>&, const VectorX&, Real);
 template mesh::RefinedMesh<2> estimate_mesh<2>(const io::Case&, const mesh::Mesh<2>&, bool);
 template mesh::RefinedMesh<3> estimate_mesh<3>(const io::Case&, const mesh::Mesh<3>&, bool);
 template post::LoadErrorEstimate load_error_of<2>(const io::Case&,
