@@ -2,6 +2,7 @@
 // The adaptive cycles: solve, estimate, mark, remesh, interpolate, solve again.
 #include "formflow/app/adaptive_run.hpp"
 
+#include "formflow/app/estimate_levels.hpp"
 #include "formflow/app/load_error.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/fem/nodal_interpolation.hpp"

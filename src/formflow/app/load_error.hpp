@@ -59,17 +59,6 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
               Real run_load, bool mesh_from_case, bool converged, PhaseTimes& times,
               const IterationCallback& on_iteration = {});
 
-/// Which regularisation the load's offset |p(2ε) − p(ε)| comes from: for each key the
-/// estimate doubles (penalty.d, penalty.d_n, friction.d_t with friction, the power law's
-/// material.alpha), the load on `mesh` with that one doubled, solved by Newton from the
-/// converged `u`, minus `load` (u's). Largest |offset| first; a solve that did not
-/// converge is left out. For a message that says what to lower: the offsets of one
-/// key at a time do not add up to the doubled-together offset exactly.
-template <int dim>
-std::vector<std::pair<std::string, Real>> regularisation_offsets(const io::Case& case_,
-                                                                 const mesh::Mesh<dim>& mesh,
-                                                                 const VectorX& u, Real load);
-
 /// load_error_of for a converged solution `u` of `case_` on `mesh`, the problem built
 /// again (an adaptive run asks the full estimate of a cycle that ran with the cheap one).
 template <int dim>

@@ -98,7 +98,7 @@ estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& 
 /// indicators of `coarse` (each fine cell's share to its `parent`), their sum in
 /// enriched_change. With both fields converged solutions the sum is the solved
 /// difference p_fine − p_coarse (the residuals vanish to δ), so the "coarser" estimate
-/// gets its cell indicators from the run's mesh over 2h (app/load_error.cpp).
+/// gets its cell indicators from the run's mesh over 2h (app/coarser_levels_estimate.cpp).
 /// `error` is left unset; `unavailable` says why when no adjoint could be solved.
 template <int dim>
 LoadErrorEstimate
