@@ -218,6 +218,7 @@ CheapEstimateScale calibrate_on_first_cycle(const io::Case& cheap, const Simulat
 Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_iteration) {
   FF_ASSERT(case_.adapt.enabled(), "adaptivity asked for");
   const auto run_start = Clock::now();
+  mesh::preload_gmsh_meshers(); // every cycle after the first remeshes with Gmsh
   io::Case run = case_;
   run.adapt.target_error = 0; // each cycle is a plain run
   run.adapt.cycle_target = case_.adapt.target_error;

@@ -40,6 +40,13 @@ struct GmshMeshers {
 /// it cannot be loaded: the build is incomplete, not the user's input.
 const GmshMeshers& gmsh_meshers();
 
+/// Starts loading the module on a thread of its own, once per process, and returns at
+/// once: a run that will need Gmsh later (an adaptive run's first remesh) finds it
+/// loaded, the dynamic loader's 0.4 s spent beside the first solve instead of in front
+/// of the remesh. A failure there is left for gmsh_meshers() to report when called.
+/// The process waits for the load at exit.
+void preload_gmsh_meshers();
+
 /// The name of the module's one exported function, which returns its GmshMeshers.
 inline constexpr const char* gmsh_meshers_symbol = "formflow_gmsh_meshers";
 

@@ -6,6 +6,8 @@
 
 #include <dlfcn.h>
 
+#include <future>
+
 namespace formflow::mesh {
 
 namespace {
@@ -34,6 +36,18 @@ GmshMeshers load() {
 const GmshMeshers& gmsh_meshers() {
   static const GmshMeshers meshers = load();
   return meshers;
+}
+
+void preload_gmsh_meshers() {
+  // The static's initialisation is thread-safe: a gmsh_meshers() call on another thread
+  // meanwhile waits for this load instead of starting its own. The future's destructor
+  // (at exit) joins the thread, so the process never unloads under a running dlopen.
+  static const std::future<void> loading = std::async(std::launch::async, [] {
+    try {
+      gmsh_meshers();
+    } catch (...) { // reported again, with its message, by the caller's own gmsh_meshers()
+    }
+  });
 }
 
 } // namespace formflow::mesh

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 
 namespace formflow::post {
 
@@ -73,7 +74,8 @@ template <int dim>
 LoadErrorEstimate
 weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
                            const assembly::FormingProblem<dim>& fine, const VectorX& fine_velocity,
-                           const std::vector<Index>& parent, solvers::LinearSolverKind kind) {
+                           const std::vector<Index>& parent, solvers::LinearSolverKind kind,
+                           solvers::LinearSolver* analysed) {
   const assembly::ScatterPlan& plan = fine.plan();
   const std::vector<Real> thresholds = fine.friction_thresholds(fine_velocity);
 
@@ -88,8 +90,17 @@ weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const Ve
                        "(the mixed formulation) couples the tangent through a contact pressure "
                        "whose transpose is not implemented");
   const VectorX gradient = reaction_gradient(fine, tangent, coupling);
-  auto solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
-  if (!solver->analyze(tangent.matrix) || !solver->factorize(tangent.matrix))
+  std::unique_ptr<solvers::LinearSolver> own_solver;
+  solvers::LinearSolver* solver = analysed;
+  if (solver) {
+    solver->set_solve_tolerance(0.0); // an iterative back-end's own tolerance again
+  } else {
+    own_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
+    solver = own_solver.get();
+    if (!solver->analyze(tangent.matrix))
+      return unavailable("the tangent on the refined mesh is not positive definite");
+  }
+  if (!solver->factorize(tangent.matrix))
     return unavailable("the tangent on the refined mesh is not positive definite");
   // Distributed (issue 20): the gradient is summed (ghosted), the tangent and coupling
   // are shares; the adjoint comes back ghosted and is made whole for the weights.
@@ -159,9 +170,10 @@ estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& 
   // near rate-insensitive law makes the one-step linearisation miss most of the change.
   Index settle_iterations = 0;
   VectorX refined_velocity; // the settled field, kept for an adaptive run's last step
+  std::unique_ptr<solvers::LinearSolver> settle_solver; // analysed there: the adjoint's too
   if (settle) {
     PhaseTimes inner;
-    auto settle_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
+    settle_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
     solvers::FormingNonlinearProblem<dim> nonlinear(fine);
     const Real coarse_load = driven_load(coarse, u);
     Real previous_load = std::numeric_limits<Real>::quiet_NaN();
@@ -188,7 +200,8 @@ estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& 
     if (settled.allFinite()) prolonged = std::move(settled);
     refined_velocity = prolonged;
   }
-  LoadErrorEstimate estimate = weighted_residual_estimate(coarse, u, fine, prolonged, parent, kind);
+  LoadErrorEstimate estimate =
+      weighted_residual_estimate(coarse, u, fine, prolonged, parent, kind, settle_solver.get());
   if (!estimate.unavailable.empty()) return estimate;
   estimate.settle_iterations = static_cast<int>(settle_iterations);
   estimate.refined_velocity = std::move(refined_velocity);
@@ -304,16 +317,12 @@ estimate_load_error<3>(const assembly::FormingProblem<3>&, const VectorX&,
                        const assembly::FormingProblem<3>&, const std::vector<Index>&,
                        solvers::LinearSolverKind, const solvers::IterationControl*, PhaseTimes&,
                        const solvers::IterationObserver&);
-template LoadErrorEstimate weighted_residual_estimate<2>(const assembly::FormingProblem<2>&,
-                                                         const VectorX&,
-                                                         const assembly::FormingProblem<2>&,
-                                                         const VectorX&, const std::vector<Index>&,
-                                                         solvers::LinearSolverKind);
-template LoadErrorEstimate weighted_residual_estimate<3>(const assembly::FormingProblem<3>&,
-                                                         const VectorX&,
-                                                         const assembly::FormingProblem<3>&,
-                                                         const VectorX&, const std::vector<Index>&,
-                                                         solvers::LinearSolverKind);
+template LoadErrorEstimate weighted_residual_estimate<2>(
+    const assembly::FormingProblem<2>&, const VectorX&, const assembly::FormingProblem<2>&,
+    const VectorX&, const std::vector<Index>&, solvers::LinearSolverKind, solvers::LinearSolver*);
+template LoadErrorEstimate weighted_residual_estimate<3>(
+    const assembly::FormingProblem<3>&, const VectorX&, const assembly::FormingProblem<3>&,
+    const VectorX&, const std::vector<Index>&, solvers::LinearSolverKind, solvers::LinearSolver*);
 template Real driven_load<2>(const assembly::FormingProblem<2>&, const VectorX&);
 template Real driven_load<3>(const assembly::FormingProblem<3>&, const VectorX&);
 template std::vector<Index> parent_cells<2>(const mesh::Mesh<2>&, const mesh::Mesh<2>&);

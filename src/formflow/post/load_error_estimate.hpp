@@ -6,6 +6,7 @@
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/core/timer.hpp"
 #include "formflow/post/results.hpp"
+#include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/linear_solver_kind.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
@@ -100,11 +101,14 @@ estimate_load_error(const assembly::FormingProblem<dim>& coarse, const VectorX& 
 /// difference p_fine − p_coarse (the residuals vanish to δ), so the "coarser" estimate
 /// gets its cell indicators from the run's mesh over 2h (app/coarser_levels_estimate.cpp).
 /// `error` is left unset; `unavailable` says why when no adjoint could be solved.
+/// `analysed`: a solver of `kind` whose analysis is of fine's pattern (the settle's), used
+/// for the adjoint instead of a new one (its ordering is not computed again); null: new.
 template <int dim>
 LoadErrorEstimate
 weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const VectorX& u,
                            const assembly::FormingProblem<dim>& fine, const VectorX& fine_velocity,
-                           const std::vector<Index>& parent, solvers::LinearSolverKind kind);
+                           const std::vector<Index>& parent, solvers::LinearSolverKind kind,
+                           solvers::LinearSolver* analysed = nullptr);
 
 /// The load Q(u)/height of `problem` at `u`: the driven rows of the Newton assembly's
 /// internal force, as the estimate's weighted residuals count it.
