@@ -5,6 +5,7 @@
 #pragma once
 
 #include "formflow/assembly/assembly_sink.hpp"
+#include "formflow/assembly/cell_schedule.hpp"
 #include "formflow/assembly/discretisation.hpp"
 #include "formflow/assembly/terms/term_set.hpp"
 
@@ -34,16 +35,22 @@ template <int dim> struct AssemblyRequest {
   bool every_cell = false;
 };
 
+/// One thread's working memory of the cell loop (assembler.cpp).
+template <int dim> struct CellScratch;
+
 template <int dim> class Assembler {
 public:
   /// `temperatures`: hot forming's T per full-rule point (cell-major), read at every pass;
   /// empty: the isothermal law (the path of every isothermal run, unchanged).
   Assembler(const Discretisation<dim>& discretisation, const physics::FlowLaw& law,
-            const TermSet<dim>& terms, const std::vector<Real>& temperatures)
-      : discretisation_(discretisation), law_(law), terms_(terms), temperatures_(temperatures) {}
+            const TermSet<dim>& terms, const std::vector<Real>& temperatures);
 
   /// Runs `request.pass` over every cell into `sink` (null for Power) and, for Power,
-  /// adds the terms' powers to `powers`.
+  /// adds the terms' powers to `powers`. The cells go in the order of a CellSchedule
+  /// (assembly/cell_schedule.hpp), its blocks on compute_threads() threads when the sink
+  /// takes concurrent cells: the same results, bit for bit, on any number of threads.
+  /// The Power pass (a sum over the cells) and a distributed run's every-cell pass go
+  /// one cell after the other in mesh order.
   void run(const AssemblyRequest<dim>& request, AssemblySink* sink,
            PowerTerms* powers = nullptr) const;
   /// σ_H of every cell at the velocity `u`, from the pressure term.
@@ -54,10 +61,15 @@ public:
   std::vector<Real> dissipation_density(const VectorX& u) const;
 
 private:
+  void assemble_cell(CellScratch<dim>& scratch, Index cell, const AssemblyRequest<dim>& request,
+                     AssemblySink* sink, PowerTerms* powers,
+                     UnsymmetricTangent<dim>* coupling) const;
+
   const Discretisation<dim>& discretisation_;
   const physics::FlowLaw& law_;
   const TermSet<dim>& terms_;
   const std::vector<Real>& temperatures_;
+  CellSchedule schedule_; ///< of the assembled cells
 };
 
 } // namespace formflow::assembly

@@ -20,6 +20,9 @@ public:
   virtual void add_load(Index cell, const VectorX& local) = 0;
   /// The local internal force K_e(u) u_e − F_e of `cell`.
   virtual void add_force(Index cell, const CellVector& local) = 0;
+  /// Whether cells that share no node may be added from several threads at once (the
+  /// sink writes only entries of the cell's own dofs, or of the cell itself).
+  virtual bool concurrent() const { return false; }
 };
 
 /// The serial sink: matrices into the free system (prescribed columns to the rhs,
@@ -52,6 +55,9 @@ public:
       internal_force_->template segment<dim>(fem::dof_of<dim>(mesh_.cells(a, cell), 0)) +=
           local.template segment<dim>(a * dim);
   }
+  /// A cell's matrix entries, right-hand side, prescribed loads, reaction rows and forces
+  /// are all at its own dofs (ScatterPlan::scatter).
+  bool concurrent() const override { return true; }
 
 private:
   const mesh::Mesh<dim>& mesh_;

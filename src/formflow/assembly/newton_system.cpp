@@ -205,6 +205,7 @@ public:
                  .dot(local.template segment<dim>(a * dim));
     per_cell_[cell] += sum;
   }
+  bool concurrent() const override { return true; } // each cell its own entry
 
 private:
   const mesh::Mesh<dim>& mesh_;

@@ -4,10 +4,12 @@
 // they are the Newton driver's state, read by assemble_newton, not assembly).
 #include "formflow/solvers/newton_duals.hpp"
 
+#include "formflow/core/parallel_tasks.hpp"
 #include "formflow/physics/kinematics.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace formflow::solvers {
 
@@ -97,6 +99,25 @@ void for_each_point_law(const assembly::FormingProblem<dim>& problem, F&& f) {
   });
 }
 
+/// Cells per task of the point loops below (whose cells are independent: each writes
+/// its own points' duals, so any split gives the same values).
+constexpr Index cells_per_task = 512;
+
+/// body(first, last) over consecutive ranges of the mesh's cells, on compute_threads().
+/// A distributed run's ranks already take the machine's cores: one thread each.
+template <int dim>
+void for_cell_ranges(const assembly::FormingProblem<dim>& problem,
+                     const std::function<void(Index, Index)>& body) {
+  const Index n_cells = problem.mesh().n_cells();
+  const Index n_tasks = std::max<Index>(1, (n_cells + cells_per_task - 1) / cells_per_task);
+  const std::size_t threads =
+      problem.discretisation().owned_dofs().distributed() ? 1 : compute_threads();
+  run_tasks(static_cast<std::size_t>(n_tasks), threads, [&](std::size_t task) {
+    const Index first = static_cast<Index>(task) * cells_per_task;
+    body(first, std::min(n_cells, first + cells_per_task));
+  });
+}
+
 } // namespace
 
 template <int dim>
@@ -111,47 +132,49 @@ void update_duals(const assembly::FormingProblem<dim>& problem, const VectorX& u
     update_slip_duals(problem, u, step, primal, all_duals.slip);
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(problem.mesh().n_cells()) * n_q);
-  fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
-  typename fem::CellValues<dim>::Gradients coordinates, velocities, step_velocities,
-      next_velocities;
   // One law dispatch for the whole loop: it evaluates the law twice per point.
   for_each_point_law(problem, [&](const auto& law_of) {
-    for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
-      if (!problem.discretisation().assembles(cell)) continue; // another rank's (its tangent)
-      problem.gather(cell, &u, coordinates, velocities);
-      problem.gather(cell, &step, coordinates, step_velocities);
-      problem.gather(cell, &next, coordinates, next_velocities);
-      problem.load_cell(cell, values, nullptr);
-      for (int q = 0; q < n_q; ++q) {
-        const auto& law = law_of(cell, q);
-        const Tensor3 next_dev =
-            physics::deviator(problem.strain_rate_at(values, next_velocities, q));
-        const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
-        Tensor3& w = duals[cell * n_q + q];
-        // Where the law is linear the dual stress is just ν ė: nothing to gain.
-        if (law.is_linear_at(next_eps)) {
-          w = law.secant_viscosity(next_eps) * next_dev;
-          continue;
+    for_cell_ranges(problem, [&](Index first, Index last) {
+      fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
+      typename fem::CellValues<dim>::Gradients coordinates, velocities, step_velocities,
+          next_velocities;
+      for (Index cell = first; cell < last; ++cell) {
+        if (!problem.discretisation().assembles(cell)) continue; // another rank's (its tangent)
+        problem.gather(cell, &u, coordinates, velocities);
+        problem.gather(cell, &step, coordinates, step_velocities);
+        problem.gather(cell, &next, coordinates, next_velocities);
+        problem.load_cell(cell, values, nullptr);
+        for (int q = 0; q < n_q; ++q) {
+          const auto& law = law_of(cell, q);
+          const Tensor3 next_dev =
+              physics::deviator(problem.strain_rate_at(values, next_velocities, q));
+          const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
+          Tensor3& w = duals[cell * n_q + q];
+          // Where the law is linear the dual stress is just ν ė: nothing to gain.
+          if (law.is_linear_at(next_eps)) {
+            w = law.secant_viscosity(next_eps) * next_dev;
+            continue;
+          }
+          const Tensor3 dev = physics::deviator(problem.strain_rate_at(values, velocities, q));
+          const Real eps = std::sqrt(2.0 / 3.0 * dev.squaredNorm());
+          const auto [nu, nu_derivative] = law.secant_viscosity_and_derivative(eps);
+          if (primal) w = nu * dev;
+          if (eps > 0) {
+            // Newton on ε̄̇ w − σ_p(ε̄̇) ė = 0 at (u, w) along the step:
+            // w + δw = ν ė + ν ė(δu) + (σ_p′ ė − w) dε̄̇/ε̄̇.
+            const Tensor3 step_dev =
+                physics::deviator(problem.strain_rate_at(values, step_velocities, q));
+            const Real rate_change = 2.0 / 3.0 * dev.cwiseProduct(step_dev).sum() / eps; // dε̄̇
+            w = nu * (dev + step_dev) + (nu_derivative * dev - w) * (rate_change / eps);
+          } else {
+            w = law.secant_viscosity(next_eps) * next_dev;
+          }
+          const Real cap = law.yield_stress(next_eps);
+          const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
+          if (size > cap) w *= cap / size;
         }
-        const Tensor3 dev = physics::deviator(problem.strain_rate_at(values, velocities, q));
-        const Real eps = std::sqrt(2.0 / 3.0 * dev.squaredNorm());
-        const auto [nu, nu_derivative] = law.secant_viscosity_and_derivative(eps);
-        if (primal) w = nu * dev;
-        if (eps > 0) {
-          // Newton on ε̄̇ w − σ_p(ε̄̇) ė = 0 at (u, w) along the step:
-          // w + δw = ν ė + ν ė(δu) + (σ_p′ ė − w) dε̄̇/ε̄̇.
-          const Tensor3 step_dev =
-              physics::deviator(problem.strain_rate_at(values, step_velocities, q));
-          const Real rate_change = 2.0 / 3.0 * dev.cwiseProduct(step_dev).sum() / eps; // dε̄̇
-          w = nu * (dev + step_dev) + (nu_derivative * dev - w) * (rate_change / eps);
-        } else {
-          w = law.secant_viscosity(next_eps) * next_dev;
-        }
-        const Real cap = law.yield_stress(next_eps);
-        const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
-        if (size > cap) w *= cap / size;
       }
-    }
+    });
   });
 }
 
@@ -162,34 +185,37 @@ void secant_duals(const assembly::FormingProblem<dim>& problem, const VectorX* p
   const int n_q = problem.full_rule().size();
   std::vector<Tensor3>& duals = all_duals.stress;
   duals.resize(static_cast<std::size_t>(problem.mesh().n_cells()) * n_q);
-  fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
-  typename fem::CellValues<dim>::Gradients coordinates, previous_velocities, next_velocities;
   for_each_point_law(problem, [&](const auto& law_of) {
-    for (Index cell = 0; cell < problem.mesh().n_cells(); ++cell) {
-      if (!problem.discretisation().assembles(cell)) continue; // another rank's (its tangent)
-      if (previous) problem.gather(cell, previous, coordinates, previous_velocities);
-      problem.gather(cell, &next, coordinates, next_velocities);
-      problem.load_cell(cell, values, nullptr);
-      for (int q = 0; q < n_q; ++q) {
-        const auto& law = law_of(cell, q);
-        const Tensor3 next_dev =
-            physics::deviator(problem.strain_rate_at(values, next_velocities, q));
-        const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
-        Tensor3& w = duals[cell * n_q + q];
-        if (law.is_linear_at(next_eps)) { // linear law: w = ν ė exactly
-          w = law.secant_viscosity(next_eps) * next_dev;
-          continue;
+    for_cell_ranges(problem, [&](Index first, Index last) {
+      fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
+      typename fem::CellValues<dim>::Gradients coordinates, previous_velocities, next_velocities;
+      for (Index cell = first; cell < last; ++cell) {
+        if (!problem.discretisation().assembles(cell)) continue; // another rank's (its tangent)
+        if (previous) problem.gather(cell, previous, coordinates, previous_velocities);
+        problem.gather(cell, &next, coordinates, next_velocities);
+        problem.load_cell(cell, values, nullptr);
+        for (int q = 0; q < n_q; ++q) {
+          const auto& law = law_of(cell, q);
+          const Tensor3 next_dev =
+              physics::deviator(problem.strain_rate_at(values, next_velocities, q));
+          const Real next_eps = std::sqrt(2.0 / 3.0 * next_dev.squaredNorm());
+          Tensor3& w = duals[cell * n_q + q];
+          if (law.is_linear_at(next_eps)) { // linear law: w = ν ė exactly
+            w = law.secant_viscosity(next_eps) * next_dev;
+            continue;
+          }
+          const Real previous_eps =
+              previous ? physics::equivalent_strain_rate(
+                             problem.strain_rate_at(values, previous_velocities, q))
+                       : problem.settings().initial_rate;
+          // The stress the secant solve balanced, ν(uⁿ⁻¹) ė(uⁿ), capped to the yield surface.
+          w = law.secant_viscosity(previous_eps) * next_dev;
+          const Real cap = law.yield_stress(next_eps);
+          const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
+          if (size > cap) w *= cap / size;
         }
-        const Real previous_eps = previous ? physics::equivalent_strain_rate(problem.strain_rate_at(
-                                                 values, previous_velocities, q))
-                                           : problem.settings().initial_rate;
-        // The stress the secant solve balanced, ν(uⁿ⁻¹) ė(uⁿ), capped to the yield surface.
-        w = law.secant_viscosity(previous_eps) * next_dev;
-        const Real cap = law.yield_stress(next_eps);
-        const Real size = std::sqrt(2.0 / 3.0 * w.squaredNorm());
-        if (size > cap) w *= cap / size;
       }
-    }
+    });
   });
   // The slip direction the secant solve used, u_T(uⁿ)/s(uⁿ⁻¹), capped to |λ| ≤ 1.
   // The constant-viscosity solve had no friction (τ_f(0) = 0): λ = 0 there.
