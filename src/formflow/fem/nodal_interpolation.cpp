@@ -2,6 +2,7 @@
 // Point location by buckets of cell bounding boxes and inverse isoparametric maps.
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/core/error.hpp"
+#include "formflow/core/parallel_tasks.hpp"
 #include "formflow/fem/lagrange.hpp"
 
 #include <Eigen/LU>
@@ -84,6 +85,9 @@ template <int dim> std::vector<CellBox<dim>> cell_boxes(const mesh::Mesh<dim>& m
 
 } // namespace point_location
 
+/// Target nodes per task of the location loop (a few milliseconds of work).
+constexpr Index nodes_per_task = 4096;
+
 template <int dim>
 VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& source_values,
                                 int components, const mesh::Mesh<dim>& target) {
@@ -126,59 +130,65 @@ VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& so
   }
 
   VectorX result(target.n_nodes() * components);
-  InverseMapWork<dim> work;
-  for (Index node = 0; node < target.n_nodes(); ++node) {
-    const Point<dim> x = target.nodes.col(node);
-    std::array<int, dim> index;
-    for (int d = 0; d < dim; ++d) index[d] = bucket_of(x, d);
-    // The cell containing x, or the one it lies least outside of: first in its
-    // bucket, then (a boundary node of a curved outline) in every cell.
-    Index best_cell = -1;
-    Point<dim> best_xi;
-    Real best_outside = std::numeric_limits<Real>::max();
-    // First the cells whose box holds x (no other cell can contain it); the rest only
-    // when none does (a boundary node just outside a curved outline: the least outside).
-    bool boxes_only = true;
-    auto try_cells = [&](const std::vector<Index>& cells) {
-      for (Index cell : cells) {
-        if (boxes_only && !boxes[static_cast<std::size_t>(cell)].contains(x)) continue;
-        Real outside = 0;
-        const Point<dim> xi = reference_coordinates(source, cell, x, outside, work);
-        if (outside < best_outside) best_outside = outside, best_cell = cell, best_xi = xi;
-        if (outside <= 1e-9) return;
-      }
-    };
-    try_cells(buckets[flat(index)]);
-    if (best_outside > 1e-9) {
-      boxes_only = false;
-      try_cells(buckets[flat(index)]);
-    }
-    if (best_outside > 1e-9) {
-      // The neighbouring buckets (a node just outside a curved source outline).
-      std::array<int, dim> offset;
-      offset.fill(-1);
-      while (true) {
-        std::array<int, dim> neighbour;
-        bool inside = true;
-        for (int d = 0; d < dim; ++d) {
-          neighbour[d] = index[d] + offset[d];
-          inside = inside && neighbour[d] >= 0 && neighbour[d] < n_buckets;
+  // Each target node is located on its own: ranges of nodes on the machine's threads.
+  const Index n_tasks = (target.n_nodes() + nodes_per_task - 1) / nodes_per_task;
+  run_tasks(static_cast<std::size_t>(n_tasks), compute_threads(), [&](std::size_t task) {
+    InverseMapWork<dim> work;
+    const Index first = static_cast<Index>(task) * nodes_per_task;
+    const Index last = std::min(target.n_nodes(), first + nodes_per_task);
+    for (Index node = first; node < last; ++node) {
+      const Point<dim> x = target.nodes.col(node);
+      std::array<int, dim> index;
+      for (int d = 0; d < dim; ++d) index[d] = bucket_of(x, d);
+      // The cell containing x, or the one it lies least outside of: first in its
+      // bucket, then (a boundary node of a curved outline) in every cell.
+      Index best_cell = -1;
+      Point<dim> best_xi;
+      Real best_outside = std::numeric_limits<Real>::max();
+      // First the cells whose box holds x (no other cell can contain it); the rest only
+      // when none does (a boundary node just outside a curved outline: the least outside).
+      bool boxes_only = true;
+      auto try_cells = [&](const std::vector<Index>& cells) {
+        for (Index cell : cells) {
+          if (boxes_only && !boxes[static_cast<std::size_t>(cell)].contains(x)) continue;
+          Real outside = 0;
+          const Point<dim> xi = reference_coordinates(source, cell, x, outside, work);
+          if (outside < best_outside) best_outside = outside, best_cell = cell, best_xi = xi;
+          if (outside <= 1e-9) return;
         }
-        if (inside) try_cells(buckets[flat(neighbour)]);
-        int d = 0;
-        while (d < dim && ++offset[d] > 1) offset[d] = -1, ++d;
-        if (d == dim) break;
+      };
+      try_cells(buckets[flat(index)]);
+      if (best_outside > 1e-9) {
+        boxes_only = false;
+        try_cells(buckets[flat(index)]);
+      }
+      if (best_outside > 1e-9) {
+        // The neighbouring buckets (a node just outside a curved source outline).
+        std::array<int, dim> offset;
+        offset.fill(-1);
+        while (true) {
+          std::array<int, dim> neighbour;
+          bool inside = true;
+          for (int d = 0; d < dim; ++d) {
+            neighbour[d] = index[d] + offset[d];
+            inside = inside && neighbour[d] >= 0 && neighbour[d] < n_buckets;
+          }
+          if (inside) try_cells(buckets[flat(neighbour)]);
+          int d = 0;
+          while (d < dim && ++offset[d] > 1) offset[d] = -1, ++d;
+          if (d == dim) break;
+        }
+      }
+      FF_ASSERT(best_cell >= 0, "every target node lies near some source cell");
+      tabulate_shape<dim>(source.order, best_xi, work.values, work.gradients);
+      for (int c = 0; c < components; ++c) {
+        Real value = 0;
+        for (int a = 0; a < source.nodes_per_cell(); ++a)
+          value += work.values[a] * source_values[source.cells(a, best_cell) * components + c];
+        result[node * components + c] = value;
       }
     }
-    FF_ASSERT(best_cell >= 0, "every target node lies near some source cell");
-    tabulate_shape<dim>(source.order, best_xi, work.values, work.gradients);
-    for (int c = 0; c < components; ++c) {
-      Real value = 0;
-      for (int a = 0; a < source.nodes_per_cell(); ++a)
-        value += work.values[a] * source_values[source.cells(a, best_cell) * components + c];
-      result[node * components + c] = value;
-    }
-  }
+  });
   return result;
 }
 
