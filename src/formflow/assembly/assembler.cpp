@@ -98,6 +98,12 @@ void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink
   const std::size_t threads = own_threads ? compute_threads() : 1;
   for (const std::vector<std::vector<Index>>& blocks : schedule_.phases) {
     const std::size_t n_blocks = blocks.size();
+    if (threads == 1 || n_blocks == 1) { // one thread: the points straight into the coupling
+      CellScratch<dim> scratch(discretisation_, n_local, n_q);
+      for (const std::vector<Index>& block : blocks)
+        for (const Index cell : block) assemble(scratch, cell, request.coupling);
+      continue;
+    }
     std::vector<UnsymmetricTangent<dim>> block_coupling(request.coupling ? n_blocks : 0);
     run_tasks(n_blocks, threads, [&](std::size_t block) {
       CellScratch<dim> scratch(discretisation_, n_local, n_q);
