@@ -4,6 +4,7 @@
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/openmp_team_limit.hpp"
 #include "formflow/solvers/permuted_lower.hpp"
+#include "formflow/solvers/supernodal_solve.hpp"
 
 #include <cholmod.h>
 
@@ -60,10 +61,6 @@ public:
     common_.final_asis = 1; // keep the supernodal factor as it is
   }
   ~CholmodSolver() override {
-    cholmod_free_dense(&solution_, &common_);
-    cholmod_free_dense(&work_y_, &common_);
-    cholmod_free_dense(&work_e_, &common_);
-    cholmod_free_dense(&rhs_, &common_);
     cholmod_free_factor(&factor_, &common_);
     cholmod_finish(&common_);
   }
@@ -73,7 +70,6 @@ public:
   bool analyze(const assembly::SparseMatrix& lower) override {
     const OpenMpTeamLimit team(cholmod_team_threads);
     cholmod_free_factor(&factor_, &common_);
-    cholmod_free_dense(&rhs_, &common_); // sized for the pattern's rows
     size_ = {};
     factorized_ = false;
     if (!lower.isCompressed()) return false;
@@ -104,6 +100,7 @@ public:
     }
     // Set by cholmod_analyze: nnz(tril(A)), nnz(L), and the flops of one factorisation.
     size_ = FactorSize{common_.anz, common_.lnz, common_.fl};
+    triangular_ = SupernodalSolve(*factor_);
     return true;
   }
   bool factorize(const assembly::SparseMatrix& lower) override {
@@ -117,20 +114,13 @@ public:
   }
   bool solve(const VectorX& rhs, VectorX& solution) override {
     if (!factorized_ || rhs.size() != static_cast<Eigen::Index>(factor_->n)) return false;
-    const OpenMpTeamLimit team(cholmod_team_threads);
-    const BlasThreadLimit blas(blas_threads());
     const Index n = static_cast<Index>(factor_->n);
-    if (!rhs_) rhs_ = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &common_);
-    if (!rhs_) return false;
-    Real* permuted_rhs = static_cast<Real*>(rhs_->x);
+    permuted_rhs_.resize(n);
     const Index* order = order_.data();
-    for (Index k = 0; k < n; ++k) permuted_rhs[k] = rhs[order[k]];
-    if (!cholmod_solve2(CHOLMOD_A, factor_, rhs_, nullptr, &solution_, nullptr, &work_y_, &work_e_,
-                        &common_))
-      return false;
-    const Real* permuted_solution = static_cast<const Real*>(solution_->x);
+    for (Index k = 0; k < n; ++k) permuted_rhs_[k] = rhs[order[k]];
+    triangular_.solve(*factor_, permuted_rhs_.data());
     solution.resize(n);
-    for (Index k = 0; k < n; ++k) solution[order[k]] = permuted_solution[k];
+    for (Index k = 0; k < n; ++k) solution[order[k]] = permuted_rhs_[k];
     return true;
   }
   std::string name() const override { return "cholmod-supernodal"; }
@@ -148,10 +138,8 @@ private:
   std::vector<Index> order_; ///< P: new row k is A's row order_[k]
   FactorSize size_;
   bool factorized_ = false;
-  cholmod_dense* rhs_ = nullptr; ///< the permuted right-hand side
-  cholmod_dense* solution_ = nullptr;
-  cholmod_dense* work_y_ = nullptr; ///< cholmod_solve2's workspace, kept between solves
-  cholmod_dense* work_e_ = nullptr;
+  SupernodalSolve triangular_;     ///< the solves with factor_ (on the machine's threads)
+  std::vector<Real> permuted_rhs_; ///< P b, then P x
 };
 
 } // namespace
