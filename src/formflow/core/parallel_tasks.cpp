@@ -16,7 +16,9 @@
 namespace formflow {
 
 std::size_t compute_threads() {
-  std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  // The machine's count once (glibc reads it from /sys at each call); the cap each time.
+  static const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());
+  std::size_t threads = hardware;
   if (const char* text = std::getenv("OMP_NUM_THREADS")) {
     // OpenMP's syntax allows a list ("4,2": nested levels); the first level is the cap.
     std::size_t cap = 0;
