@@ -90,45 +90,60 @@ weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const Ve
                        "(the mixed formulation) couples the tangent through a contact pressure "
                        "whose transpose is not implemented");
   const VectorX gradient = reaction_gradient(fine, tangent, coupling);
-  std::unique_ptr<solvers::LinearSolver> own_solver;
-  solvers::LinearSolver* solver = analysed;
-  if (solver) {
-    solver->set_solve_tolerance(0.0); // an iterative back-end's own tolerance again
-  } else {
-    own_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
-    solver = own_solver.get();
-    if (!solver->analyze(tangent.matrix))
-      return unavailable("the tangent on the refined mesh is not positive definite");
-  }
-  if (!solver->factorize(tangent.matrix))
-    return unavailable("the tangent on the refined mesh is not positive definite");
   // Distributed (issue 20): the gradient is summed (ghosted), the tangent and coupling
   // are shares; the adjoint comes back ghosted and is made whole for the weights.
   const assembly::OwnedDofs& owned = fine.discretisation().owned_dofs();
-  VectorX adjoint;
-  if (coupling.empty()) {
-    if (!solver->solve_whole(gradient, adjoint) || !solver->finite(adjoint))
-      return unavailable("the adjoint solve on the refined mesh failed");
-  } else {
-    // (T + Nᵀ) z = g: T symmetric, so only N is transposed.
-    const solvers::CouplingProduct transposed = [&](const VectorX& x, VectorX& y) {
-      const VectorX full_x = plan.expand(x, VectorX::Zero(plan.n_dofs()));
-      VectorX full_y = VectorX::Zero(plan.n_dofs());
-      fine.apply_coupling_transpose(coupling, full_x, full_y);
-      for (Index dof = 0; dof < plan.n_dofs(); ++dof)
-        if (const Index free = plan.free_index(dof); free >= 0) y[free] += full_y[dof];
-    };
-    solvers::ShareSum add_up_shares;
-    solvers::GhostedDot dot;
-    if (owned.distributed()) {
-      add_up_shares = [&owned](VectorX& values) { owned.sum_shares(values); };
-      dot = [&owned](const VectorX& a, const VectorX& b) { return owned.dot(a, b); };
-    }
+  // (T + Nᵀ) z = g by GMRES preconditioned with a factor of T (T symmetric: only N is
+  // transposed; without N the factor of T itself solves it exactly).
+  const solvers::CouplingProduct transposed = [&](const VectorX& x, VectorX& y) {
+    if (coupling.empty()) return;
+    const VectorX full_x = plan.expand(x, VectorX::Zero(plan.n_dofs()));
+    VectorX full_y = VectorX::Zero(plan.n_dofs());
+    fine.apply_coupling_transpose(coupling, full_x, full_y);
+    for (Index dof = 0; dof < plan.n_dofs(); ++dof)
+      if (const Index free = plan.free_index(dof); free >= 0) y[free] += full_y[dof];
+  };
+  solvers::ShareSum add_up_shares;
+  solvers::GhostedDot dot;
+  if (owned.distributed()) {
+    add_up_shares = [&owned](VectorX& values) { owned.sum_shares(values); };
+    dot = [&owned](const VectorX& a, const VectorX& b) { return owned.dot(a, b); };
+  }
+  // `exact`: the factor is of T(ũ) itself, not of a nearby tangent.
+  const auto solve_adjoint = [&](solvers::LinearSolver& factorized, bool exact, VectorX& adjoint) {
+    if (coupling.empty() && exact)
+      return factorized.solve_whole(gradient, adjoint) && factorized.finite(adjoint);
     const solvers::KrylovOutcome krylov = solvers::solve_coupled_tangent(
-        tangent.matrix, transposed, *solver, gradient, adjoint, adjoint_tolerance,
+        tangent.matrix, transposed, factorized, gradient, adjoint, adjoint_tolerance,
         max_adjoint_krylov_iterations, add_up_shares, dot);
-    if (!krylov.converged || !std::isfinite(owned.dot(adjoint, adjoint)))
-      return unavailable("GMRES on the transposed tangent did not converge");
+    return krylov.converged && std::isfinite(owned.dot(adjoint, adjoint));
+  };
+  VectorX adjoint;
+  // The settle's solver still holds the factor of its last Newton step, one step from ũ:
+  // GMRES with it as the preconditioner of the exact J(ũ) saves the factorisation at ũ
+  // (measured on the adaptive ram's split meshes: 10–24 Krylov iterations instead of
+  // 4–7, all converged; a factorisation costs tens of them). If it does not converge,
+  // the tangent at ũ is factorised as without a settle. CHOLMOD's only: a direct factor
+  // (an iterative back-end's preconditioner is set up for its own matrix).
+  bool solved = false;
+  if (analysed && kind == solvers::LinearSolverKind::Cholmod) {
+    analysed->set_solve_tolerance(0.0); // an iterative back-end's own tolerance again
+    solved = solve_adjoint(*analysed, false, adjoint);
+  }
+  if (!solved) {
+    std::unique_ptr<solvers::LinearSolver> own_solver;
+    solvers::LinearSolver* solver = analysed;
+    if (!solver) {
+      own_solver = solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower);
+      solver = own_solver.get();
+      if (!solver->analyze(tangent.matrix))
+        return unavailable("the tangent on the refined mesh is not positive definite");
+    }
+    if (!solver->factorize(tangent.matrix))
+      return unavailable("the tangent on the refined mesh is not positive definite");
+    if (!solve_adjoint(*solver, true, adjoint))
+      return unavailable(coupling.empty() ? "the adjoint solve on the refined mesh failed"
+                                          : "GMRES on the transposed tangent did not converge");
   }
   owned.replicate(adjoint);
   if (!adjoint.allFinite()) return unavailable("the adjoint is not finite");
