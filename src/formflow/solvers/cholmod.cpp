@@ -49,7 +49,8 @@ cholmod_sparse lower_view(const assembly::SparseMatrix& matrix) {
 /// Supernodal LLᵀ of P A Pᵀ with CHOLMOD's default fill-reducing order P (AMD, METIS
 /// where AMD fills much; then a weighted postorder). The permuted lower triangle is
 /// formed here (solvers/permuted_lower.hpp) and factorised in its natural order, which
-/// CHOLMOD takes as it is; solves permute the right-hand side and the solution.
+/// CHOLMOD takes as it is. Solves permute the right-hand side and the solution, and
+/// sweep CHOLMOD's factor on two threads (solvers/supernodal_solve.hpp).
 class CholmodSolver final : public LinearSolver {
 public:
   CholmodSolver() {

@@ -144,7 +144,8 @@ std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind, MatrixSt
 /// Whether this build has the back-end `kind` (PETSc only with FORMFLOW_WITH_PETSC).
 bool is_built(LinearSolverKind kind);
 
-/// CHOLMOD supernodal LLᵀ through Eigen's CholmodSupport (BLAS-3 on supernodes).
+/// CHOLMOD supernodal LLᵀ (BLAS-3 on supernodes) of the matrix in CHOLMOD's fill-reducing
+/// order, formed once per factorisation by a gather (solvers/cholmod.cpp).
 std::unique_ptr<LinearSolver> make_cholmod_solver();
 
 /// UMFPACK LU through Eigen's UmfPackSupport, for general (indefinite, e.g. the
