@@ -96,12 +96,18 @@ void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink
   // A distributed run's ranks already take the machine's cores: one thread each.
   const bool own_threads = sink->concurrent() && !discretisation_.owned_dofs().distributed();
   const std::size_t threads = own_threads ? compute_threads() : 1;
+  // Where each block's coupling points start (UnsymmetricTangent::phase_starts).
+  const auto point_count = [&] { return request.coupling ? request.coupling->cells.size() : 0; };
   for (const std::vector<std::vector<Index>>& blocks : schedule_.phases) {
     const std::size_t n_blocks = blocks.size();
+    std::vector<std::size_t> starts{point_count()};
     if (threads == 1 || n_blocks == 1) { // one thread: the points straight into the coupling
       CellScratch<dim> scratch(discretisation_, n_local, n_q);
-      for (const std::vector<Index>& block : blocks)
+      for (const std::vector<Index>& block : blocks) {
         for (const Index cell : block) assemble(scratch, cell, request.coupling);
+        starts.push_back(point_count());
+      }
+      if (request.coupling) request.coupling->phase_starts.push_back(std::move(starts));
       continue;
     }
     std::vector<UnsymmetricTangent<dim>> block_coupling(request.coupling ? n_blocks : 0);
@@ -117,7 +123,9 @@ void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink
       whole.coefficients.insert(whole.coefficients.end(), part.coefficients.begin(),
                                 part.coefficients.end());
       whole.rows.insert(whole.rows.end(), part.rows.begin(), part.rows.end());
+      starts.push_back(point_count());
     }
+    whole.phase_starts.push_back(std::move(starts));
   }
 }
 

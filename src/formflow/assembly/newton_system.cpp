@@ -9,6 +9,7 @@
 //    full-ε̇ a-form's ν′ ε̇_V part (terms/viscous_term.cpp) and dτ_f of a
 //    pressure-dependent threshold (terms/friction_term.cpp).
 #include "formflow/assembly/forming_problem.hpp"
+#include "formflow/core/parallel_tasks.hpp"
 
 #include "formflow/core/error.hpp"
 #include "formflow/fem/dof_map.hpp"
@@ -72,27 +73,43 @@ template <int dim>
 void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling,
                                          const VectorX& x_free, VectorX& y_free) const {
   const int n_local = coupling.n_local, n_nodes = mesh_.nodes_per_cell();
-  std::vector<Index> rows(n_local);
-  CellVector x_local(n_local);
-  Index last_cell = -1;
-  for (std::size_t k = 0; k < coupling.cells.size(); ++k) {
-    const Index cell = coupling.cells[k];
-    if (cell != last_cell) { // points of one cell are stored together
-      for (int a = 0; a < n_nodes; ++a)
-        for (int i = 0; i < dim; ++i) {
-          const Index row = plan().free_index(fem::dof_of<dim>(mesh_.cells(a, cell), i));
-          rows[a * dim + i] = row;
-          x_local[a * dim + i] = row >= 0 ? x_free[row] : 0.0;
-        }
-      last_cell = cell;
+  // The points [first, last): each adds to the rows of its own cell's dofs.
+  const auto apply_points = [&](std::size_t first, std::size_t last) {
+    std::vector<Index> rows(n_local);
+    CellVector x_local(n_local);
+    Index last_cell = -1;
+    for (std::size_t k = first; k < last; ++k) {
+      const Index cell = coupling.cells[k];
+      if (cell != last_cell) { // points of one cell are stored together
+        for (int a = 0; a < n_nodes; ++a)
+          for (int i = 0; i < dim; ++i) {
+            const Index row = plan().free_index(fem::dof_of<dim>(mesh_.cells(a, cell), i));
+            rows[a * dim + i] = row;
+            x_local[a * dim + i] = row >= 0 ? x_free[row] : 0.0;
+          }
+        last_cell = cell;
+      }
+      const Real* divergence = coupling.rows.data() + 2 * k * n_local;
+      const Real* deviator = divergence + n_local;
+      Real g = 0.0;
+      for (int l = 0; l < n_local; ++l) g += deviator[l] * x_local[l];
+      g *= coupling.coefficients[k];
+      for (int l = 0; l < n_local; ++l)
+        if (rows[l] >= 0) y_free[rows[l]] += g * divergence[l];
     }
-    const Real* divergence = coupling.rows.data() + 2 * k * n_local;
-    const Real* deviator = divergence + n_local;
-    Real g = 0.0;
-    for (int l = 0; l < n_local; ++l) g += deviator[l] * x_local[l];
-    g *= coupling.coefficients[k];
-    for (int l = 0; l < n_local; ++l)
-      if (rows[l] >= 0) y_free[rows[l]] += g * divergence[l];
+  };
+  // By the assembly's phases, each phase's blocks at the same time (they share no dof:
+  // every entry of y gets its points' terms in the same order as in one sweep).
+  const bool by_blocks = !coupling.phase_starts.empty() &&
+                         coupling.phase_starts.back().back() == coupling.cells.size() &&
+                         !discretisation_->owned_dofs().distributed();
+  if (by_blocks) {
+    const std::size_t threads = compute_threads();
+    for (const std::vector<std::size_t>& starts : coupling.phase_starts)
+      run_tasks(starts.size() - 1, threads,
+                [&](std::size_t block) { apply_points(starts[block], starts[block + 1]); });
+  } else {
+    apply_points(0, coupling.cells.size());
   }
   if (!coupling.has_friction) return;
 

@@ -164,6 +164,23 @@ TEST(CellSchedule, AssemblyIsTheSameBitForBitOnOneThreadAndOnSeveral) {
   EXPECT_EQ(one.coupling.rows, several.coupling.rows);
   EXPECT_FALSE(one.coupling.cells.empty());
   EXPECT_TRUE(one.coupling.has_friction);
+  // N x by the blocks on one thread, on two, and in one sweep without the blocks: every
+  // entry gets its points' terms in the same order, so the same bits.
+  ASSERT_FALSE(several.coupling.phase_starts.empty());
+  const Index n_free = extrusion.problem->plan().n_free();
+  const VectorX x = random_vector(n_free, 17);
+  const auto product = [&](const assembly::UnsymmetricTangent<2>& coupling, const char* threads) {
+    const ThreadCap cap(threads);
+    VectorX y = VectorX::Zero(n_free);
+    extrusion.problem->apply_coupling(coupling, x, y);
+    return y;
+  };
+  assembly::UnsymmetricTangent<2> one_sweep = several.coupling;
+  one_sweep.phase_starts.clear();
+  const VectorX reference = product(one_sweep, "2");
+  EXPECT_EQ(product(several.coupling, "1"), reference);
+  EXPECT_EQ(product(several.coupling, "2"), reference);
+  EXPECT_GT(reference.norm(), 0.0);
 }
 
 } // namespace

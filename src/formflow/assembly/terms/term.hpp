@@ -100,8 +100,14 @@ template <int dim> struct UnsymmetricTangent {
   std::vector<Real> rows;                 ///< per kept point: divergence row, then ė(u) row
   std::vector<Point<dim>> threshold_slip; ///< per Γ3 point (contact_state() order)
   bool has_friction = false;              ///< some threshold_slip ≠ 0
+  /// The assembly's cell schedule (assembly/cell_schedule.hpp) over the kept points: for
+  /// each phase, where each of its blocks' points start, then the phase's end. Blocks of
+  /// one phase share no dof, so their products may run at the same time. Empty: the
+  /// points were kept in one sweep (no schedule).
+  std::vector<std::vector<std::size_t>> phase_starts;
   void clear() {
     cells.clear(), coefficients.clear(), rows.clear(), threshold_slip.clear(), has_friction = false;
+    phase_starts.clear();
   }
   bool empty() const { return cells.empty() && !has_friction; }
 };
