@@ -29,6 +29,12 @@ const OpenBlasThreads& openblas_threads() {
   return functions;
 }
 
+/// Looked up when the library loads, not at the first factorisation: dlsym waits for
+/// the dynamic loader's lock, which Gmsh's module, loaded on another thread while the
+/// first cycle solves (mesh::preload_gmsh_meshers), holds for its 0.35 s of
+/// relocations; the first factorisation of an adaptive run sat that long in dlsym.
+[[maybe_unused]] const OpenBlasThreads& looked_up_at_load = openblas_threads();
+
 } // namespace
 
 BlasThreadLimit::BlasThreadLimit(int threads) {

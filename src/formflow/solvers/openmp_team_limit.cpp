@@ -11,6 +11,14 @@ namespace {
 /// The innermost live limit of this thread; 0: none (the library's own team size).
 thread_local unsigned team_limit_of_this_thread = 0;
 
+using GompParallel = void (*)(void (*)(void*), void*, unsigned, unsigned);
+
+/// libgomp's own GOMP_parallel (the next definition in the lookup order), looked up when
+/// the library loads: a dlsym at the first parallel region could wait for the loader's
+/// lock behind a module loaded on another thread (see blas_thread_limit.cpp).
+const GompParallel libgomp_parallel =
+    reinterpret_cast<GompParallel>(dlsym(RTLD_NEXT, "GOMP_parallel"));
+
 } // namespace
 
 OpenMpTeamLimit::OpenMpTeamLimit(unsigned threads) : previous_(team_limit_of_this_thread) {
@@ -29,8 +37,7 @@ OpenMpTeamLimit::~OpenMpTeamLimit() {
 /// and a hidden definition could not interpose on CHOLMOD's reference.
 extern "C" __attribute__((visibility("default"))) void
 GOMP_parallel(void (*function)(void*), void* data, unsigned threads, unsigned flags) {
-  using Entry = void (*)(void (*)(void*), void*, unsigned, unsigned);
-  static const Entry libgomp_parallel = reinterpret_cast<Entry>(dlsym(RTLD_NEXT, "GOMP_parallel"));
+  using formflow::solvers::libgomp_parallel;
   const unsigned limit = formflow::solvers::team_limit_of_this_thread;
   if (limit != 0 && (threads == 0 || threads > limit)) threads = limit;
   if (libgomp_parallel) {

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
-// run_tasks: every task once, on several threads, the first failure rethrown after all.
+// run_tasks: every task once, on several threads, the first failure rethrown after all;
+// the helpers are the process's, and a call while they are taken runs alone.
 #include "formflow/core/parallel_tasks.hpp"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -48,6 +51,42 @@ TEST(ParallelTasks, AFailureIsRethrownAndNoTaskStartsAfterIt) {
                              if (task == failing) throw std::runtime_error("failing task");
                            }),
                  std::runtime_error);
+}
+
+TEST(ParallelTasks, TheHelpersAreTheProcesssNotOnePerCall) {
+  // Over many calls, the threads that ran tasks are the caller and at most
+  // hardware − 1 helpers: the same ones each time, none started per call.
+  start_task_helpers();
+  std::mutex lock;
+  std::set<std::thread::id> seen;
+  for (int call = 0; call < 50; ++call)
+    run_tasks(16, 8, [&](std::size_t) {
+      std::this_thread::sleep_for(std::chrono::microseconds(50));
+      const std::lock_guard<std::mutex> guard(lock);
+      seen.insert(std::this_thread::get_id());
+    });
+  EXPECT_LE(seen.size(), std::max(1u, std::thread::hardware_concurrency()));
+  EXPECT_EQ(seen.count(std::this_thread::get_id()), 1u);
+}
+
+TEST(ParallelTasks, ACallInsideATaskOrBesideAnotherRunsItsTasksToo) {
+  // Inside a task the helpers are taken: the inner call runs alone, and returns.
+  std::vector<std::atomic<int>> inner(8 * 13);
+  run_tasks(8, 4, [&](std::size_t outer) {
+    run_tasks(13, 4, [&](std::size_t task) { ++inner[outer * 13 + task]; });
+  });
+  for (const auto& count : inner) EXPECT_EQ(count.load(), 1);
+  // Two threads calling at once: each call runs every one of its tasks once.
+  std::vector<std::atomic<int>> first(200), second(200);
+  std::thread other([&] {
+    for (int repeat = 0; repeat < 20; ++repeat)
+      run_tasks(10, 2, [&](std::size_t task) { ++second[repeat * 10 + task]; });
+  });
+  for (int repeat = 0; repeat < 20; ++repeat)
+    run_tasks(10, 2, [&](std::size_t task) { ++first[repeat * 10 + task]; });
+  other.join();
+  for (const auto& count : first) EXPECT_EQ(count.load(), 1);
+  for (const auto& count : second) EXPECT_EQ(count.load(), 1);
 }
 
 TEST(ParallelTasks, OmpNumThreadsCapsTheComputeThreads) {
