@@ -2,6 +2,7 @@
 // The adaptive cycles: solve, estimate, mark, remesh, interpolate, solve again.
 #include "formflow/app/adaptive_run.hpp"
 
+#include "formflow/app/cheap_cycles.hpp"
 #include "formflow/app/estimate_levels.hpp"
 #include "formflow/app/load_error.hpp"
 #include "formflow/core/error.hpp"
@@ -140,28 +141,6 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   return last;
 }
 
-/// What turns an intermediate cycle's cheap estimate into a prediction of the full
-/// one (docs/error-estimation.md, "Adaptivity", cheap cycles). The linearised change
-/// p_{h/2} − p_h (the adjoint at the prolonged solution, no settle: one factorisation
-/// on the refined mesh instead of 5–9 Newton steps there) misses most of the settled
-/// change for a nearly rate-insensitive law, but by a similar factor from mesh to
-/// mesh; the last full estimate's settled/linearised ratio scales it. The prediction
-/// only decides *when* to pay for the full estimate and marks cells; every stop is
-/// decided by a full estimate.
-struct CheapEstimateScale {
-  Real settled_per_linearised = 0.0; ///< 0: none (every cycle then gets the full estimate)
-  Real ratio = 0.5;                  ///< the tail ratio q of the last full estimate
-  Real regularisations = 0.0;        ///< |p(2ε) − p(ε)| of the last full estimate with one
-  bool calibrated() const { return settled_per_linearised > 0.0; }
-  /// From a full estimate and the linearised change of the same solution.
-  void update(const post::LoadErrorEstimate& full, Real linearised_change) {
-    const Real scale = full.enriched_change / linearised_change;
-    settled_per_linearised = std::isfinite(scale) && scale > 0.0 ? scale : 0.0;
-    ratio = full.ratio;
-    if (full.penalty_change) regularisations = std::abs(*full.penalty_change);
-  }
-};
-
 /// The case of an intermediate cycle: the linearised estimate, indicators only.
 io::Case cheap_cycle_case(const io::Case& run) {
   io::Case cheap = run;
@@ -170,39 +149,21 @@ io::Case cheap_cycle_case(const io::Case& run) {
   return cheap;
 }
 
-/// For a cycle that ran with the cheap estimate: its predicted full estimate, and
-/// whether that (or its refined mesh's own error) is within the target, so that the
-/// full estimate must decide. Writes the prediction into `entry`.
-bool predicts_target(const CheapEstimateScale& scale, const post::Results& results, Real target,
-                     post::AdaptCycle& entry) {
-  const Real change = scale.settled_per_linearised * results.load_error.enriched_change;
-  const Real q = scale.ratio;
-  entry.estimate = post::discretisation_tail(change, q) + scale.regularisations;
-  entry.estimate_predicted = true;
-  const Real load = results.pressure.ram_reaction;
-  const Real refined_error = post::tail_beyond_refined(change, q) + scale.regularisations;
-  return *entry.estimate <= target * std::abs(load) ||
-         refined_error <= target * std::abs(load + change);
-}
-
-/// Replaces a cheap cycle's estimate by the full one (`run`'s) on the same solution and
-/// recalibrates `scale` with the pair.
-void estimate_fully(const io::Case& run, Simulation& simulation, CheapEstimateScale& scale,
+/// Replaces a cheap cycle's estimate by the full one (`run`'s) on the same solution.
+void estimate_fully(const io::Case& run, Simulation& simulation,
                     const IterationCallback& on_iteration) {
   post::Results& results = simulation.results;
-  const Real linearised_change = results.load_error.enriched_change;
   results.load_error = load_error_on<2>(run, simulation.plane_mesh(), results.fields.velocity,
                                         false, results.timing, on_iteration);
   results.fields.cell_load_error = results.load_error.cell_indicators;
-  if (results.load_error.error) scale.update(results.load_error, linearised_change);
 }
 
 /// Cycle 0 ran with the full estimate: its linearised change on the same solution
 /// calibrates the cheap cycles that follow.
-CheapEstimateScale calibrate_on_first_cycle(const io::Case& cheap, const Simulation& simulation) {
-  CheapEstimateScale scale;
+CheapCycles calibrate_on_first_cycle(const io::Case& cheap, const Simulation& simulation) {
+  CheapCycles plan;
   const post::Results& results = simulation.results;
-  if (!results.converged() || !results.load_error.error) return scale;
+  if (!results.converged() || !results.load_error.error) return plan;
   PhaseTimes times; // its time is in the cycle's total
   const post::LoadErrorEstimate linearised = std::visit(
       [&](const auto& mesh) {
@@ -210,8 +171,8 @@ CheapEstimateScale calibrate_on_first_cycle(const io::Case& cheap, const Simulat
       },
       simulation.mesh);
   if (linearised.cell_indicators.size() > 0)
-    scale.update(results.load_error, linearised.enriched_change);
-  return scale;
+    plan.calibrate(results.load_error, linearised.enriched_change);
+  return plan;
 }
 
 } // namespace
@@ -227,10 +188,11 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   io::Case run = case_;
   run.adapt.target_error = 0; // each cycle is a plain run
   run.adapt.cycle_target = case_.adapt.target_error;
-  // The stops are decided by the full ("refined") estimate. solver.load_error =
-  // "linearized" asks for cheap intermediate cycles (step 2c of docs/error-estimation.md:
-  // measured faster on the sticking ram, much slower on Hill's wedge, so not the default).
-  const bool cheap_cycles = case_.solver.load_error == solvers::LoadErrorMethod::Linearized;
+  // The stops are decided by the full ("refined") estimate. The cycles before the first
+  // one that may stop are cheap (step 2c of docs/error-estimation.md, with its endgame:
+  // 25–50 % faster on the sticking ram and Hill's 15° wedge, as fast on the 30° wedge);
+  // solver.load_error = "refined" asks for the full estimate on every cycle.
+  const bool cheap_cycles = case_.solver.load_error != solvers::LoadErrorMethod::Refined;
   run.solver.load_error = solvers::LoadErrorMethod::Refined;
   const post::AdaptSettings& adapt = case_.adapt;
   post::AdaptRecord record;
@@ -245,8 +207,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   Simulation simulation = simulate(run, staged); // cycle 0: the case's mesh
   // Later cycles mark with the cheap estimate; the full one only where it may stop.
   const io::Case cheap = cheap_cycle_case(run);
-  CheapEstimateScale scale =
-      cheap_cycles ? calibrate_on_first_cycle(cheap, simulation) : CheapEstimateScale{};
+  CheapCycles plan = cheap_cycles ? calibrate_on_first_cycle(cheap, simulation) : CheapCycles{};
   bool cheap_cycle = false;
   for (int cycle = 0;; ++cycle) {
     const post::Results& results = simulation.results;
@@ -273,12 +234,21 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     // (and the last cycle, whatever stops it) gets the full estimate, which decides.
     bool fully_estimated = !cheap_cycle;
     const auto estimate_fully_once = [&] {
-      if (!fully_estimated) estimate_fully(run, simulation, scale, staged);
+      if (!fully_estimated) estimate_fully(run, simulation, staged);
       fully_estimated = true;
       entry.estimate = results.load_error.error;
       entry.estimate_predicted = false;
     };
-    if (!cheap_cycle || predicts_target(scale, results, adapt.target_error, entry)) {
+    bool may_stop = !cheap_cycle;
+    if (cheap_cycle) {
+      const CheapCycles::Prediction prediction = plan.predict(
+          results.load_error.enriched_change, results.pressure.ram_reaction, adapt.target_error);
+      entry.estimate = prediction.estimate;
+      entry.estimate_predicted = true;
+      may_stop = prediction.may_stop;
+      if (may_stop) plan.prediction_called_for_full_estimate();
+    }
+    if (may_stop) {
       estimate_fully_once();
       if (!results.load_error.error) {
         finish("no error estimate: " + results.load_error.unavailable);
@@ -361,7 +331,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     cycle_clock.stamp(entry, results);
     record.cycles.push_back(entry);
     cycle_clock = CycleClock{};
-    cheap_cycle = scale.calibrated();
+    cheap_cycle = plan.next_cycle_cheap();
     staged = cycle_stage(cycle + 1, &next);
     simulation = simulate_from<2>(cheap_cycle ? cheap : run, std::move(next), start, staged);
 #else
