@@ -148,6 +148,11 @@ bool is_built(LinearSolverKind kind);
 /// order, formed once per factorisation by a gather (solvers/cholmod.cpp).
 std::unique_ptr<LinearSolver> make_cholmod_solver();
 
+/// How many CHOLMOD analyses so far were taken from the process's last two (a new
+/// solver given a pattern analysed before gets that analysis: order, symbolic factor,
+/// solve tree), not computed again.
+std::size_t cholmod_analyses_reused();
+
 /// UMFPACK LU through Eigen's UmfPackSupport, for general (indefinite, e.g. the
 /// saddle-point) matrices: unlike the CHOLMOD solver it takes the *full* matrix
 /// (both triangles) in analyze/factorize.

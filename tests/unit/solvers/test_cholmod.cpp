@@ -121,6 +121,42 @@ TEST(Cholmod, RefactorisesWithTheAnalysedPattern) {
   EXPECT_LT(residual.norm() / rhs.norm(), 1e-10); // as above
 }
 
+TEST(Cholmod, ANewSolverTakesAPatternsKeptAnalysisAndSolvesTheSame) {
+  // A pattern analysed once is not analysed again by a later solver: it takes the kept
+  // order and symbolic factor, so its factor, and every solve, is the same to the bit
+  // as that of a solver analysing afresh (same order, same operations).
+  const SparseMatrix first = spd_test_matrix(17); // sizes no other test analyses
+  SparseMatrix second = first;                    // the same pattern, other values (still SPD: +I)
+  for (Index k = 0; k < second.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator entry(second, k); entry; ++entry)
+      if (entry.row() == entry.col()) entry.valueRef() += 1.0;
+  const VectorX rhs = VectorX::LinSpaced(first.rows(), -1.0, 2.0);
+  auto analysing = solvers::make_cholmod_solver();
+  ASSERT_TRUE(analysing->analyze(first) && analysing->factorize(second));
+  VectorX fresh;
+  ASSERT_TRUE(analysing->solve(rhs, fresh));
+  const std::size_t reused_before = solvers::cholmod_analyses_reused();
+  auto reusing = solvers::make_cholmod_solver();
+  ASSERT_TRUE(reusing->analyze(second));
+  EXPECT_EQ(solvers::cholmod_analyses_reused(), reused_before + 1);
+  EXPECT_EQ(reusing->factor_size().factor_nonzeros, analysing->factor_size().factor_nonzeros);
+  ASSERT_TRUE(reusing->factorize(second));
+  VectorX kept;
+  ASSERT_TRUE(reusing->solve(rhs, kept));
+  EXPECT_EQ(kept, fresh);
+  // Another pattern is analysed, and solved, on its own.
+  const SparseMatrix other = spd_test_matrix(19);
+  auto third = solvers::make_cholmod_solver();
+  ASSERT_TRUE(third->analyze(other) && third->factorize(other));
+  EXPECT_EQ(solvers::cholmod_analyses_reused(), reused_before + 1);
+  VectorX x;
+  const VectorX b = VectorX::Ones(other.rows());
+  ASSERT_TRUE(third->solve(b, x));
+  // As in SolvesAnSpdSystemToSmallResidual: condition ≲ 1e3, residual ≈ ε·cond.
+  const VectorX residual = other.selfadjointView<Eigen::Lower>() * x - b;
+  EXPECT_LT(residual.norm() / b.norm(), 1e-10);
+}
+
 TEST(Cholmod, NonPositiveDefiniteMatricesAreReportedNotThrown) {
   // [[1, 2], [2, 1]] has eigenvalues 3 and −1; diag(−1, −2) is negative definite;
   // a zero diagonal entry is singular.

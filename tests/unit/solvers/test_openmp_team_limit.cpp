@@ -3,6 +3,7 @@
 // no threads of its own. Without the cap, CHOLMOD 3 opens a team of four (its compiled
 // size) in its supernodal loops, whatever OMP_NUM_THREADS says, and libgomp keeps those
 // threads for the life of the process.
+#include "formflow/core/parallel_tasks.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "support/grid_laplacian.hpp"
 
@@ -28,6 +29,9 @@ TEST(CholmodOpenMpTeams, FactorisationStartsNoThreads) {
   // n = 10 000 rows, far above the sizes at which CHOLMOD's loops open a team (it clears
   // its n-long map in parallel once n > 128), with supernodes of hundreds of columns.
   const assembly::SparseMatrix matrix = grid_laplacian_lower(100);
+  // formflow's own helpers (the solve's sweep runs on them) live for the process: started
+  // first, they are in the count before and after.
+  start_task_helpers();
   const int before = threads_of_this_process();
   auto solver = solvers::make_cholmod_solver();
   ASSERT_TRUE(solver->analyze(matrix));
