@@ -52,12 +52,12 @@ cholmod_sparse lower_view(const assembly::SparseMatrix& matrix) {
   return view;
 }
 
-/// One pattern's analysis: the order, the permuted copy's plan, the symbolic factor and
-/// the solve's tree, as CholmodSolver::analyze makes them.
+/// One pattern's analysis: the order, the symbolic factor and the solve's tree, as
+/// CholmodSolver::analyze makes them (the permuted copy is rebuilt from the order: an
+/// O(nnz) gather plan, kept out of memory).
 struct Analysis {
   std::vector<Index> col_starts, rows; ///< tril(A)'s pattern, compared exactly
   std::vector<Index> order;
-  PermutedLower permuted;
   std::shared_ptr<cholmod_factor> symbolic; ///< owned by the cache's cholmod_common
   FactorSize size;
   SupernodalSolve triangular;
@@ -89,13 +89,20 @@ public:
     for (const Analysis& kept : kept_)
       if (kept.matches(lower)) {
         ++hits_;
-        return kept;
+        Analysis copy; // without the pattern: the caller has it
+        copy.order = kept.order;
+        copy.symbolic = kept.symbolic;
+        copy.size = kept.size;
+        copy.triangular = kept.triangular;
+        return copy;
       }
     return std::nullopt;
   }
 
-  /// Keeps `analysis` (its symbolic factor copied), dropping the oldest beyond capacity.
+  /// Keeps `analysis` (its symbolic factor copied), dropping the oldest beyond capacity;
+  /// not a pattern above largest_kept_nonzeros.
   void keep(Analysis analysis, const cholmod_factor& symbolic) {
+    if (!keeps(analysis.rows.size())) return;
     const std::lock_guard<std::mutex> lock(mutex_);
     cholmod_factor* copy = cholmod_copy_factor(const_cast<cholmod_factor*>(&symbolic), &common_);
     if (!copy) return;
@@ -108,6 +115,9 @@ public:
   }
 
   std::size_t hits() const { return hits_; }
+
+  /// Whether a pattern of `nonzeros` entries would be kept (largest_kept_nonzeros).
+  static bool keeps(std::size_t nonzeros) { return nonzeros <= largest_kept_nonzeros; }
 
   /// The copy a solver factorises into: a new factor of the kept symbolic one.
   cholmod_factor* copy_factor(const cholmod_factor& symbolic, cholmod_common& common) {
@@ -123,6 +133,11 @@ private:
   /// Two: the refined mesh of the last estimate and the mesh of the run (which alternate
   /// in an adaptive run's end); more would keep meshes no later solve sees.
   static constexpr std::size_t capacity = 2;
+  /// What a kept analysis costs is mostly its pattern, 4 bytes per entry of tril(A) (the
+  /// symbolic factor and the tree are per supernode): up to 48 MB each. The adaptive
+  /// runs' refined meshes (2D, ≤ 300 000 dofs: about 8 M entries) fit; a large 3D pattern
+  /// is analysed again rather than held twice.
+  static constexpr std::size_t largest_kept_nonzeros = 12'000'000;
   std::mutex mutex_, free_mutex_;
   cholmod_common common_{};
   std::deque<Analysis> kept_;
@@ -161,7 +176,7 @@ public:
       factor_ = AnalysisCache::instance().copy_factor(*kept->symbolic, common_);
       if (factor_) {
         order_ = std::move(kept->order);
-        permuted_ = std::move(kept->permuted);
+        permuted_ = PermutedLower(lower, order_);
         size_ = kept->size;
         triangular_ = std::move(kept->triangular);
         return true;
@@ -195,11 +210,11 @@ public:
     // Set by cholmod_analyze: nnz(tril(A)), nnz(L), and the flops of one factorisation.
     size_ = FactorSize{common_.anz, common_.lnz, common_.fl};
     triangular_ = SupernodalSolve(*factor_);
+    if (!AnalysisCache::keeps(static_cast<std::size_t>(lower.nonZeros()))) return true;
     Analysis analysis;
     analysis.col_starts.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + lower.cols() + 1);
     analysis.rows.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
     analysis.order = order_;
-    analysis.permuted = permuted_;
     analysis.size = size_;
     analysis.triangular = triangular_;
     AnalysisCache::instance().keep(std::move(analysis), *factor_);
