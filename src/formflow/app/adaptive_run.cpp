@@ -190,7 +190,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   run.adapt.cycle_target = case_.adapt.target_error;
   // The stops are decided by the full ("refined") estimate. The cycles before the first
   // one that may stop are cheap (step 2c of docs/error-estimation.md, with its endgame:
-  // 25–50 % faster on the sticking ram and Hill's 15° wedge, as fast on the 30° wedge);
+  // 22–53 % less time on the sticking ram and Hill's 15° wedge, 0–11 % more on the 30°);
   // solver.load_error = "refined" asks for the full estimate on every cycle.
   const bool cheap_cycles = case_.solver.load_error != solvers::LoadErrorMethod::Refined;
   run.solver.load_error = solvers::LoadErrorMethod::Refined;
