@@ -16,11 +16,13 @@ std::vector<CaseKey> adapt_keys() {
                       "penalties d > 0 and dN > 0 and regularised friction (else refused); where "
                       "the load's error is not estimated (Coulomb friction, Taylor–Hood) the "
                       "cycles stop after the first, summary.json adapt.stop saying why")
-          .doc("relative error of the load to reach: the cycles stop once the estimate of "
-               "|p_h − p| (solver.load_error: \"refined\" here unless \"linearized\") is at most "
-               "this times |p_h|, or once the regularisations' offset |p(2ε) − p(ε)| alone "
-               "is (no mesh lowers it: summary.json adapt.stop names the keys to lower); 0: no "
-               "adaptivity"),
+          .doc(
+              "relative error of the load to reach: the cycles stop once the estimate of "
+              "|p_h − p| (the full, \"refined\" estimate; cycles far from the target mark with the "
+              "cheap one unless solver.load_error = \"refined\") is at most "
+              "this times |p_h|, or once the regularisations' offset |p(2ε) − p(ε)| alone "
+              "is (no mesh lowers it: summary.json adapt.stop names the keys to lower); 0: no "
+              "adaptivity"),
       integer_key(
           "adapt.max_cycles", 8, [](auto& c) -> auto& { return c.adapt.max_cycles; })
           .at_least(1)
