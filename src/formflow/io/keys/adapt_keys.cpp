@@ -19,7 +19,7 @@ std::vector<CaseKey> adapt_keys() {
           .doc(
               "relative error of the load to reach: the cycles stop once the estimate of "
               "|p_h − p| (the full, \"refined\" estimate; cycles far from the target mark with the "
-              "cheap one unless solver.load_error = \"refined\") is at most "
+              "cheap one on Q2 unless solver.load_error = \"refined\") is at most "
               "this times |p_h|, or once the regularisations' offset |p(2ε) − p(ε)| alone "
               "is (no mesh lowers it: summary.json adapt.stop names the keys to lower); 0: no "
               "adaptivity"),

@@ -126,10 +126,10 @@ std::vector<CaseKey> solver_keys() {
                "the mesh admits it, else refined when the refined mesh has at most 200 000 dofs "
                "(25 000 in 3D), "
                "else none (said why); none = no estimate. In a case with [adapt]: refined = "
-               "the full (refined) estimate on every cycle; any other value = cheap "
-               "intermediate cycles (the linearised estimate scaled by cycle 0's "
-               "settled/linearised ratio), the full estimate from the first cycle whose "
-               "prediction may stop on, and on the last"),
+               "the full (refined) estimate on every cycle; any other value, on Q2 (on Q1: "
+               "linearized) = cheap intermediate cycles (the linearised estimate scaled by "
+               "cycle 0's settled/linearised ratio), the full estimate from the first cycle "
+               "whose prediction may stop on, and on the last"),
   };
 }
 
