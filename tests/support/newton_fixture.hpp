@@ -6,23 +6,14 @@
 
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
+#include "support/random_vector.hpp"
 
 #include <functional>
 #include <memory>
-#include <random>
 #include <utility>
 #include <vector>
 
 namespace formflow::testing {
-
-/// Uniform entries in [−1, 1] from a fixed seed.
-inline VectorX random_vector(Index n, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  VectorX v(n);
-  for (Index k = 0; k < n; ++k) v[k] = uniform(generator);
-  return v;
-}
 
 /// A strongly rate-sensitive law whose power range covers every rate in these
 /// tests, so that ν′ is large and smooth (the break points would make FD one-sided).

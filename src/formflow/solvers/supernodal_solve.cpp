@@ -34,8 +34,8 @@ Supernode supernode(const cholmod_factor& factor, Index s) {
 }
 
 /// Factor entries (rows × columns over the supernodes) from which the bins run on two
-/// threads: below, a solve takes less than about 0.2 ms, and starting the threads would
-/// cost a fair part of that.
+/// threads: below, a solve takes less than about 0.2 ms, and waking a helper thread (twice
+/// per solve) would cost a fair part of that.
 constexpr double threaded_factor_nonzeros = 2e5;
 
 using Block =
@@ -159,7 +159,7 @@ SupernodalSolve::SupernodalSolve(const cholmod_factor& factor) {
 void SupernodalSolve::solve(const cholmod_factor& factor, Real* x) const {
   const std::size_t n_top = top_rows_.size();
   std::vector<Real> top_updates[bins];
-  // Threads pay from a factor of some size on (two starts per solve, tens of µs).
+  // Threads pay from a factor of some size on (a helper woken twice per solve).
   const std::size_t threads = factor_nonzeros_ >= threaded_factor_nonzeros
                                   ? std::min<std::size_t>(compute_threads(), bins)
                                   : 1;

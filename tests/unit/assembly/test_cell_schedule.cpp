@@ -7,6 +7,7 @@
 #include "formflow/core/parallel_tasks.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "support/newton_fixture.hpp"
+#include "support/thread_cap.hpp"
 
 #include <gtest/gtest.h>
 
@@ -99,26 +100,6 @@ TEST(CellSchedule, OneBlockIsTheLoopItself) {
   ASSERT_EQ(schedule.phases[0].size(), 1u);
   EXPECT_EQ(schedule.phases[0][0], loop);
 }
-
-/// Sets OMP_NUM_THREADS (compute_threads()'s cap) while alive, restoring it after.
-class ThreadCap {
-public:
-  explicit ThreadCap(const std::string& value) {
-    if (const char* old = std::getenv("OMP_NUM_THREADS")) old_ = old;
-    setenv("OMP_NUM_THREADS", value.c_str(), 1);
-  }
-  ~ThreadCap() {
-    if (old_.empty())
-      unsetenv("OMP_NUM_THREADS");
-    else
-      setenv("OMP_NUM_THREADS", old_.c_str(), 1);
-  }
-  ThreadCap(const ThreadCap&) = delete;
-  ThreadCap& operator=(const ThreadCap&) = delete;
-
-private:
-  std::string old_;
-};
 
 struct Assembled {
   VectorX matrix_values, rhs, force, reaction_values;

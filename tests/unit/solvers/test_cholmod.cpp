@@ -6,6 +6,7 @@
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "support/approx.hpp"
+#include "support/random_vector.hpp"
 
 #include <gtest/gtest.h>
 
@@ -57,14 +58,6 @@ SparseMatrix spd_test_matrix(int m) {
     for (Index r = c; r < n; ++r)
       if (dense(r, c) != 0.0) lower.emplace_back(r, c, dense(r, c));
   return lower_from(n, lower);
-}
-
-VectorX random_vector(Index n, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  VectorX v(n);
-  for (Index k = 0; k < n; ++k) v[k] = uniform(generator);
-  return v;
 }
 
 TEST(Cholmod, SolvesAnSpdSystemToSmallResidual) {

@@ -5,16 +5,15 @@
 
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/permuted_lower.hpp"
+#include "support/random_vector.hpp"
+#include "support/thread_cap.hpp"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <cstdlib>
 #include <limits>
-#include <random>
-#include <string>
 #include <thread>
 #include <vector>
 
@@ -22,6 +21,8 @@ namespace formflow::solvers {
 namespace {
 
 using assembly::SparseMatrix;
+using testing::random_vector;
+using testing::ThreadCap;
 
 /// The 9-point stencil on an m × m grid (a Q1-like coupling; SPD, diagonally dominant),
 /// lower triangle: a 2D factor large enough that the solve runs on two threads.
@@ -44,35 +45,6 @@ SparseMatrix grid_matrix(int m) {
   matrix.makeCompressed();
   return matrix;
 }
-
-VectorX random_vector(Index n, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  VectorX v(n);
-  for (Index k = 0; k < n; ++k) v[k] = uniform(generator);
-  return v;
-}
-
-/// Sets OMP_NUM_THREADS (compute_threads()'s cap) while alive.
-class ThreadCap {
-public:
-  explicit ThreadCap(const char* value) {
-    if (const char* old = std::getenv("OMP_NUM_THREADS")) old_ = old, had_ = true;
-    setenv("OMP_NUM_THREADS", value, 1);
-  }
-  ~ThreadCap() {
-    if (had_)
-      setenv("OMP_NUM_THREADS", old_.c_str(), 1);
-    else
-      unsetenv("OMP_NUM_THREADS");
-  }
-  ThreadCap(const ThreadCap&) = delete;
-  ThreadCap& operator=(const ThreadCap&) = delete;
-
-private:
-  std::string old_;
-  bool had_ = false;
-};
 
 VectorX solved(const SparseMatrix& lower, const VectorX& rhs, const char* threads) {
   const ThreadCap cap(threads);
