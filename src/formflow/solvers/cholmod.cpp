@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // CHOLMOD supernodal Cholesky behind the LinearSolver interface.
 #include "formflow/solvers/blas_thread_limit.hpp"
+#include "formflow/solvers/cholmod_symbolic.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/openmp_team_limit.hpp"
 #include "formflow/solvers/permuted_lower.hpp"
@@ -32,25 +33,6 @@ constexpr unsigned cholmod_team_threads = 1;
 /// 2D Q2 at 309 122 dofs (318 flops per nonzero) 0.425 s against 0.435 s, the 3D slab
 /// (232) 0.034 against 0.037 s; the 3D round rod (885) 0.455 s against 0.350 s.
 constexpr double threaded_flops_per_nonzero = 500;
-
-/// A view of `matrix` as CHOLMOD's symmetric matrix stored by its lower triangle
-/// (CHOLMOD reads it only; the non-const pointers are its C interface's).
-cholmod_sparse lower_view(const assembly::SparseMatrix& matrix) {
-  cholmod_sparse view{};
-  view.nrow = static_cast<std::size_t>(matrix.rows());
-  view.ncol = static_cast<std::size_t>(matrix.cols());
-  view.nzmax = static_cast<std::size_t>(matrix.nonZeros());
-  view.p = const_cast<Index*>(matrix.outerIndexPtr());
-  view.i = const_cast<Index*>(matrix.innerIndexPtr());
-  view.x = const_cast<Real*>(matrix.valuePtr());
-  view.stype = -1;
-  view.itype = CHOLMOD_INT;
-  view.xtype = CHOLMOD_REAL;
-  view.dtype = CHOLMOD_DOUBLE;
-  view.sorted = 1;
-  view.packed = 1;
-  return view;
-}
 
 /// One pattern's analysis: the order, the symbolic factor and the solve's tree, as
 /// CholmodSolver::analyze makes them (the permuted copy is rebuilt from the order: an
@@ -146,8 +128,8 @@ private:
 
 /// Supernodal LLᵀ of P A Pᵀ with CHOLMOD's default fill-reducing order P (AMD, METIS
 /// where AMD fills much; then a weighted postorder). The permuted lower triangle is
-/// formed here (solvers/permuted_lower.hpp) and factorised in its natural order, which
-/// CHOLMOD takes as it is. Solves permute the right-hand side and the solution, and
+/// formed by a gather and analysed in its natural order (solvers/cholmod_symbolic.hpp),
+/// which CHOLMOD factorises as it is. Solves permute the right-hand side and the solution, and
 /// sweep CHOLMOD's factor on two threads (solvers/supernodal_solve.hpp).
 class CholmodSolver final : public LinearSolver {
 public:
@@ -182,31 +164,8 @@ public:
         return true;
       }
     }
-    // 1. The order: CHOLMOD's default strategy on A (no supernodal symbolic needed).
-    cholmod_sparse view = lower_view(lower);
-    common_.nmethods = 0;
-    common_.postorder = 1;
-    common_.supernodal = CHOLMOD_SIMPLICIAL;
-    cholmod_factor* ordering = cholmod_analyze(&view, &common_);
-    const bool ordered = ordering && common_.status == CHOLMOD_OK;
-    if (ordered) {
-      const Index* perm = static_cast<const Index*>(ordering->Perm);
-      order_.assign(perm, perm + ordering->n);
-      permuted_ = PermutedLower(lower, order_);
-    }
-    cholmod_free_factor(&ordering, &common_);
-    if (!ordered) return false;
-    // 2. The supernodal symbolic factor of P A Pᵀ in its natural order.
-    cholmod_sparse permuted = lower_view(permuted_.matrix());
-    common_.nmethods = 1;
-    common_.method[0].ordering = CHOLMOD_NATURAL;
-    common_.postorder = 0;
-    common_.supernodal = CHOLMOD_SUPERNODAL;
-    factor_ = cholmod_analyze(&permuted, &common_);
-    if (!factor_ || common_.status != CHOLMOD_OK) {
-      cholmod_free_factor(&factor_, &common_);
-      return false;
-    }
+    factor_ = analyse_supernodal(lower, common_, order_, permuted_);
+    if (!factor_) return false;
     // Set by cholmod_analyze: nnz(tril(A)), nnz(L), and the flops of one factorisation.
     size_ = FactorSize{common_.anz, common_.lnz, common_.fl};
     triangular_ = SupernodalSolve(*factor_);
@@ -225,7 +184,7 @@ public:
     const OpenMpTeamLimit team(cholmod_team_threads);
     const BlasThreadLimit blas(blas_threads());
     permuted_.refill(lower);
-    cholmod_sparse permuted = lower_view(permuted_.matrix());
+    cholmod_sparse permuted = cholmod_lower_view(permuted_.matrix());
     factorized_ = cholmod_factorize(&permuted, factor_, &common_) && common_.status == CHOLMOD_OK;
     return factorized_;
   }

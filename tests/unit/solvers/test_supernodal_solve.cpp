@@ -3,6 +3,7 @@
 // L Lᵀ x = b, and the same bits on one thread and on two.
 #include "formflow/solvers/supernodal_solve.hpp"
 
+#include "formflow/solvers/cholmod_symbolic.hpp"
 #include "formflow/solvers/linear_solver.hpp"
 #include "formflow/solvers/permuted_lower.hpp"
 #include "support/random_vector.hpp"
@@ -55,40 +56,13 @@ VectorX solved(const SparseMatrix& lower, const VectorX& rhs, const char* thread
   return x;
 }
 
-cholmod_sparse lower_view(const SparseMatrix& lower) {
-  cholmod_sparse view{};
-  view.nrow = view.ncol = static_cast<std::size_t>(lower.rows());
-  view.nzmax = static_cast<std::size_t>(lower.nonZeros());
-  view.p = const_cast<Index*>(lower.outerIndexPtr());
-  view.i = const_cast<Index*>(lower.innerIndexPtr());
-  view.x = const_cast<Real*>(lower.valuePtr());
-  view.stype = -1;
-  view.itype = CHOLMOD_INT;
-  view.xtype = CHOLMOD_REAL;
-  view.dtype = CHOLMOD_DOUBLE;
-  view.sorted = view.packed = 1;
-  return view;
-}
-
-/// The symbolic supernodal factor of `lower` as the CHOLMOD solver makes it: CHOLMOD's
-/// fill-reducing order, the permuted lower triangle analysed in its natural order.
+/// The symbolic supernodal factor of `lower` as the CHOLMOD solver makes it
+/// (solvers/cholmod_symbolic.hpp), owned.
 class SymbolicFactor {
 public:
   explicit SymbolicFactor(const SparseMatrix& lower) {
     cholmod_start(&common_);
-    cholmod_sparse view = lower_view(lower);
-    cholmod_factor* ordering = cholmod_analyze(&view, &common_);
-    EXPECT_NE(ordering, nullptr);
-    const Index* perm = static_cast<const Index*>(ordering->Perm);
-    const std::vector<Index> order(perm, perm + ordering->n);
-    cholmod_free_factor(&ordering, &common_);
-    permuted_ = PermutedLower(lower, order);
-    cholmod_sparse permuted_view = lower_view(permuted_.matrix());
-    common_.nmethods = 1;
-    common_.method[0].ordering = CHOLMOD_NATURAL;
-    common_.postorder = 0;
-    common_.supernodal = CHOLMOD_SUPERNODAL;
-    factor_ = cholmod_analyze(&permuted_view, &common_);
+    factor_ = analyse_supernodal(lower, common_, order_, permuted_);
     EXPECT_NE(factor_, nullptr);
   }
   ~SymbolicFactor() {
@@ -108,6 +82,7 @@ public:
 
 private:
   cholmod_common common_{};
+  std::vector<Index> order_;
   PermutedLower permuted_;
   cholmod_factor* factor_ = nullptr;
 };
