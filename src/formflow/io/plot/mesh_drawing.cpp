@@ -3,6 +3,7 @@
 #include "formflow/io/plot/mesh_drawing.hpp"
 
 #include "formflow/fem/lagrange.hpp"
+#include "formflow/io/plot/polygon_outlines.hpp"
 
 #include <algorithm>
 #include <array>
@@ -47,8 +48,9 @@ struct Bands {
   }
 };
 
-/// Polygons to fill, per band: each band becomes one path, so the SVG gets one
-/// element per band instead of one per piece, and same-band pieces show no seams.
+/// Polygons to fill, per band: each band becomes one path of its pieces' outlines (the
+/// edges the pieces share cancel), so the SVG gets one element per band holding only
+/// the band's boundary, and same-band pieces show no seams.
 using BandPolygons = std::vector<std::vector<std::vector<Pixel>>>;
 
 /// Cuts a small polygon (a sub-quad; the field is taken as linear along its
@@ -175,8 +177,10 @@ void fill_field_bands(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2
                          bands, polygons);
       }
   }
+  // The 86 514-dof adaptive ram: 3.5 MB of SVG for the strain rate with every piece
+  // drawn, and most of the pictures' rendering time.
   for (std::size_t band = 0; band < polygons.size(); ++band)
-    canvas.fill_polygons(polygons[band], scale.band_colour(band), true);
+    canvas.fill_polygons(merged_outlines(polygons[band]), scale.band_colour(band), true);
 }
 
 void draw_cell_edges(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh,
