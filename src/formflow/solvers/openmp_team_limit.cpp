@@ -40,11 +40,17 @@ GOMP_parallel(void (*function)(void*), void* data, unsigned threads, unsigned fl
   using formflow::solvers::libgomp_parallel;
   const unsigned limit = formflow::solvers::team_limit_of_this_thread;
   if (limit != 0 && (threads == 0 || threads > limit)) threads = limit;
-  if (libgomp_parallel) {
-    libgomp_parallel(function, data, threads, flags);
+  // A team of one runs on this thread without libgomp's team: libgomp ends even a
+  // one-thread region by waking the rest of its team with a futex system call, and
+  // CHOLMOD opens a region per supernode (capped to one thread here, or one by its `if`
+  // clause): 1.33 M such calls on the adaptive sticking ram, about 0.8 s of its main
+  // thread. Without a team the region's worksharing, barriers and omp_get_* see the
+  // implicit team of one that OpenMP defines outside a parallel region. Without
+  // libgomp (a caller linked against it loads it, next in the order) every region
+  // runs so.
+  if (threads == 1 || !libgomp_parallel) {
+    function(data);
     return;
   }
-  // Not reached while a caller is linked against libgomp (it is then loaded and next
-  // in the order); without it, the region runs on this thread, as a team of one.
-  function(data);
+  libgomp_parallel(function, data, threads, flags);
 }

@@ -16,6 +16,12 @@ namespace formflow::solvers {
 /// (docs/benchmarks.md "CHOLMOD's OpenMP teams"). The dense work inside a supernode is
 /// BLAS, threaded by OpenBLAS's own pool, which this does not touch.
 ///
+/// A region of one thread (capped so, or one by the library's `if` clause) runs on this
+/// thread without a libgomp team: libgomp ends even a one-thread region with a futex
+/// wake-up of its (absent) team, a system call per region (1.33 M on the adaptive
+/// sticking ram, 8.25 → 6.19 s end to end without them; docs/benchmarks.md "One-thread
+/// OpenMP regions").
+///
 /// How: libgomp's entry point for a parallel region, GOMP_parallel, is defined in
 /// this library (default visibility) and forwards to libgomp's with the team size
 /// capped. The linker exports it from an executable that links this library, since
