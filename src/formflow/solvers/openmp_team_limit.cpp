@@ -19,6 +19,10 @@ using GompParallel = void (*)(void (*)(void*), void*, unsigned, unsigned);
 const GompParallel libgomp_parallel =
     reinterpret_cast<GompParallel>(dlsym(RTLD_NEXT, "GOMP_parallel"));
 
+/// libgomp's omp_get_level: the regions enclosing this thread (0: none), looked up so.
+using OmpLevel = int (*)();
+const OmpLevel libgomp_level = reinterpret_cast<OmpLevel>(dlsym(RTLD_NEXT, "omp_get_level"));
+
 } // namespace
 
 OpenMpTeamLimit::OpenMpTeamLimit(unsigned threads) : previous_(team_limit_of_this_thread) {
@@ -37,18 +41,20 @@ OpenMpTeamLimit::~OpenMpTeamLimit() {
 /// and a hidden definition could not interpose on CHOLMOD's reference.
 extern "C" __attribute__((visibility("default"))) void
 GOMP_parallel(void (*function)(void*), void* data, unsigned threads, unsigned flags) {
+  using formflow::solvers::libgomp_level;
   using formflow::solvers::libgomp_parallel;
   const unsigned limit = formflow::solvers::team_limit_of_this_thread;
   if (limit != 0 && (threads == 0 || threads > limit)) threads = limit;
-  // A team of one runs on this thread without libgomp's team: libgomp ends even a
-  // one-thread region by waking the rest of its team with a futex system call, and
-  // CHOLMOD opens a region per supernode (capped to one thread here, or one by its `if`
-  // clause): 1.33 M such calls on the adaptive sticking ram, about 0.8 s of its main
-  // thread. Without a team the region's worksharing, barriers and omp_get_* see the
-  // implicit team of one that OpenMP defines outside a parallel region. Without
-  // libgomp (a caller linked against it loads it, next in the order) every region
-  // runs so.
-  if (threads == 1 || !libgomp_parallel) {
+  // A team of one outside any region runs on this thread without libgomp's team:
+  // libgomp ends even a one-thread region by waking the rest of its team with a futex
+  // system call, and CHOLMOD opens a region per supernode (capped to one thread here, or
+  // one by its `if` clause): 1.33 M such calls on the adaptive sticking ram, about 0.8 s
+  // of its main thread. Without a team the region's worksharing, barriers and omp_get_*
+  // see the implicit team of one that OpenMP defines outside a parallel region. Inside
+  // a region they would see the enclosing team instead, so a nested region keeps
+  // libgomp's own team. Without libgomp (a caller linked against it loads it, next in
+  // the order) every region runs on this thread.
+  if (!libgomp_parallel || (threads == 1 && libgomp_level && libgomp_level() == 0)) {
     function(data);
     return;
   }

@@ -69,6 +69,39 @@ TEST(OpenMpRegions, AOneThreadRegionWithoutACapRunsHereToo) {
   EXPECT_EQ(record.deepest_level.load(), 0);
 }
 
+/// What a one-thread region nested in a two-thread one saw, per outer thread.
+struct NestedRecord {
+  std::atomic<int> inner_calls{0};
+  std::atomic<int> wrong_numbering{0}; ///< inner regions that did not see a team of one
+};
+
+int openmp_call(const char* name) {
+  using Query = int (*)();
+  const auto query = reinterpret_cast<Query>(dlsym(RTLD_DEFAULT, name));
+  return query ? query() : -1;
+}
+
+void inner_region(void* data) {
+  auto& record = *static_cast<NestedRecord*>(data);
+  ++record.inner_calls;
+  // Its own team of one: thread 0 of 1, two levels deep. Run without a team it would
+  // see the outer team (thread 0 or 1 of 2) and split a loop's static schedule with it.
+  if (openmp_call("omp_get_thread_num") != 0 || openmp_call("omp_get_num_threads") != 1 ||
+      openmp_call("omp_get_level") != 2)
+    ++record.wrong_numbering;
+}
+
+void outer_region(void* data) {
+  GOMP_parallel(inner_region, data, 1, 0);
+}
+
+TEST(OpenMpRegions, AOneThreadRegionInsideATeamKeepsATeamOfItsOwn) {
+  NestedRecord record;
+  GOMP_parallel(outer_region, &record, 2, 0);
+  EXPECT_EQ(record.inner_calls.load(), 2);
+  EXPECT_EQ(record.wrong_numbering.load(), 0);
+}
+
 TEST(OpenMpRegions, AWiderRegionStillGetsItsTeam) {
   RegionRecord record;
   {
