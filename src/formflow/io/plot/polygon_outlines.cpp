@@ -24,7 +24,9 @@ struct GridKey {
 
 struct GridKeyHash {
   std::size_t operator()(const GridKey& key) const {
-    return std::hash<std::int64_t>{}(key.x * 0x9E3779B97F4A7C15LL ^ key.y);
+    // Unsigned: a signed product would overflow.
+    return static_cast<std::size_t>(static_cast<std::uint64_t>(key.x) * 0x9E3779B97F4A7C15ULL ^
+                                    static_cast<std::uint64_t>(key.y));
   }
 };
 
@@ -36,7 +38,8 @@ struct Edge {
 
 struct EdgeHash {
   std::size_t operator()(const Edge& edge) const {
-    return std::hash<std::int64_t>{}((static_cast<std::int64_t>(edge.from) << 32) ^ edge.to);
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(edge.from) << 32) ^
+                                    static_cast<std::uint32_t>(edge.to));
   }
 };
 
