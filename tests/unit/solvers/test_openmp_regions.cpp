@@ -28,18 +28,19 @@ struct RegionRecord {
   std::atomic<int> deepest_level{-1};
 };
 
-/// libgomp's omp_get_level, found in the process (CHOLMOD links libgomp): 0 outside any
-/// team, 1 inside a region's team.
-int openmp_level() {
-  using Level = int (*)();
-  static const auto level = reinterpret_cast<Level>(dlsym(RTLD_DEFAULT, "omp_get_level"));
-  return level ? level() : -2;
+/// A libgomp query (omp_get_level, omp_get_thread_num, …), found in the process
+/// (CHOLMOD links libgomp); −1 if it is not there. omp_get_level: 0 outside any team,
+/// 1 inside a region's team.
+int openmp_call(const char* name) {
+  using Query = int (*)();
+  const auto query = reinterpret_cast<Query>(dlsym(RTLD_DEFAULT, name));
+  return query ? query() : -1;
 }
 
 void record_region(void* data) {
   auto& record = *static_cast<RegionRecord*>(data);
   ++record.calls;
-  const int level = openmp_level();
+  const int level = openmp_call("omp_get_level");
   int seen = record.deepest_level.load();
   while (level > seen && !record.deepest_level.compare_exchange_weak(seen, level)) {
   }
@@ -50,7 +51,7 @@ void record_region(void* data) {
 // A suite of its own: ctest runs it in its own process, whose libgomp pool the wider
 // region below starts.
 TEST(OpenMpRegions, ACappedRegionRunsHereWithoutATeam) {
-  ASSERT_NE(openmp_level(), -2) << "libgomp is not in the process";
+  ASSERT_NE(openmp_call("omp_get_level"), -1) << "libgomp is not in the process";
   RegionRecord record;
   {
     const solvers::OpenMpTeamLimit one(1);
@@ -74,12 +75,6 @@ struct NestedRecord {
   std::atomic<int> inner_calls{0};
   std::atomic<int> wrong_numbering{0}; ///< inner regions that did not see a team of one
 };
-
-int openmp_call(const char* name) {
-  using Query = int (*)();
-  const auto query = reinterpret_cast<Query>(dlsym(RTLD_DEFAULT, name));
-  return query ? query() : -1;
-}
 
 void inner_region(void* data) {
   auto& record = *static_cast<NestedRecord*>(data);
