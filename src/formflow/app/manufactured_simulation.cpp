@@ -66,7 +66,7 @@ void solve_coupled_manufactured(const io::Case& case_, Simulation& simulation,
   heat.temperature = [temperature](const Point<2>& x) { return temperature.value(x); };
   {
     const auto& discretisation = problem->discretisation();
-    fem::CellValues<2> values(box.order, discretisation.full_rule());
+    fem::CellValues<2> values(box.cell_type(), discretisation.full_rule());
     typename fem::CellValues<2>::Gradients coordinates, unused;
     for (Index cell = 0; cell < box.n_cells(); ++cell) {
       discretisation.gather(cell, nullptr, coordinates, unused);

@@ -16,9 +16,9 @@ namespace formflow::assembly {
 /// the terms read (it refers to the members above).
 template <int dim> struct CellScratch {
   CellScratch(const Discretisation<dim>& discretisation, int n_local, int n_q)
-      : full(discretisation.mesh().order, discretisation.full_rule()),
-        volumetric(discretisation.mesh().order, discretisation.volumetric_rule()),
-        face_values(discretisation.mesh().order, discretisation.facet_rule()),
+      : full(discretisation.mesh().cell_type(), discretisation.full_rule()),
+        volumetric(discretisation.mesh().cell_type(), discretisation.volumetric_rule()),
+        face_values(discretisation.mesh().cell_type(), discretisation.facet_rule()),
         matrix(n_local, n_local), load(n_local), force(n_local), viscosity(n_q), a(n_q), b(n_q),
         rates(n_q), deviators(n_q),
         duals(n_q), cell_state{0,          full,      volumetric, coordinates,
@@ -257,8 +257,8 @@ void Assembler<dim>::assemble_cell(CellScratch<dim>& scratch, Index cell,
 
 template <int dim> std::vector<CellPressure> Assembler<dim>::pressures(const VectorX& u) const {
   const mesh::Mesh<dim>& mesh = discretisation_.mesh();
-  fem::CellValues<dim> full(mesh.order, discretisation_.full_rule());
-  fem::CellValues<dim> volumetric(mesh.order, discretisation_.volumetric_rule());
+  fem::CellValues<dim> full(mesh.cell_type(), discretisation_.full_rule());
+  fem::CellValues<dim> volumetric(mesh.cell_type(), discretisation_.volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<CellPressure> result;
   result.reserve(mesh.n_cells());
@@ -273,7 +273,7 @@ template <int dim> std::vector<CellPressure> Assembler<dim>::pressures(const Vec
 
 template <int dim> std::vector<Real> Assembler<dim>::dissipation_density(const VectorX& u) const {
   const mesh::Mesh<dim>& mesh = discretisation_.mesh();
-  fem::CellValues<dim> full(mesh.order, discretisation_.full_rule());
+  fem::CellValues<dim> full(mesh.cell_type(), discretisation_.full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   const int n_q = full.n_points();
   std::vector<Real> result(static_cast<std::size_t>(mesh.n_cells()) * n_q);

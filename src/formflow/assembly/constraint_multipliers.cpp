@@ -18,7 +18,7 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
                                                   const physics::Penalty& penalty,
                                                   const Formulation& formulation,
                                                   const fem::QuadratureRule<dim>& full_rule,
-                                                  Index n_contact_points)
+                                                  Index n_contact_points, bool axisymmetric)
     : mesh_(mesh), penalty_(penalty), formulation_(formulation) {
   contact_multiplier_.assign(n_contact_points, 0.0);
   contact_weight_.assign(n_contact_points, 0.0);
@@ -31,7 +31,7 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
       number_vertices();
   }
   const int n_local = mesh.nodes_per_cell() * dim;
-  fem::CellValues<dim> values(mesh.order, full_rule);
+  fem::CellValues<dim> values(mesh.cell_type(), full_rule);
   typename fem::CellValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
   std::vector<VectorX> basis;
   for (const Point<dim>& xi : full_rule.points)
@@ -40,13 +40,19 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
     values.reinit(coordinates);
+    if (axisymmetric) values.weight_by_radius(); // per radian, as every integral of the run
     MatrixX divergence = MatrixX::Zero(n_pressure_, n_local);
     MatrixX mass = MatrixX::Zero(n_pressure_, n_pressure_);
     VectorX integral = VectorX::Zero(n_pressure_);
     for (int q = 0; q < values.n_points(); ++q) {
       // div(φ_a e_i) = ∂_i φ_a: the flattened gradient is the divergence row.
       const auto& grad = values.gradients(q);
-      const Eigen::Map<const VectorX> divergence_row(grad.data(), n_local);
+      VectorX divergence_row = Eigen::Map<const VectorX>(grad.data(), n_local);
+      // Axisymmetry (y = r): ε̇_V = ∂u_r/∂r + u_r/r + ∂u_z/∂z, the hoop part φ_a / r of
+      // the radial component (dim = 2; the axis r = 0 is a symmetry line where u_r = 0).
+      if (axisymmetric && dim == 2)
+        for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+          divergence_row[a * dim + 1] += values.shape(q)[a] / values.point(q)[1];
       divergence.noalias() += values.JxW(q) * basis[q] * divergence_row.transpose(); // ψ div φ dx
       mass.noalias() += values.JxW(q) * basis[q] * basis[q].transpose();             // ψ ψ dx
       integral += values.JxW(q) * basis[q];
@@ -95,6 +101,7 @@ void ConstraintMultipliers<dim>::record_viscous_mass(Index cell, const fem::Cell
 template <int dim> void ConstraintMultipliers<dim>::number_vertices() {
   // Vertex i of the Q1 basis sits at lattice position (bit k of i) · order along
   // direction k of the lexicographic node numbering (fem/lagrange.hpp).
+  FF_ASSERT(!mesh_.is_simplex(), "a continuous pressure on simplices is not built yet");
   std::vector<Index> vertex_dof(mesh_.n_nodes(), -1);
   pressure_dofs_.reserve(static_cast<std::size_t>(mesh_.n_cells()) * n_pressure_);
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell)

@@ -16,7 +16,7 @@ std::vector<Index> nodes_on(const mesh::Mesh<dim>& mesh, mesh::BoundaryLabel lab
   std::vector<Index> nodes;
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
     if (facet.label != label) continue;
-    for (int local : mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face))
+    for (int local : mesh.face_nodes(facet.local_face))
       nodes.push_back(mesh.cells(local, facet.cell));
   }
   std::sort(nodes.begin(), nodes.end());
@@ -43,7 +43,7 @@ DirichletConstraints make_process_constraints(const mesh::Mesh<dim>& mesh,
     if (facet.label != mesh::BoundaryLabel::Symmetry) continue;
     const std::optional<int> axis = mesh::facet_normal_axis(mesh, facet);
     FF_ASSERT(axis.has_value(), "a symmetry facet lies in a coordinate plane");
-    for (int local : mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face))
+    for (int local : mesh.face_nodes(facet.local_face))
       prescribe(mesh.cells(local, facet.cell), *axis, 0.0);
   }
 

@@ -43,7 +43,7 @@ std::map<Index, Point<dim>> contact_node_normals(const Discretisation<dim>& disc
   std::size_t point = 0;
   for (const Index facet_index : facets) {
     const mesh::BoundaryFacet& facet = mesh.facets[facet_index];
-    for (const int local : mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face)) {
+    for (const int local : mesh.face_nodes(facet.local_face)) {
       auto [entry, inserted] =
           normal_sum.try_emplace(mesh.cells(local, facet.cell), Point<dim>::Zero());
       entry->second += normals[point++];

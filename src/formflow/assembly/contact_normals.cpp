@@ -12,6 +12,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/fem/cell_values.hpp"
+#include "formflow/fem/reference_element.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -23,9 +24,9 @@ template <int dim>
 std::vector<Point<dim>> nodal_contact_normals(const mesh::Mesh<dim>& mesh,
                                               std::span<const Index> contact_facets,
                                               Real corner_angle_degrees) {
-  const fem::QuadratureRule<dim - 1> rule = fem::nodal_rule<dim - 1>(mesh.order + 1);
+  const fem::QuadratureRule<dim - 1> rule = fem::face_nodal_rule<dim>(mesh.cell_type());
   const int n_q = rule.size();
-  fem::FacetValues<dim> values(mesh.order, rule);
+  fem::FacetValues<dim> values(mesh.cell_type(), rule);
   typename fem::FacetValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
 
   // Face normals and the node of each point; length-weighted sums per node.
@@ -38,8 +39,7 @@ std::vector<Point<dim>> nodal_contact_normals(const mesh::Mesh<dim>& mesh,
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, facet.cell));
     values.reinit(coordinates, facet.local_face);
-    const std::vector<int> face_nodes =
-        mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
+    const std::vector<int> face_nodes = mesh.face_nodes(facet.local_face);
     FF_ASSERT(static_cast<int>(face_nodes.size()) == n_q, "one nodal-rule point per face node");
     for (int q = 0; q < n_q; ++q) {
       const std::size_t k = p * n_q + q;

@@ -5,6 +5,7 @@
 #include "formflow/assembly/kernels/fixed_size.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/fem/dof_map.hpp"
+#include "formflow/fem/reference_element.hpp"
 #include "formflow/mesh/cell_partition.hpp"
 #include "formflow/physics/kinematics.hpp"
 
@@ -15,11 +16,14 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
                                     const DiscretisationSettings& settings,
                                     DirichletConstraints constraints)
     : mesh_(mesh), settings_(settings), constraints_(std::move(constraints)),
-      full_rule_(fem::gauss_rule<dim>(mesh.order + 1)),
-      volumetric_rule_(fem::gauss_rule<dim>(settings.volumetric_points)),
+      full_rule_(fem::full_rule<dim>(mesh.cell_type())),
+      // Simplices take σ_H in a pressure space on the full rule (reduced integration would
+      // lock them): their volumetric rule is the centroid, kept only for the caches' shape.
+      volumetric_rule_(mesh.is_simplex() ? fem::rule_of_points<dim>(mesh.cell_type(), 1)
+                                         : fem::gauss_rule<dim>(settings.volumetric_points)),
       facet_rule_(settings.contact.normals == ContactNormals::Nodes
-                      ? fem::nodal_rule<dim - 1>(mesh.order + 1)
-                      : fem::gauss_rule<dim - 1>(mesh.order + 1)) {
+                      ? fem::face_nodal_rule<dim>(mesh.cell_type())
+                      : fem::face_rule<dim>(mesh.cell_type())) {
   FF_ASSERT(dim == 2 || !axisymmetric(), "axisymmetry is a two-dimensional formulation");
   // A distributed run scatters only its own cells: the others are empty blocks, so the
   // pattern (and the memory of the rank's system) holds only the own cells' entries.
@@ -73,11 +77,12 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
       reinit(values, nodes);
     };
     full_cache_ = std::make_unique<fem::CellValuesCache<dim>>(
-        mesh.n_cells(), fem::CellValues<dim>(mesh.order, full_rule_), map_cell, cached);
+        mesh.n_cells(), fem::CellValues<dim>(mesh.cell_type(), full_rule_), map_cell, cached);
     volumetric_cache_ = std::make_unique<fem::CellValuesCache<dim>>(
-        mesh.n_cells(), fem::CellValues<dim>(mesh.order, volumetric_rule_), map_cell, cached);
+        mesh.n_cells(), fem::CellValues<dim>(mesh.cell_type(), volumetric_rule_), map_cell, cached);
     contact_cache_ = std::make_unique<fem::FacetValuesCache<dim>>(
-        static_cast<Index>(contact_facets_.size()), fem::FacetValues<dim>(mesh.order, facet_rule_),
+        static_cast<Index>(contact_facets_.size()),
+        fem::FacetValues<dim>(mesh.cell_type(), facet_rule_),
         [&](Index position, fem::FacetValues<dim>& values) {
           gather(mesh.facets[contact_facets_[position]].cell, nullptr, nodes, no_velocity);
           reinit_contact(values, nodes, position);
@@ -86,7 +91,7 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
 
   // The mollifier works on the fixed geometry of Γ3: build it once.
   {
-    fem::FacetValues<dim> values(mesh.order, facet_rule_);
+    fem::FacetValues<dim> values(mesh.cell_type(), facet_rule_);
     Gradients coordinates, unused;
     MatrixX points(dim, n_contact_points());
     std::vector<Real> weights;
@@ -102,7 +107,7 @@ Discretisation<dim>::Discretisation(const mesh::Mesh<dim>& mesh,
         std::make_unique<physics::NonlocalAverage>(points, weights, settings.mollifier_radius);
   }
 
-  fem::FacetValues<dim> facet_values(mesh.order, facet_rule_);
+  fem::FacetValues<dim> facet_values(mesh.cell_type(), facet_rule_);
   typename fem::CellValues<dim>::Gradients coordinates, unused;
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
     if (facet.label != constraints_.driven_label) continue;

@@ -86,7 +86,7 @@ template <int dim>
 std::vector<ContactPoint<dim>>
 FormingProblem<dim>::contact_state(const VectorX& u,
                                    const FrictionMultipliers<dim>* multipliers) const {
-  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
+  fem::FacetValues<dim> facet_values(mesh_.cell_type(), facet_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<ContactPoint<dim>> state;
   state.reserve(discretisation_->contact_facets().size() * facet_rule().size());

@@ -4,6 +4,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/fem/lagrange.hpp"
+#include "formflow/fem/reference_element.hpp"
 
 #include <Eigen/LU> // inverse() of the Jacobian
 
@@ -21,11 +22,10 @@ HeatProblem<dim>::HeatProblem(const Discretisation<dim>& discretisation,
   const mesh::Mesh<dim>& mesh = discretisation.mesh();
   prescribed_.assign(mesh.n_nodes(), false);
   prescribed_value_ = VectorX::Constant(mesh.n_nodes(), thermal.billet_temperature);
-  const int n_side = mesh.nodes_per_side();
   for (Index f = 0; f < static_cast<Index>(mesh.facets.size()); ++f) {
     const mesh::BoundaryFacet& facet = mesh.facets[f];
     if (boundary_temperature) {
-      for (const int local : mesh::face_local_nodes<dim>(n_side, facet.local_face)) {
+      for (const int local : mesh.face_nodes(facet.local_face)) {
         const Index node = mesh.cells(local, facet.cell);
         prescribed_[node] = true;
         prescribed_value_[node] = boundary_temperature(mesh.nodes.col(node));
@@ -35,7 +35,7 @@ HeatProblem<dim>::HeatProblem(const Discretisation<dim>& discretisation,
     }
     switch (facet.label) {
     case mesh::BoundaryLabel::Rear:
-      for (const int local : mesh::face_local_nodes<dim>(n_side, facet.local_face))
+      for (const int local : mesh.face_nodes(facet.local_face))
         prescribed_[mesh.cells(local, facet.cell)] = true;
       break;
     case mesh::BoundaryLabel::FreeEntry:
@@ -48,8 +48,8 @@ HeatProblem<dim>::HeatProblem(const Discretisation<dim>& discretisation,
   for (int q = 0; q < rule.size(); ++q) {
     VectorX unused;
     reference_gradients_.emplace_back();
-    fem::tabulate_shape<dim>(mesh.order, rule.points[q], unused, reference_gradients_.back());
-    reference_hessians_.push_back(fem::tabulate_hessians<dim>(mesh.order, rule.points[q]));
+    fem::tabulate_shape<dim>(mesh.cell_type(), rule.points[q], unused, reference_gradients_.back());
+    reference_hessians_.push_back(fem::tabulate_hessians<dim>(mesh.cell_type(), rule.points[q]));
   }
   free_index_.assign(mesh.n_nodes(), -1);
   for (Index node = 0; node < mesh.n_nodes(); ++node)
@@ -96,7 +96,7 @@ template <int dim>
 void HeatProblem<dim>::cell_system(Index cell, const VectorX& u, std::span<const Real> deformation,
                                    MatrixX& matrix, VectorX& load) const {
   const mesh::Mesh<dim>& mesh = discretisation_.mesh();
-  fem::CellValues<dim> values(mesh.order, discretisation_.full_rule());
+  fem::CellValues<dim> values(mesh.cell_type(), discretisation_.full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   discretisation_.gather(cell, &u, coordinates, velocities);
   discretisation_.load_cell(cell, values, nullptr);
@@ -159,8 +159,8 @@ void for_each_block(const Discretisation<dim>& discretisation,
     cell_system(cell, matrix, load);
     f(cell, matrix, load);
   }
-  fem::FacetValues<dim> contact(mesh.order, discretisation.facet_rule());
-  fem::FacetValues<dim> face(mesh.order, fem::gauss_rule<dim - 1>(mesh.order + 1));
+  fem::FacetValues<dim> contact(mesh.cell_type(), discretisation.facet_rule());
+  fem::FacetValues<dim> face(mesh.cell_type(), fem::face_rule<dim>(mesh.cell_type()));
   typename fem::CellValues<dim>::Gradients coordinates, unused;
   const int n = mesh.nodes_per_cell();
   const auto& contact_facets = discretisation.contact_facets();
@@ -256,7 +256,7 @@ HeatBalance HeatProblem<dim>::balance(const VectorX& u, const HeatSources& sourc
   // Each part from its own integral; the rear end's conduction from the residual of
   // its (eliminated) rows, R_a = (A T − b)_a: the heat the Dirichlet end takes in.
   VectorX residual = VectorX::Zero(n_nodes());
-  fem::CellValues<dim> values(mesh.order, discretisation_.full_rule());
+  fem::CellValues<dim> values(mesh.cell_type(), discretisation_.full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     discretisation_.gather(cell, &u, coordinates, velocities);
@@ -301,8 +301,8 @@ HeatBalance HeatProblem<dim>::balance(const VectorX& u, const HeatSources& sourc
   for (Index node = 0; node < n_nodes(); ++node)
     if (prescribed_[node]) balance.conducted -= residual[node];
   // The boundary parts from the face integrals themselves.
-  fem::FacetValues<dim> contact(mesh.order, discretisation_.facet_rule());
-  fem::FacetValues<dim> face(mesh.order, fem::gauss_rule<dim - 1>(mesh.order + 1));
+  fem::FacetValues<dim> contact(mesh.cell_type(), discretisation_.facet_rule());
+  fem::FacetValues<dim> face(mesh.cell_type(), fem::face_rule<dim>(mesh.cell_type()));
   typename fem::CellValues<dim>::Gradients unused;
   const auto face_temperature = [&](const fem::FacetValues<dim>& values, Index cell, int q) {
     Real value = 0.0;
@@ -336,7 +336,7 @@ HeatBalance HeatProblem<dim>::balance(const VectorX& u, const HeatSources& sourc
 
 template <int dim> std::vector<Real> HeatProblem<dim>::point_values(const VectorX& T) const {
   const mesh::Mesh<dim>& mesh = discretisation_.mesh();
-  fem::CellValues<dim> values(mesh.order, discretisation_.full_rule());
+  fem::CellValues<dim> values(mesh.cell_type(), discretisation_.full_rule());
   std::vector<Real> result;
   result.reserve(static_cast<std::size_t>(mesh.n_cells()) * values.n_points());
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
@@ -353,7 +353,7 @@ template <int dim> std::vector<Real> HeatProblem<dim>::point_values(const Vector
 
 template <int dim> std::vector<Real> HeatProblem<dim>::contact_values(const VectorX& T) const {
   const mesh::Mesh<dim>& mesh = discretisation_.mesh();
-  fem::FacetValues<dim> contact(mesh.order, discretisation_.facet_rule());
+  fem::FacetValues<dim> contact(mesh.cell_type(), discretisation_.facet_rule());
   typename fem::CellValues<dim>::Gradients coordinates, unused;
   std::vector<Real> result;
   const auto& contact_facets = discretisation_.contact_facets();
@@ -375,7 +375,7 @@ template <int dim>
 typename HeatProblem<dim>::ExitTemperature
 HeatProblem<dim>::exit_temperature(const VectorX& u, const VectorX& T) const {
   const mesh::Mesh<dim>& mesh = discretisation_.mesh();
-  fem::FacetValues<dim> face(mesh.order, fem::gauss_rule<dim - 1>(mesh.order + 1));
+  fem::FacetValues<dim> face(mesh.cell_type(), fem::face_rule<dim>(mesh.cell_type()));
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   ExitTemperature exit{INFINITY, 0.0, -INFINITY};
   Real heat_flux = 0.0, flux = 0.0;

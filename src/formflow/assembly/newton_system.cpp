@@ -116,7 +116,7 @@ void FormingProblem<dim>::apply_coupling(const UnsymmetricTangent<dim>& coupling
   // dσ̄_N[x] is the mollified u_N(x)/d_N: contact_state of x itself (it is linear in x).
   const std::vector<ContactPoint<dim>> change =
       contact_state(plan().expand(x_free, VectorX::Zero(n_dofs())));
-  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
+  fem::FacetValues<dim> facet_values(mesh_.cell_type(), facet_rule());
   typename fem::CellValues<dim>::Gradients coordinates, unused;
   const int n_face_q = facet_rule().size();
   for (std::size_t position = 0; position < discretisation_->contact_facets().size(); ++position) {
@@ -170,7 +170,7 @@ void FormingProblem<dim>::apply_coupling_transpose(const UnsymmetricTangent<dim>
   // points' weighted traces are summed over the ranks before the mollifier's transpose,
   // which reaches every point.
   const Distribution& distribution = discretisation_->distribution();
-  fem::FacetValues<dim> facet_values(mesh_.order, facet_rule());
+  fem::FacetValues<dim> facet_values(mesh_.cell_type(), facet_rule());
   typename fem::CellValues<dim>::Gradients coordinates, unused;
   const int n_face_q = facet_rule().size();
   const std::size_t n_facets = discretisation_->contact_facets().size();

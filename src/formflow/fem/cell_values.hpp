@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/fem/quadrature.hpp"
+#include "formflow/mesh/cell_type.hpp"
 
 #include <vector>
 
@@ -17,9 +18,13 @@ template <int dim> class CellValues {
 public:
   using Gradients = Eigen::Matrix<Real, dim, Eigen::Dynamic>;
 
-  CellValues(int order, const QuadratureRule<dim>& rule);
+  CellValues(const mesh::CellType& type, const QuadratureRule<dim>& rule);
+  /// A tensor-product cell (Q1, Q2) of `order`.
+  CellValues(int order, const QuadratureRule<dim>& rule)
+      : CellValues(mesh::CellType{mesh::CellShape::Cube, order, false}, rule) {}
 
-  /// Maps to the cell with node coordinates `cell_nodes` (dim × n_nodes, lexicographic).
+  /// Maps to the cell with node coordinates `cell_nodes` (dim × n_nodes, in the cell
+  /// type's local order).
   /// Returns false when the Jacobian is not positive at some point (inverted cell).
   bool reinit(const Gradients& cell_nodes);
 
@@ -50,14 +55,20 @@ private:
 };
 
 /// Shape values, JxW (surface measure) and outward unit normals on one face
-/// of a cell; `face_rule` is a (dim−1)-dimensional rule placed on the face.
+/// of a cell; `face_rule` is a (dim−1)-dimensional rule placed on the face: on
+/// [-1, 1]^(dim−1) for a cube's face and a triangle's edge, on the unit triangle for a
+/// tetrahedron's face (fem::face_rule).
 template <int dim> class FacetValues {
 public:
   using Gradients = Eigen::Matrix<Real, dim, Eigen::Dynamic>;
 
-  FacetValues(int order, const QuadratureRule<dim - 1>& face_rule);
+  FacetValues(const mesh::CellType& type, const QuadratureRule<dim - 1>& face_rule);
+  /// A face of a tensor-product cell (Q1, Q2) of `order`.
+  FacetValues(int order, const QuadratureRule<dim - 1>& face_rule)
+      : FacetValues(mesh::CellType{mesh::CellShape::Cube, order, false}, face_rule) {}
 
-  /// Maps to face `local_face` (2·axis + side) of the cell with `cell_nodes`.
+  /// Maps to face `local_face` of the cell with `cell_nodes` (cubes: 2·axis + side;
+  /// simplices: mesh/cell_type.hpp).
   void reinit(const Gradients& cell_nodes, int local_face);
 
   int n_points() const { return static_cast<int>(face_rule_.weights.size()); }
@@ -82,7 +93,7 @@ public:
 private:
   friend class FacetValuesCache<dim>; // stores and restores the mapped values
                                       // (fem/values_cache.hpp)
-  int order_;
+  mesh::CellType type_;
   QuadratureRule<dim - 1> face_rule_;
   std::vector<VectorX> shape_;
   std::vector<Gradients> gradients_;

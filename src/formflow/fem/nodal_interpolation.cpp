@@ -3,7 +3,7 @@
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/core/parallel_tasks.hpp"
-#include "formflow/fem/lagrange.hpp"
+#include "formflow/fem/reference_element.hpp"
 
 #include <Eigen/LU>
 
@@ -27,28 +27,43 @@ template <int dim> struct InverseMapWork {
   Eigen::Matrix<Real, dim, Eigen::Dynamic> gradients;
 };
 
+/// How far `xi` lies outside the reference cell (0 inside), and `xi` moved onto it:
+/// clamped to [-1, 1]^dim, or for a simplex clamped to ξ ≥ 0 and scaled to Σ ξ ≤ 1.
+template <int dim> Real clamp_to_reference(bool simplex, Point<dim>& xi) {
+  if (!simplex) {
+    const Real outside = std::max(0.0, xi.cwiseAbs().maxCoeff() - 1.0);
+    xi = xi.cwiseMax(-1.0).cwiseMin(1.0);
+    return outside;
+  }
+  const Real outside = std::max({0.0, -xi.minCoeff(), xi.sum() - 1.0});
+  xi = xi.cwiseMax(0.0);
+  if (xi.sum() > 1.0) xi /= xi.sum();
+  return outside;
+}
+
 /// Reference coordinates ξ of `x` in `cell` by Newton on x(ξ) = x, clamped to the
-/// reference cube after each step (so a point outside the cell ends on its
-/// boundary); returns the clamped ξ and, in `outside`, how far past ±1 the
-/// unclamped ξ lay (0 for a point inside).
+/// reference cell after each step (so a point outside the cell ends on its
+/// boundary); returns the clamped ξ and, in `outside`, how far past the reference
+/// cell the unclamped ξ lay (0 for a point inside).
 template <int dim>
 Point<dim> reference_coordinates(const mesh::Mesh<dim>& mesh, Index cell, const Point<dim>& x,
                                  Real& outside, InverseMapWork<dim>& work) {
   const int n_nodes = mesh.nodes_per_cell();
   work.corners.resize(dim, n_nodes);
   for (int a = 0; a < n_nodes; ++a) work.corners.col(a) = mesh.nodes.col(mesh.cells(a, cell));
-  Point<dim> xi = Point<dim>::Zero();
-  Point<dim> unclamped = xi;
+  const bool simplex = mesh.is_simplex();
+  // Start at the reference cell's centre.
+  Point<dim> xi = simplex ? Point<dim>::Constant(1.0 / (dim + 1)) : Point<dim>::Zero();
+  outside = 0.0;
   for (int k = 0; k < 20; ++k) {
-    tabulate_shape<dim>(mesh.order, xi, work.values, work.gradients);
+    tabulate_shape<dim>(mesh.cell_type(), xi, work.values, work.gradients);
     const Point<dim> residual = work.corners * work.values - x;
     const Tensor2<dim> jacobian = work.corners * work.gradients.transpose();
     const Point<dim> step = jacobian.partialPivLu().solve(residual);
-    unclamped = xi - step;
-    xi = unclamped.cwiseMax(-1.0).cwiseMin(1.0);
+    xi -= step;
+    outside = clamp_to_reference<dim>(simplex, xi);
     if (step.template lpNorm<Eigen::Infinity>() < 1e-13) break;
   }
-  outside = std::max(0.0, unclamped.cwiseAbs().maxCoeff() - 1.0);
   return xi;
 }
 
@@ -75,6 +90,8 @@ template <int dim> std::vector<CellBox<dim>> cell_boxes(const mesh::Mesh<dim>& m
       low = low.cwiseMin(mesh.nodes.col(mesh.cells(a, cell)));
       high = high.cwiseMax(mesh.nodes.col(mesh.cells(a, cell)));
     }
+    // A straight-sided simplex is the hull of its vertices whatever its bubbles; a curved
+    // P2 one is given the Q2 reach.
     const Real reach = mesh.order == 1 ? 0.0 : (std::pow(1.25, dim) - 1.0) / 2.0;
     const Point<dim> margin =
         reach * (high - low) + Point<dim>::Constant(1e-12) + 1e-9 * (high - low);
@@ -180,7 +197,7 @@ VectorX interpolate_nodal_field(const mesh::Mesh<dim>& source, const VectorX& so
         }
       }
       FF_ASSERT(best_cell >= 0, "every target node lies near some source cell");
-      tabulate_shape<dim>(source.order, best_xi, work.values, work.gradients);
+      tabulate_shape<dim>(source.cell_type(), best_xi, work.values, work.gradients);
       for (int c = 0; c < components; ++c) {
         Real value = 0;
         for (int a = 0; a < source.nodes_per_cell(); ++a)

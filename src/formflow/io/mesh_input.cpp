@@ -4,6 +4,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/fem/cell_values.hpp"
+#include "formflow/fem/reference_element.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/mesh/solid_channel_mesh.hpp"
@@ -55,8 +56,8 @@ template <int dim> std::string point_text(const Point<dim>& p) {
 /// while every Gauss point can still be positive.
 template <int dim>
 void check_jacobians(const Case& case_, const mesh::MeshSpec& spec, const mesh::Mesh<dim>& mesh) {
-  fem::CellValues<dim> at_gauss(mesh.order, fem::gauss_rule<dim>(mesh.order + 1));
-  fem::CellValues<dim> at_nodes(mesh.order, fem::nodal_rule<dim>(mesh.order + 1));
+  fem::CellValues<dim> at_gauss(mesh.cell_type(), fem::full_rule<dim>(mesh.cell_type()));
+  fem::CellValues<dim> at_nodes(mesh.cell_type(), fem::node_points<dim>(mesh.cell_type()));
   typename fem::CellValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
@@ -120,8 +121,7 @@ void check_symmetry_planes(const Case& case_, const mesh::MeshSpec& spec,
     if (facet.label != mesh::BoundaryLabel::Symmetry || mesh::facet_normal_axis(mesh, facet))
       continue;
     Point<dim> centre = Point<dim>::Zero();
-    const std::vector<int> nodes =
-        mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
+    const std::vector<int> nodes = mesh.face_nodes(facet.local_face);
     for (int local : nodes)
       centre += mesh.nodes.col(mesh.cells(local, facet.cell)) / static_cast<Real>(nodes.size());
     const Case::KeyLocation where = location_of(case_, "mesh.boundaries");

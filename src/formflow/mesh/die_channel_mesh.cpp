@@ -97,7 +97,7 @@ void add_square_die_land(const ChannelGeometry& geometry, Mesh<2>& mesh) {
   const Real land_end = geometry.container_length + geometry.land_length;
   for (BoundaryFacet& facet : mesh.facets) {
     if (facet.label != BoundaryLabel::FreeExit) continue;
-    const auto face = face_local_nodes<2>(mesh.nodes_per_side(), facet.local_face);
+    const auto face = mesh.face_nodes(facet.local_face);
     const Real middle = 0.5 * (mesh.nodes(0, mesh.cells(face.front(), facet.cell)) +
                                mesh.nodes(0, mesh.cells(face.back(), facet.cell)));
     if (middle < land_end) facet.label = BoundaryLabel::Die;

@@ -10,7 +10,7 @@ template <int dim>
 std::optional<int> facet_normal_axis(const Mesh<dim>& mesh, const BoundaryFacet& facet) {
   Point<dim> lowest = Point<dim>::Constant(std::numeric_limits<Real>::infinity());
   Point<dim> highest = -lowest;
-  for (int local : face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face)) {
+  for (int local : mesh.face_nodes(facet.local_face)) {
     const Point<dim> node = mesh.nodes.col(mesh.cells(local, facet.cell));
     lowest = lowest.cwiseMin(node);
     highest = highest.cwiseMax(node);

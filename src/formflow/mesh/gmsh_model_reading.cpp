@@ -34,11 +34,20 @@ template <int dim> FacetKey<dim> sorted(FacetKey<dim> corners) {
   return corners;
 }
 
-/// The corners of local face `face` of `cell`.
+/// The corners of local face `face` of `cell` (a triangle face of a tetrahedron has three:
+/// its fourth key entry repeats its first, so that every face has the same key size).
 template <int dim> FacetKey<dim> cell_facet_key(const Mesh<dim>& mesh, Index cell, int face) {
-  const int n = mesh.nodes_per_side();
-  const std::vector<int> local = face_local_nodes<dim>(n, face);
+  const std::vector<int> local = mesh.face_nodes(face);
   const auto node = [&](std::size_t k) { return mesh.cells(local[k], cell); };
+  if (mesh.is_simplex()) {
+    const std::vector<int> corners = simplex_face_vertices<dim>(face);
+    if constexpr (dim == 2)
+      return sorted<dim>({mesh.cells(corners[0], cell), mesh.cells(corners[1], cell)});
+    else
+      return sorted<dim>({mesh.cells(corners[0], cell), mesh.cells(corners[1], cell),
+                          mesh.cells(corners[2], cell), mesh.cells(corners[0], cell)});
+  }
+  const int n = mesh.nodes_per_side();
   if constexpr (dim == 2)
     return sorted<dim>({node(0), node(local.size() - 1)});
   else
@@ -74,7 +83,7 @@ std::vector<BoundaryFacet> boundary_facets(const Mesh<dim>& mesh,
   std::map<FacetKey<dim>, std::pair<int, BoundaryFacet>> uses;
   std::vector<FacetKey<dim>> order;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell)
-    for (int face = 0; face < 2 * dim; ++face) {
+    for (int face = 0; face < faces_per_cell<dim>(mesh.cell_type()); ++face) {
       const FacetKey<dim> key = cell_facet_key(mesh, cell, face);
       auto [entry, inserted] =
           uses.try_emplace(key, 0, BoundaryFacet{cell, face, BoundaryLabel::Rear});

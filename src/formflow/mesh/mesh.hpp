@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Unstructured mesh of tensor-product cells (quadrilaterals, hexahedra) with
-// labelled boundary facets.
+// Unstructured mesh of tensor-product cells (quadrilaterals, hexahedra) or simplices
+// (triangles, tetrahedra) with labelled boundary facets.
 #pragma once
 
 #include "formflow/core/types.hpp"
+#include "formflow/mesh/cell_type.hpp"
 
 #include <array>
 #include <optional>
@@ -34,19 +35,23 @@ inline bool is_contact(BoundaryLabel label) {
 }
 
 /// One boundary facet: a face of a cell. Local faces of a tensor-product cell
-/// are numbered 2·axis + side (side 0 at ξ_axis = −1, side 1 at ξ_axis = +1).
+/// are numbered 2·axis + side (side 0 at ξ_axis = −1, side 1 at ξ_axis = +1); those of
+/// a simplex as mesh/cell_type.hpp says (triangle: edge (k, k+1); tetrahedron: opposite
+/// vertex k).
 struct BoundaryFacet {
   Index cell = 0;
   int local_face = 0;
   BoundaryLabel label = BoundaryLabel::Rear;
 };
 
-/// Mesh of tensor-product Lagrange cells of polynomial order 1 or 2.
-/// Cell nodes are stored in lexicographic order of the reference lattice,
-/// x fastest (see fem/lagrange.hpp for the drawing).
+/// Mesh of Lagrange cells of polynomial order 1 or 2: tensor-product cells, nodes in
+/// lexicographic order of the reference lattice, x fastest (fem/lagrange.hpp), or
+/// simplices, nodes as fem/simplex_lagrange.hpp draws them.
 template <int dim> struct Mesh {
   static constexpr int dimension = dim; ///< for code that receives a Mesh through std::visit
-  int order = 1; ///< 1: Q1 (2^dim nodes per cell), 2: Q2 (3^dim nodes per cell)
+  int order = 1;                        ///< 1: Q1 / P1 (P1b), 2: Q2 / P2 (P2+)
+  CellShape shape = CellShape::Cube;    ///< quadrilaterals/hexahedra or triangles/tetrahedra
+  bool bubbles = false;                 ///< simplices: the bubble nodes of P1b / P2+
   /// Node coordinates, shape (dim, n_nodes).
   Eigen::Matrix<Real, dim, Eigen::Dynamic> nodes;
   /// Cell connectivity, shape (nodes_per_cell, n_cells), lexicographic order.
@@ -56,10 +61,17 @@ template <int dim> struct Mesh {
   Index n_nodes() const { return static_cast<Index>(nodes.cols()); }
   Index n_cells() const { return static_cast<Index>(cells.cols()); }
   int nodes_per_cell() const { return static_cast<int>(cells.rows()); }
+  /// Nodes along a cell edge of a tensor-product cell (order + 1).
   int nodes_per_side() const { return order + 1; }
+  CellType cell_type() const { return {shape, order, bubbles}; }
+  bool is_simplex() const { return shape == CellShape::Simplex; }
+  /// Local nodes of face `local_face` (mesh::face_local_nodes of the cell type).
+  std::vector<int> face_nodes(int local_face) const {
+    return face_local_nodes<dim>(cell_type(), local_face);
+  }
 };
 
-/// Lexicographic local node indices of face `local_face` of a cell with
+/// Lexicographic local node indices of face `local_face` of a tensor-product cell with
 /// `n_side` nodes per direction, in lexicographic order along the face.
 template <int dim> std::vector<int> face_local_nodes(int n_side, int local_face);
 

@@ -44,7 +44,7 @@ std::vector<BoundaryLabel> column_labels(const Mesh<2>& channel, const Levels& l
     if (facet.label == BoundaryLabel::Rear || facet.label == BoundaryLabel::Front ||
         facet.label == BoundaryLabel::Symmetry)
       continue;
-    const auto face = face_local_nodes<2>(channel.nodes_per_side(), facet.local_face);
+    const auto face = channel.face_nodes(facet.local_face);
     const Real middle = 0.5 * (channel.nodes(0, channel.cells(face.front(), facet.cell)) +
                                channel.nodes(0, channel.cells(face.back(), facet.cell)));
     const auto above = std::upper_bound(levels.x.begin(), levels.x.end(), middle);

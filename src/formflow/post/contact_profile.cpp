@@ -55,7 +55,7 @@ std::vector<ContactSample> plane_profile(const assembly::FormingProblem<2>& prob
   std::multimap<Index, std::size_t> by_node;
   for (std::size_t first = 0; first < contact.size(); first += n_q) {
     const mesh::BoundaryFacet& facet = mesh.facets[contact[first].facet];
-    const auto face = mesh::face_local_nodes<2>(mesh.nodes_per_side(), facet.local_face);
+    const auto face = mesh.face_nodes(facet.local_face);
     segments.push_back(
         {first, mesh.cells(face.front(), facet.cell), mesh.cells(face.back(), facet.cell)});
     by_node.emplace(segments.back().from, segments.size() - 1);

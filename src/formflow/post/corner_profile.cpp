@@ -18,7 +18,7 @@ CornerProfile corner_profile(const assembly::FormingProblem<dim>& problem, const
       static_cast<int>(std::ceil(std::log10(r_max / r_min) * bins_per_decade - 1e-9));
   std::vector<Real> area(n_bins, 0.0), integral(n_bins, 0.0), largest(n_bins, 0.0);
   const auto& mesh = problem.discretisation().mesh();
-  fem::CellValues<dim> values(mesh.order, problem.discretisation().full_rule());
+  fem::CellValues<dim> values(mesh.cell_type(), problem.discretisation().full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     problem.discretisation().gather(cell, &u, coordinates, velocities);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Error norms by a higher-order Gauss rule.
 #include "formflow/post/error_norms.hpp"
+#include "formflow/fem/reference_element.hpp"
 
 #include "formflow/physics/kinematics.hpp"
 
@@ -15,8 +16,9 @@ template <int dim>
 void add_domain_terms(const assembly::FormingProblem<dim>& problem, const VectorX& u_h,
                       const ExactVelocity<dim>* exact, Real& strain_square, Real& l2_square) {
   const auto& mesh = problem.discretisation().mesh();
-  const fem::QuadratureRule<dim> rule = fem::gauss_rule<dim>(error_quadrature_points);
-  fem::CellValues<dim> values(mesh.order, rule);
+  const fem::QuadratureRule<dim> rule =
+      fem::rule_of_points<dim>(mesh.cell_type(), error_quadrature_points);
+  fem::CellValues<dim> values(mesh.cell_type(), rule);
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {
     problem.discretisation().gather(cell, &u_h, coordinates, velocities);
@@ -39,7 +41,7 @@ void add_domain_terms(const assembly::FormingProblem<dim>& problem, const Vector
 template <int dim>
 Real hydrostatic_square(const assembly::FormingProblem<dim>& problem, const VectorX& u_h) {
   const auto& mesh = problem.discretisation().mesh();
-  fem::CellValues<dim> values(mesh.order, problem.discretisation().volumetric_rule());
+  fem::CellValues<dim> values(mesh.cell_type(), problem.discretisation().volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   Real sum = 0.0;
   for (Index cell = 0; cell < mesh.n_cells(); ++cell) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Integration-point quantities averaged to nodes, and cell means.
+#include "formflow/core/error.hpp"
 #include "formflow/fem/lagrange.hpp"
+#include "formflow/fem/reference_element.hpp"
 #include "formflow/physics/kinematics.hpp"
 #include "formflow/post/post_process.hpp"
 
@@ -14,15 +16,6 @@ void average(VectorX& sum, const VectorX& count) {
     if (count[k] > 0) sum[k] /= count[k];
 }
 
-template <int dim> fem::QuadratureRule<dim> node_rule(int order, int n_nodes) {
-  fem::QuadratureRule<dim> rule;
-  for (int a = 0; a < n_nodes; ++a) {
-    rule.points.push_back(fem::reference_node<dim>(order, a));
-    rule.weights.push_back(1.0); // unused: only the gradients at the nodes are wanted
-  }
-  return rule;
-}
-
 } // namespace
 
 template <int dim>
@@ -30,8 +23,8 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
                     const std::vector<assembly::ContactPoint<dim>>& contact) {
   const auto& mesh = problem.discretisation().mesh();
   const int n = mesh.nodes_per_cell();
-  fem::CellValues<dim> at_nodes(mesh.order, node_rule<dim>(mesh.order, n));
-  fem::CellValues<dim> full_values(mesh.order, problem.discretisation().full_rule());
+  fem::CellValues<dim> at_nodes(mesh.cell_type(), fem::node_points<dim>(mesh.cell_type()));
+  fem::CellValues<dim> full_values(mesh.cell_type(), problem.discretisation().full_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
 
   Fields fields;
@@ -76,7 +69,11 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   fields.friction_stress = VectorX::Zero(mesh.n_nodes());
   count.setZero();
   const int n_q = problem.discretisation().facet_rule().size();
-  // Nodal contact normals put the points on the face nodes already.
+  // Nodal contact normals put the points on the face nodes already. A triangle's edge is
+  // a 1D Lagrange element with its nodes along it (mesh/cell_type.hpp), as a cube's face
+  // is a (dim − 1)-cube: the tensor Gauss extrapolation serves both.
+  FF_ASSERT(!mesh.is_simplex() || dim == 2 || problem.discretisation().contact_points_at_nodes(),
+            "Gauss-point contact fields of tetrahedra have no nodal extrapolation yet");
   const MatrixX facet_to_nodes = problem.discretisation().contact_points_at_nodes()
                                      ? MatrixX(MatrixX::Identity(n_q, n_q))
                                      : fem::gauss_to_nodes<dim - 1>(mesh.order, mesh.order + 1);
@@ -90,7 +87,7 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
     }
     const VectorX nodal_pressure = facet_to_nodes * pressure_at;
     const VectorX nodal_friction = facet_to_nodes * friction_at;
-    const auto face_nodes = mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
+    const auto face_nodes = mesh.face_nodes(facet.local_face);
     for (std::size_t k = 0; k < face_nodes.size(); ++k) {
       const Index node = mesh.cells(face_nodes[k], facet.cell);
       fields.contact_pressure[node] += nodal_pressure[static_cast<Index>(k)];

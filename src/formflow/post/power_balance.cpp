@@ -18,7 +18,7 @@ template <int dim>
 Real mean_pressure_of_cells_at(const assembly::FormingProblem<dim>& problem, const VectorX& u,
                                mesh::BoundaryLabel label) {
   const auto& mesh = problem.discretisation().mesh();
-  fem::CellValues<dim> values(mesh.order, problem.discretisation().volumetric_rule());
+  fem::CellValues<dim> values(mesh.cell_type(), problem.discretisation().volumetric_rule());
   typename fem::CellValues<dim>::Gradients coordinates, velocities;
   std::vector<bool> counted(mesh.n_cells(), false);
   const std::vector<assembly::CellPressure> pressures = problem.cell_pressures(u);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Temperature error norms by a higher-order Gauss rule.
 #include "formflow/post/temperature_error_norms.hpp"
+#include "formflow/fem/reference_element.hpp"
 
 #include "formflow/post/error_norms.hpp"
 
@@ -13,7 +14,8 @@ TemperatureErrorNorms temperature_error_norms(const assembly::Discretisation<dim
                                               const VectorX& T_h,
                                               const ExactTemperature<dim>& exact) {
   const auto& mesh = discretisation.mesh();
-  fem::CellValues<dim> values(mesh.order, fem::gauss_rule<dim>(error_quadrature_points));
+  fem::CellValues<dim> values(mesh.cell_type(),
+                              fem::rule_of_points<dim>(mesh.cell_type(), error_quadrature_points));
   typename fem::CellValues<dim>::Gradients coordinates, unused;
   Real l2_square = 0.0, h1_square = 0.0;
   VectorX local(mesh.nodes_per_cell());

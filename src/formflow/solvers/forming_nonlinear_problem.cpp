@@ -108,8 +108,7 @@ FormingNonlinearProblem<dim>::exact_stick_nodes() const {
   std::map<Index, std::vector<std::size_t>> points_at;
   for (std::size_t p = 0; p < facets.size(); ++p) {
     const mesh::BoundaryFacet& facet = mesh.facets[facets[p]];
-    const std::vector<int> face_nodes =
-        mesh::face_local_nodes<dim>(mesh.nodes_per_side(), facet.local_face);
+    const std::vector<int> face_nodes = mesh.face_nodes(facet.local_face);
     FF_ASSERT(static_cast<int>(face_nodes.size()) == n_q, "one nodal-rule point per face node");
     for (int q = 0; q < n_q; ++q)
       points_at[mesh.cells(face_nodes[q], facet.cell)].push_back(p * n_q + q);

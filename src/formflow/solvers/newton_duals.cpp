@@ -135,7 +135,7 @@ void update_duals(const assembly::FormingProblem<dim>& problem, const VectorX& u
   // One law dispatch for the whole loop: it evaluates the law twice per point.
   for_each_point_law(problem, [&](const auto& law_of) {
     for_cell_ranges(problem, [&](Index first, Index last) {
-      fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
+      fem::CellValues<dim> values(problem.mesh().cell_type(), problem.full_rule());
       typename fem::CellValues<dim>::Gradients coordinates, velocities, step_velocities,
           next_velocities;
       for (Index cell = first; cell < last; ++cell) {
@@ -187,7 +187,7 @@ void secant_duals(const assembly::FormingProblem<dim>& problem, const VectorX* p
   duals.resize(static_cast<std::size_t>(problem.mesh().n_cells()) * n_q);
   for_each_point_law(problem, [&](const auto& law_of) {
     for_cell_ranges(problem, [&](Index first, Index last) {
-      fem::CellValues<dim> values(problem.mesh().order, problem.full_rule());
+      fem::CellValues<dim> values(problem.mesh().cell_type(), problem.full_rule());
       typename fem::CellValues<dim>::Gradients coordinates, previous_velocities, next_velocities;
       for (Index cell = first; cell < last; ++cell) {
         if (!problem.discretisation().assembles(cell)) continue; // another rank's (its tangent)

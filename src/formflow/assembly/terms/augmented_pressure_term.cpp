@@ -39,13 +39,13 @@ public:
 
 template <int dim>
 std::unique_ptr<CellTerm<dim>> make_augmented_pressure_term(ConstraintMultipliers<dim>& pressure,
-                                                            int order, int nodes_per_cell) {
-  return std::make_unique<AugmentedPressureTerm<dim>>(pressure, order, nodes_per_cell);
+                                                            const mesh::CellType& type) {
+  return std::make_unique<AugmentedPressureTerm<dim>>(pressure, type);
 }
 
 template std::unique_ptr<CellTerm<2>> make_augmented_pressure_term<2>(ConstraintMultipliers<2>&,
-                                                                      int, int);
+                                                                      const mesh::CellType&);
 template std::unique_ptr<CellTerm<3>> make_augmented_pressure_term<3>(ConstraintMultipliers<3>&,
-                                                                      int, int);
+                                                                      const mesh::CellType&);
 
 } // namespace formflow::assembly

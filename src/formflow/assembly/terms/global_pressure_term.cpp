@@ -32,13 +32,13 @@ public:
 
 template <int dim>
 std::unique_ptr<CellTerm<dim>> make_global_pressure_term(ConstraintMultipliers<dim>& pressure,
-                                                         int order, int nodes_per_cell) {
-  return std::make_unique<GlobalPressureTerm<dim>>(pressure, order, nodes_per_cell);
+                                                         const mesh::CellType& type) {
+  return std::make_unique<GlobalPressureTerm<dim>>(pressure, type);
 }
 
-template std::unique_ptr<CellTerm<2>> make_global_pressure_term<2>(ConstraintMultipliers<2>&, int,
-                                                                   int);
-template std::unique_ptr<CellTerm<3>> make_global_pressure_term<3>(ConstraintMultipliers<3>&, int,
-                                                                   int);
+template std::unique_ptr<CellTerm<2>> make_global_pressure_term<2>(ConstraintMultipliers<2>&,
+                                                                   const mesh::CellType&);
+template std::unique_ptr<CellTerm<3>> make_global_pressure_term<3>(ConstraintMultipliers<3>&,
+                                                                   const mesh::CellType&);
 
 } // namespace formflow::assembly

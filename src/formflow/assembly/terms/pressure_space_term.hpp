@@ -4,8 +4,8 @@
 #pragma once
 
 #include "formflow/assembly/terms/terms.hpp"
-#include "formflow/fem/lagrange.hpp"
 #include "formflow/fem/pressure_space.hpp"
+#include "formflow/fem/reference_element.hpp"
 
 namespace formflow::assembly {
 
@@ -13,13 +13,14 @@ namespace formflow::assembly {
 /// coefficients c of σ_H = Σ c_i ψ_i enter the system, not in what σ_H is.
 template <int dim> class PressureSpaceTerm : public CellTerm<dim> {
 public:
-  PressureSpaceTerm(ConstraintMultipliers<dim>& multipliers, int order, int nodes_per_cell)
+  PressureSpaceTerm(ConstraintMultipliers<dim>& multipliers, const mesh::CellType& type)
       : multipliers_(multipliers) {
+    const int nodes_per_cell = mesh::nodes_per_cell<dim>(type);
     at_nodes_.resize(nodes_per_cell,
                      fem::pressure_functions_per_cell<dim>(multipliers.pressure_space()));
     for (int a = 0; a < nodes_per_cell; ++a)
       at_nodes_.row(a) = fem::tabulate_pressure<dim>(multipliers.pressure_space(),
-                                                     fem::reference_node<dim>(order, a))
+                                                     fem::reference_node<dim>(type, a))
                              .transpose();
   }
 

@@ -36,15 +36,14 @@ TermSet<dim> make_terms(const ProblemSettings& settings, const Discretisation<di
   if (multipliers && multipliers->has_pressure_space()) {
     // Case validation: the mixed formulation is plane only.
     if (multipliers->has_global_pressure())
-      terms.cell.push_back(
-          make_global_pressure_term<dim>(*multipliers, mesh.order, mesh.nodes_per_cell()));
+      terms.cell.push_back(make_global_pressure_term<dim>(*multipliers, mesh.cell_type()));
     else if (multipliers->is_exact_pressure())
-      terms.cell.push_back(
-          make_augmented_pressure_term<dim>(*multipliers, mesh.order, mesh.nodes_per_cell()));
+      terms.cell.push_back(make_augmented_pressure_term<dim>(*multipliers, mesh.cell_type()));
     else
-      terms.cell.push_back(
-          make_condensed_pressure_term<dim>(*multipliers, mesh.order, mesh.nodes_per_cell()));
+      terms.cell.push_back(make_condensed_pressure_term<dim>(*multipliers, mesh.cell_type()));
   } else {
+    FF_ASSERT(!mesh.is_simplex(), "simplices take σ_H in a pressure space (reduced "
+                                  "integration of the penalty would lock them)");
     terms.cell.push_back(make_volumetric_penalty_term<dim>(settings.penalty.d, axisymmetric,
                                                            mesh.order, settings.volumetric_points));
   }

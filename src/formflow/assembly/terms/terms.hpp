@@ -27,15 +27,15 @@ std::unique_ptr<CellTerm<dim>> make_volumetric_penalty_term(Real d, bool axisymm
 /// The mixed problem's discontinuous pressure condensed at d > 0: (1/d) Bᵀ M⁻¹ B per cell.
 template <int dim>
 std::unique_ptr<CellTerm<dim>> make_condensed_pressure_term(ConstraintMultipliers<dim>& pressure,
-                                                            int order, int nodes_per_cell);
+                                                            const mesh::CellType& type);
 /// The discontinuous pressure at d = 0: r_e Bᵀ M⁻¹ B and the load −Bᵀ λ_e (Uzawa).
 template <int dim>
 std::unique_ptr<CellTerm<dim>> make_augmented_pressure_term(ConstraintMultipliers<dim>& pressure,
-                                                            int order, int nodes_per_cell);
+                                                            const mesh::CellType& type);
 /// A continuous pressure (Taylor–Hood): the load −Bᵀ p of the saddle-point system.
 template <int dim>
 std::unique_ptr<CellTerm<dim>> make_global_pressure_term(ConstraintMultipliers<dim>& pressure,
-                                                         int order, int nodes_per_cell);
+                                                         const mesh::CellType& type);
 /// ∫ f·v dx.
 template <int dim> std::unique_ptr<CellTerm<dim>> make_body_force_term(BodyForce<dim> force);
 

@@ -29,7 +29,7 @@ std::optional<double> junction_arc_length(const PictureData& data) {
   const mesh::Mesh<2>& mesh = data.mesh;
   std::vector<Index> container_nodes, die_nodes;
   for (const auto& facet : mesh.facets)
-    for (const int local : mesh::face_local_nodes<2>(mesh.nodes_per_side(), facet.local_face)) {
+    for (const int local : mesh.face_nodes(facet.local_face)) {
       if (facet.label == mesh::BoundaryLabel::Container)
         container_nodes.push_back(mesh.cells(local, facet.cell));
       if (facet.label == mesh::BoundaryLabel::Die)

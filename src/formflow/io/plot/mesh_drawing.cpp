@@ -197,7 +197,6 @@ void draw_cell_edges(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>
 }
 
 void draw_boundary(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh) {
-  const int n_side = mesh.nodes_per_side();
   const Stroke outline{1.2, {0.25, 0.25, 0.25}};
   const Stroke symmetry{1.0, {0.25, 0.25, 0.25}, 1.0, 8.0};
   const Stroke die{4.5, {0.08, 0.08, 0.08}};
@@ -206,7 +205,7 @@ void draw_boundary(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& 
     for (const mesh::BoundaryFacet& facet : mesh.facets) {
       if (mesh::is_contact(facet.label) != die_pass) continue;
       std::vector<Pixel> points;
-      for (const int local : mesh::face_local_nodes<2>(n_side, facet.local_face)) {
+      for (const int local : mesh.face_nodes(facet.local_face)) {
         const Index node = mesh.cells(local, facet.cell);
         points.push_back(axes.at(mesh.nodes(0, node), mesh.nodes(1, node)));
       }
@@ -216,14 +215,13 @@ void draw_boundary(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& 
 }
 
 void label_contact_parts(const Canvas& canvas, const Axes& axes, const mesh::Mesh<2>& mesh) {
-  const int n_side = mesh.nodes_per_side();
   for (const auto& [label, name] : {std::pair{mesh::BoundaryLabel::Container, "container wall"},
                                     std::pair{mesh::BoundaryLabel::Die, "die"}}) {
     Point<2> middle = Point<2>::Zero(), normal = Point<2>::Zero();
     Real length = 0.0;
     for (const mesh::BoundaryFacet& facet : mesh.facets) {
       if (facet.label != label) continue;
-      const std::vector<int> nodes = mesh::face_local_nodes<2>(n_side, facet.local_face);
+      const std::vector<int> nodes = mesh.face_nodes(facet.local_face);
       const Point<2> first = mesh.nodes.col(mesh.cells(nodes.front(), facet.cell));
       const Point<2> last = mesh.nodes.col(mesh.cells(nodes.back(), facet.cell));
       Point<2> centre = Point<2>::Zero();
