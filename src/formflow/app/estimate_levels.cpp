@@ -65,8 +65,7 @@ attached_pressure_multipliers(const io::Case& case_, const mesh::Mesh<dim>& mesh
                               assembly::FormingProblem<dim>& problem) {
   if (case_.formulation.type != assembly::FormulationType::Mixed) return nullptr;
   auto pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-      mesh, case_.penalty, case_.formulation, problem.full_rule(), problem.n_contact_points(),
-      problem.discretisation().axisymmetric());
+      mesh, case_.penalty, case_.formulation, problem.full_rule(), problem.n_contact_points());
   problem.attach_multipliers(pressure.get());
   return pressure;
 }

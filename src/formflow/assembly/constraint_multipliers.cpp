@@ -18,7 +18,7 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
                                                   const physics::Penalty& penalty,
                                                   const Formulation& formulation,
                                                   const fem::QuadratureRule<dim>& full_rule,
-                                                  Index n_contact_points, bool axisymmetric)
+                                                  Index n_contact_points)
     : mesh_(mesh), penalty_(penalty), formulation_(formulation) {
   contact_multiplier_.assign(n_contact_points, 0.0);
   contact_weight_.assign(n_contact_points, 0.0);
@@ -40,19 +40,13 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
     values.reinit(coordinates);
-    if (axisymmetric) values.weight_by_radius(); // per radian, as every integral of the run
     MatrixX divergence = MatrixX::Zero(n_pressure_, n_local);
     MatrixX mass = MatrixX::Zero(n_pressure_, n_pressure_);
     VectorX integral = VectorX::Zero(n_pressure_);
     for (int q = 0; q < values.n_points(); ++q) {
       // div(φ_a e_i) = ∂_i φ_a: the flattened gradient is the divergence row.
       const auto& grad = values.gradients(q);
-      VectorX divergence_row = Eigen::Map<const VectorX>(grad.data(), n_local);
-      // Axisymmetry (y = r): ε̇_V = ∂u_r/∂r + u_r/r + ∂u_z/∂z, the hoop part φ_a / r of
-      // the radial component (dim = 2; the axis r = 0 is a symmetry line where u_r = 0).
-      if (axisymmetric && dim == 2)
-        for (int a = 0; a < mesh.nodes_per_cell(); ++a)
-          divergence_row[a * dim + 1] += values.shape(q)[a] / values.point(q)[1];
+      const Eigen::Map<const VectorX> divergence_row(grad.data(), n_local);
       divergence.noalias() += values.JxW(q) * basis[q] * divergence_row.transpose(); // ψ div φ dx
       mass.noalias() += values.JxW(q) * basis[q] * basis[q].transpose();             // ψ ψ dx
       integral += values.JxW(q) * basis[q];

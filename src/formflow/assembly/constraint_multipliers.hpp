@@ -60,7 +60,7 @@ public:
   /// is the number of Γ3 quadrature points (FormingProblem::contact_state order).
   ConstraintMultipliers(const mesh::Mesh<dim>& mesh, const physics::Penalty& penalty,
                         const Formulation& formulation, const fem::QuadratureRule<dim>& full_rule,
-                        Index n_contact_points, bool axisymmetric = false);
+                        Index n_contact_points);
 
   bool has_pressure_space() const { return formulation_.type == FormulationType::Mixed; }
   /// Global pressure dofs solved together with the velocity

@@ -38,27 +38,7 @@ template <int dim> bool CellValues<dim>::reinit(const Gradients& cell_nodes) {
   return valid;
 }
 
-template <int dim>
-FacetValues<dim>::FacetValues(const mesh::CellType& type, const QuadratureRule<dim - 1>& face_rule)
-    : type_(type), face_rule_(face_rule) {
-  const int n_q = face_rule.size();
-  shape_.resize(n_q);
-  gradients_.resize(n_q);
-  jxw_.assign(n_q, 0.0);
-  normals_.assign(n_q, Point<dim>::Zero());
-  points_.assign(n_q, Point<dim>::Zero());
-}
-
 namespace {
-
-/// Where a face's reference point lands in the cell's reference coordinates: ξ = origin +
-/// span · s, with the face's outward unit reference normal.
-template <int dim> struct FaceEmbedding {
-  Point<dim> origin;
-  Eigen::Matrix<Real, dim, dim - 1> span;
-  Point<dim> normal;
-  Real measure_scale = 1.0; ///< reference face measure per unit of the face rule's measure
-};
 
 template <int dim> FaceEmbedding<dim> face_embedding(const mesh::CellType& type, int local_face) {
   FaceEmbedding<dim> face;
@@ -100,8 +80,21 @@ template <int dim> FaceEmbedding<dim> face_embedding(const mesh::CellType& type,
 
 } // namespace
 
+template <int dim>
+FacetValues<dim>::FacetValues(const mesh::CellType& type, const QuadratureRule<dim - 1>& face_rule)
+    : type_(type), face_rule_(face_rule) {
+  for (int face = 0; face < mesh::faces_per_cell<dim>(type); ++face)
+    embeddings_.push_back(face_embedding<dim>(type, face));
+  const int n_q = face_rule.size();
+  shape_.resize(n_q);
+  gradients_.resize(n_q);
+  jxw_.assign(n_q, 0.0);
+  normals_.assign(n_q, Point<dim>::Zero());
+  points_.assign(n_q, Point<dim>::Zero());
+}
+
 template <int dim> void FacetValues<dim>::reinit(const Gradients& cell_nodes, int local_face) {
-  const FaceEmbedding<dim> face = face_embedding<dim>(type_, local_face);
+  const FaceEmbedding<dim>& face = embeddings_[local_face];
   Gradients reference_gradients;
   for (int q = 0; q < n_points(); ++q) {
     const Point<dim> xi = face.origin + face.span * face_rule_.points[q];

@@ -54,6 +54,15 @@ private:
   std::vector<Point<dim>> points_;
 };
 
+/// Where a face's reference point s lands in its cell's reference coordinates,
+/// ξ = origin + span · s, with the face's outward unit reference normal.
+template <int dim> struct FaceEmbedding {
+  Point<dim> origin;
+  Eigen::Matrix<Real, dim, dim - 1> span;
+  Point<dim> normal;
+  Real measure_scale = 1.0; ///< reference face measure per unit of the face rule's measure
+};
+
 /// Shape values, JxW (surface measure) and outward unit normals on one face
 /// of a cell; `face_rule` is a (dim−1)-dimensional rule placed on the face: on
 /// [-1, 1]^(dim−1) for a cube's face and a triangle's edge, on the unit triangle for a
@@ -95,6 +104,8 @@ private:
                                       // (fem/values_cache.hpp)
   mesh::CellType type_;
   QuadratureRule<dim - 1> face_rule_;
+  /// Each local face's place in the reference cell, made once (reinit runs in loops).
+  std::vector<FaceEmbedding<dim>> embeddings_;
   std::vector<VectorX> shape_;
   std::vector<Gradients> gradients_;
   std::vector<Real> jxw_;
