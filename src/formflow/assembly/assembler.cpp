@@ -63,6 +63,7 @@ template <int dim>
 void Assembler<dim>::run(const AssemblyRequest<dim>& request, AssemblySink* sink,
                          PowerTerms* powers) const {
   const AssemblyPass pass = request.pass;
+  FF_ASSERT(!terms_.awaits_pressure, "simplices are assembled with their pressure space");
   FF_ASSERT(request.velocity || pass == AssemblyPass::Secant, "only the start has no velocity");
   FF_ASSERT((pass == AssemblyPass::Power) == (sink == nullptr), "a sink for every pass but Power");
   const bool with_force = pass == AssemblyPass::Force || pass == AssemblyPass::Tangent;

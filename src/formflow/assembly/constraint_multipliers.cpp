@@ -94,15 +94,20 @@ void ConstraintMultipliers<dim>::record_viscous_mass(Index cell, const fem::Cell
 
 template <int dim> void ConstraintMultipliers<dim>::number_vertices() {
   // Vertex i of the Q1 basis sits at lattice position (bit k of i) · order along
-  // direction k of the lexicographic node numbering (fem/lagrange.hpp).
-  FF_ASSERT(!mesh_.is_simplex(), "a continuous pressure on simplices is not built yet");
+  // direction k of the lexicographic node numbering (fem/lagrange.hpp); the P1 basis
+  // function i is simplex vertex i, local node i (fem/simplex_lagrange.hpp).
+  FF_ASSERT(mesh_.is_simplex() == (formulation_.pressure == fem::PressureSpace::P1),
+            "the continuous pressure is P1 on simplices and Q1 on cubes");
   std::vector<Index> vertex_dof(mesh_.n_nodes(), -1);
   pressure_dofs_.reserve(static_cast<std::size_t>(mesh_.n_cells()) * n_pressure_);
   for (Index cell = 0; cell < mesh_.n_cells(); ++cell)
     for (int i = 0; i < n_pressure_; ++i) {
       int local = 0, stride = 1;
-      for (int k = 0; k < dim; ++k, stride *= mesh_.order + 1)
-        local += ((i >> k) & 1) * mesh_.order * stride;
+      if (mesh_.is_simplex())
+        local = i;
+      else
+        for (int k = 0; k < dim; ++k, stride *= mesh_.order + 1)
+          local += ((i >> k) & 1) * mesh_.order * stride;
       Index& dof = vertex_dof[mesh_.cells(local, cell)];
       if (dof < 0) dof = n_pressure_dofs_++;
       pressure_dofs_.push_back(dof);

@@ -9,14 +9,27 @@
 
 namespace formflow::fem {
 
-/// Q1: bilinear/trilinear, 2^dim nodes; Q2: biquadratic/triquadratic, 3^dim nodes.
-enum class ElementKind { Q1, Q2 };
+/// The velocity element (mesh.element). On quadrilaterals and hexahedra: Q1
+/// (bilinear/trilinear, 2^dim nodes) or Q2 (biquadratic/triquadratic, 3^dim nodes). On
+/// triangles and tetrahedra (fem/simplex_lagrange.hpp): P1b (the MINI element, P1 and a
+/// cell bubble, paired with the continuous P1 pressure) or P2 (quadratic; with a
+/// discontinuous pressure enriched by bubbles, P2+, fem/element_choice.hpp).
+enum class ElementKind { Q1, Q2, P1b, P2 };
 
 inline int element_order(ElementKind kind) {
-  return kind == ElementKind::Q1 ? 1 : 2;
+  return kind == ElementKind::Q1 || kind == ElementKind::P1b ? 1 : 2;
+}
+inline bool is_simplex_element(ElementKind kind) {
+  return kind == ElementKind::P1b || kind == ElementKind::P2;
 }
 inline std::string_view element_name(ElementKind kind) {
-  return kind == ElementKind::Q1 ? "Q1" : "Q2";
+  switch (kind) {
+  case ElementKind::Q1: return "Q1";
+  case ElementKind::Q2: return "Q2";
+  case ElementKind::P1b: return "P1b";
+  case ElementKind::P2: return "P2";
+  }
+  return "?";
 }
 
 /// Local node numbering is lexicographic on the reference lattice, x fastest.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Pressure bases: reference monomials (discontinuous spaces) or Q1 vertex functions.
+// Pressure bases: reference monomials (discontinuous spaces) or vertex functions (Q1, P1).
 #include "formflow/fem/pressure_space.hpp"
 
 #include "formflow/fem/lagrange.hpp"
@@ -9,7 +9,8 @@ namespace formflow::fem {
 template <int dim> int pressure_functions_per_cell(PressureSpace space) {
   switch (space) {
   case PressureSpace::P0: return 1;
-  case PressureSpace::P1disc: return dim + 1;
+  case PressureSpace::P1disc:
+  case PressureSpace::P1: return dim + 1;
   case PressureSpace::Q1disc:
   case PressureSpace::Q1: return 1 << dim;
   }
@@ -37,6 +38,13 @@ template <int dim> VectorX tabulate_pressure(PressureSpace space, const Point<di
     tabulate_shape<dim>(1, xi, values, unused);
     break;
   }
+  case PressureSpace::P1:
+    values[0] = 1.0;
+    for (int i = 0; i < dim; ++i) {
+      values[0] -= xi[i];
+      values[i + 1] = xi[i];
+    }
+    break;
   }
   return values;
 }

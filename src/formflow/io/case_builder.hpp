@@ -75,6 +75,7 @@ private:
   void check_formulation() const;
   void check_linear_solver() const;
   void check_acceleration() const;
+  void check_cells() const;
   void check_solid() const;
   void check_mesh_source() const;
   void check_verification() const;

@@ -4,6 +4,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_builder.hpp"
 #include "formflow/io/case_validation_3d.hpp"
+#include "formflow/io/case_validation_simplex.hpp"
 #include "formflow/io/mesh_memory.hpp"
 #include "formflow/io/problem_shape.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
@@ -48,11 +49,13 @@ constexpr bool anderson_by_default_on_saddle_point_secant = true;
 
 } // namespace
 
-/// Keys whose default depends on another key's value: solver.acceleration on the
+/// Keys whose default depends on another key's value: mesh.cell and what it sets
+/// (io/case_validation_simplex.hpp); solver.acceleration on the
 /// saddle point's secant loop (anderson_by_default_on_saddle_point_secant); integration.volumetric
 /// is the element's reduced rule unless set (the complete rule locks Q1,
 /// paper Remark 5.1); an explicit complete rule with Q1 gets a warning.
 void CaseBuilder::resolve_dependent_defaults() {
+  resolve_cell_defaults(case_, [this](const std::string& name) { return origin(name).order > 0; });
   // Laws of an absolute temperature read the case's temperatures in its unit.
   case_.material.parameters_of<physics::SellarsTegart>().absolute_offset =
       physics::absolute_offset(case_.thermal.unit);
@@ -83,6 +86,7 @@ void CaseBuilder::check_cross_keys() const {
   check_order("geometry.exit_half_height", "geometry.entry_half_height");
   check_order("material.rate1", "material.rate2");
   check_die();
+  check_cells();
   check_solid();
   if (case_.mesh.source == mesh::MeshSource::Structured) check_mesh_fits();
   check_mesh_source();
@@ -234,6 +238,13 @@ void CaseBuilder::check_acceleration() const {
     blame({"solver.acceleration_depth", "solver.acceleration"},
           "solver.acceleration_depth is read only by solver.acceleration = \"anderson\"",
           "set solver.acceleration = \"anderson\", or remove solver.acceleration_depth");
+}
+
+/// Cells, element and pressure that go together (io/case_validation_simplex.hpp).
+void CaseBuilder::check_cells() const {
+  const auto refusal =
+      cell_case_problem(case_, [this](const std::string& name) { return origin(name).order > 0; });
+  if (refusal) blame(refusal->keys, refusal->message, refusal->hint);
 }
 
 /// What geometry.dimension = 3 cannot run yet, and solid-channel keys set in vain

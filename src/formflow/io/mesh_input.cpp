@@ -5,8 +5,10 @@
 #include "formflow/core/error.hpp"
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/fem/reference_element.hpp"
+#include "formflow/io/case_validation_simplex.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
+#include "formflow/mesh/simplex_split.hpp"
 #include "formflow/mesh/solid_channel_mesh.hpp"
 #if FORMFLOW_WITH_GMSH
 #include "formflow/mesh/die_face.hpp"
@@ -166,6 +168,10 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
       return mesh::make_solid_channel_mesh(spec.geometry, spec.solid, spec.size, order, drawing);
     mesh::Mesh<2> mesh = mesh::make_die_channel_mesh(spec.geometry, spec.size, order);
     if (drawing) mesh::free_container_wall(mesh);
+    // Triangles: each square cut along a diagonal (io/case_validation_simplex.cpp refuses
+    // the sources that cannot give them yet).
+    const mesh::CellType cells = case_cell_type(case_);
+    if (cells.is_simplex()) return mesh::split_into_triangles(mesh, cells.bubbles);
     return mesh;
   }
 #if FORMFLOW_WITH_GMSH

@@ -3,6 +3,7 @@
 #include "formflow/io/mesh_memory.hpp"
 
 #include "formflow/fem/lagrange.hpp"
+#include "formflow/io/case_validation_simplex.hpp"
 #include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
 #include "formflow/mesh/solid_channel_mesh.hpp"
@@ -96,7 +97,11 @@ std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real s
     return MeshMemoryEstimate{cells, dofs, run_bytes_per_dof * dofs + 8.0 * factor_entries,
                               factor_entries};
   }
-  const Real dofs = 2.0 * order * order * cells;
+  // Triangles halve the structured squares: the same lattice nodes, and a bubble node
+  // per triangle (two per square) where the element has them.
+  const mesh::CellType type = case_cell_type(case_);
+  const Real bubble_nodes = type.is_simplex() && type.bubbles ? 2.0 : 0.0;
+  const Real dofs = 2.0 * (order * order + bubble_nodes) * cells;
   return MeshMemoryEstimate{cells, dofs, run_bytes_per_dof * dofs};
 }
 

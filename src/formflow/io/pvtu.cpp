@@ -58,6 +58,8 @@ fields_pvtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
       }
     mesh::Mesh<dim> piece;
     piece.order = mesh.order;
+    piece.shape = mesh.shape;
+    piece.bubbles = mesh.bubbles;
     piece.nodes.resize(dim, static_cast<Index>(nodes.size()));
     for (std::size_t k = 0; k < nodes.size(); ++k)
       piece.nodes.col(static_cast<Index>(k)) = mesh.nodes.col(nodes[k]);

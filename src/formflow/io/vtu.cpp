@@ -52,6 +52,9 @@ constexpr std::array<int, 27> vtk_from_hex27 = {0,  2,  8,  6,  18, 20, 26, 24, 
                                                 5,  7,  3,  19, 23, 25, 21, 9,  11,
                                                 17, 15, 12, 14, 10, 16, 4,  22, 13};
 
+// Simplices: our local order is VTK's (vertices, then edge midpoints).
+constexpr std::array<int, 10> vtk_from_simplex = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+
 using Out = std::back_insert_iterator<std::string>;
 
 void check_size(std::string_view name, Index actual, Index expected) {
@@ -103,8 +106,8 @@ template <int dim> void points_section(Out out, const mesh::Mesh<dim>& mesh) {
 }
 
 template <int dim> void cells_section(Out out, const mesh::Mesh<dim>& mesh) {
-  const std::span<const int> order = vtk_node_order(mesh.order, dim);
-  const int per_cell = mesh.nodes_per_cell();
+  const std::span<const int> order = vtk_node_order(mesh.cell_type(), dim);
+  const int per_cell = static_cast<int>(order.size());
   fmt::format_to(out, "      <Cells>\n        <DataArray type=\"Int64\" Name=\"connectivity\" "
                       "format=\"ascii\">\n");
   for (Index c = 0; c < mesh.n_cells(); ++c) {
@@ -118,7 +121,7 @@ template <int dim> void cells_section(Out out, const mesh::Mesh<dim>& mesh) {
     fmt::format_to(out, "{}{}", separator(c, 10), static_cast<long long>(c + 1) * per_cell);
   fmt::format_to(out, "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
                       "format=\"ascii\">\n");
-  const int type = vtk_cell_type(mesh.order, dim);
+  const int type = vtk_cell_type(mesh.cell_type(), dim);
   for (Index c = 0; c < mesh.n_cells(); ++c) fmt::format_to(out, "{}{}", separator(c, 20), type);
   fmt::format_to(out, "\n        </DataArray>\n      </Cells>\n");
 }
@@ -204,12 +207,26 @@ std::span<const int> vtk_node_order(int order, int dim) {
       fmt::format("fields.vtu: no VTK node order for order {} in {} dimensions", order, dim));
 }
 
+int vtk_cell_type(const mesh::CellType& type, int dim) {
+  if (!type.is_simplex()) return vtk_cell_type(type.order, dim);
+  if (dim == 2) return type.order == 1 ? 5 : 22;
+  return type.order == 1 ? 10 : 24;
+}
+
+std::span<const int> vtk_node_order(const mesh::CellType& type, int dim) {
+  if (!type.is_simplex()) return vtk_node_order(type.order, dim);
+  const int vertices = dim + 1;
+  const int nodes = type.order == 1 ? vertices : vertices * (vertices + 1) / 2;
+  return std::span<const int>(vtk_from_simplex).first(static_cast<std::size_t>(nodes));
+}
+
 template <int dim>
 std::string fields_vtu(const mesh::Mesh<dim>& mesh, const post::Fields& fields,
                        solvers::StopReason stop_reason, std::span<const Index> cell_ids) {
   if (!cell_ids.empty() && static_cast<Index>(cell_ids.size()) != mesh.n_cells())
     throw InternalError("fields.vtu: one cell_id per cell");
-  if (mesh.nodes_per_cell() != static_cast<int>(vtk_node_order(mesh.order, dim).size()))
+  if (!mesh.is_simplex() &&
+      mesh.nodes_per_cell() != static_cast<int>(vtk_node_order(mesh.order, dim).size()))
     throw InternalError(fmt::format("fields.vtu: cells do not have (order + 1)^{} nodes", dim));
   check_fields(mesh, fields);
   std::string text;

@@ -6,7 +6,9 @@
 #include "formflow/post/results.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include "formflow/mesh/cell_type.hpp"
 #include <array>
+
 #include <span>
 #include <string>
 
@@ -20,6 +22,13 @@ int vtk_cell_type(int order, int dim = 2);
 /// For each VTK node position k, the lexicographic local node index that goes
 /// there (size 4, 9, 8 or 27). See vtu.cpp for the drawing.
 std::span<const int> vtk_node_order(int order, int dim = 2);
+
+/// The same for any cell type. Simplices: 5 (VTK_TRIANGLE), 22 (VTK_QUADRATIC_TRIANGLE),
+/// 10 (VTK_TETRA), 24 (VTK_QUADRATIC_TETRA); their local nodes are already in VTK's
+/// order (fem/simplex_lagrange.hpp), and bubble nodes, which VTK has no cell for, are
+/// left out of the cells (they stay points of the grid, with their values).
+int vtk_cell_type(const mesh::CellType& type, int dim);
+std::span<const int> vtk_node_order(const mesh::CellType& type, int dim);
 
 /// The whole fields.vtu document (ASCII) of a plane (dim 2, points and
 /// velocities get z = 0) or solid (dim 3) mesh.

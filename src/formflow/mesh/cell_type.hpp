@@ -12,6 +12,24 @@ namespace formflow::mesh {
 /// simplex {ξ ≥ 0, Σ ξ ≤ 1} (triangle, tetrahedron).
 enum class CellShape { Cube, Simplex };
 
+/// The cells a case asks for (mesh.cell): the shape together with the dimension it
+/// belongs to, so that a resolved case names what it ran.
+enum class CellKind { Quadrilateral, Triangle, Hexahedron, Tetrahedron };
+
+inline CellShape shape_of(CellKind kind) {
+  return kind == CellKind::Triangle || kind == CellKind::Tetrahedron ? CellShape::Simplex
+                                                                     : CellShape::Cube;
+}
+/// 2 for quadrilaterals and triangles, 3 for hexahedra and tetrahedra.
+inline int dimension_of(CellKind kind) {
+  return kind == CellKind::Quadrilateral || kind == CellKind::Triangle ? 2 : 3;
+}
+/// The kind of `shape` in dimension `dim`.
+inline CellKind cell_kind(CellShape shape, int dim) {
+  if (shape == CellShape::Simplex) return dim == 2 ? CellKind::Triangle : CellKind::Tetrahedron;
+  return dim == 2 ? CellKind::Quadrilateral : CellKind::Hexahedron;
+}
+
 /// The node layout of a mesh's cells. Cubes: Q1 (2^dim nodes) or Q2 (3^dim nodes),
 /// lexicographic (fem/lagrange.hpp). Simplices: P1 (vertices) or P2 (vertices, then edge
 /// midpoints), with `bubbles` also P1b (P1 and a cell-centroid node) or P2+ (P2, the face

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/mesh/box_mesh.hpp"
+#include "formflow/mesh/cell_type.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/mesh_source.hpp"
 #include "formflow/mesh/solid_channel.hpp"
@@ -19,6 +20,9 @@ namespace formflow::mesh {
 /// only the cells' polynomial order, which the caller passes beside the spec.
 struct MeshSpec {
   MeshSource source = MeshSource::Structured; ///< mesh.source
+  /// mesh.cell: quadrilaterals or triangles in 2D, hexahedra or tetrahedra in 3D (the
+  /// case's resolution makes an unset key the cube of geometry.dimension).
+  CellKind cell = CellKind::Quadrilateral;
   /// mesh.size: side of the structured cells, Gmsh's target size, the box mesh's
   /// cell side (1/size cells per direction); unused for a file.
   Real size = 1.0;

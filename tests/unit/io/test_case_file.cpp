@@ -324,6 +324,7 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"geometry.thickness", "1.0"},
       {"geometry.entry_half_width", "10.0"},
       {"geometry.exit_half_width", "5.0"},
+      {"mesh.cell", "\"quadrilateral\""},
       {"mesh.element", "\"Q1\""},
       {"mesh.size", "0.5"},
       {"mesh.source", "\"file\""},

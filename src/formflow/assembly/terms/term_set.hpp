@@ -15,6 +15,10 @@ namespace formflow::assembly {
 template <int dim> struct TermSet {
   std::vector<std::unique_ptr<CellTerm<dim>>> cell;
   std::vector<std::unique_ptr<FaceTerm<dim>>> face;
+  /// Simplices before their pressure space is attached (FormingProblem builds its terms
+  /// in its constructor, then again in attach_multipliers): no pressure term yet, and
+  /// nothing may be assembled with this set.
+  bool awaits_pressure = false;
 
   /// Some term puts loads into F (then the assembler scatters the local loads).
   bool has_loads() const;

@@ -20,19 +20,24 @@ std::vector<CaseKey> formulation_keys() {
           {{"penalty", assembly::FormulationType::Penalty},
            {"mixed", assembly::FormulationType::Mixed}},
           [](auto& c) -> auto& { return c.formulation.type; })
+          .constraint("unset on triangles and tetrahedra: mixed (their penalty method is the "
+                      "mixed formulation with penalty.d > 0)")
           .doc("penalty: problem (3.9), σ_H = ε̇_V/d at the volumetric points; mixed: problem "
                "(3.7), σ_H in formulation.pressure, condensed cell by cell (docs/mixed.md)"),
       enum_key(
           "formulation.pressure", "P1disc",
           {{"P0", fem::PressureSpace::P0},
            {"P1disc", fem::PressureSpace::P1disc},
-           {"Q1", fem::PressureSpace::Q1}},
+           {"Q1", fem::PressureSpace::Q1},
+           {"P1", fem::PressureSpace::P1}},
           [](auto& c) -> auto& { return c.formulation.pressure; })
           .constraint("mixed with Q1 velocity: P0 only; Q1 (Taylor–Hood) needs Q2 velocity and "
-                      "regularized friction")
+                      "regularized friction; P1 only on simplices, the only one for P1b; unset "
+                      "with P1b: P1")
           .doc("pressure space of the mixed formulation: P0 (cell constant), P1disc (cell linear, "
                "discontinuous), both condensed cell by cell, or Q1 (continuous bilinear on the "
-               "vertices, Taylor–Hood: global saddle-point solve with UMFPACK)"),
+               "vertices, Taylor–Hood: global saddle-point solve with UMFPACK), or on triangles "
+               "and tetrahedra P1 (continuous linear: Taylor–Hood with P2, MINI with P1b)"),
       enum_key(
           "formulation.discontinuous_pressure", "condensed",
           {{"condensed", assembly::DiscontinuousPressure::Condensed},

@@ -39,9 +39,28 @@ KeySpec mesh_boundaries_key() {
 std::vector<CaseKey> mesh_keys() {
   return {
       enum_key(
-          "mesh.element", "Q2", {{"Q1", fem::ElementKind::Q1}, {"Q2", fem::ElementKind::Q2}},
+          "mesh.cell", "quadrilateral",
+          {{"quadrilateral", mesh::CellKind::Quadrilateral},
+           {"triangle", mesh::CellKind::Triangle},
+           {"hexahedron", mesh::CellKind::Hexahedron},
+           {"tetrahedron", mesh::CellKind::Tetrahedron}},
+          [](auto& c) -> auto& { return c.mesh.cell; })
+          .constraint("quadrilateral or triangle with geometry.dimension = 2, hexahedron or "
+                      "tetrahedron with 3; unset: the quadrilateral or hexahedron")
+          .doc("cell shape: quadrilaterals/hexahedra (elements Q1, Q2) or triangles/tetrahedra "
+               "(elements P1b, P2; the mixed formulation, docs/simplices.md)"),
+      enum_key(
+          "mesh.element", "Q2",
+          {{"Q1", fem::ElementKind::Q1},
+           {"Q2", fem::ElementKind::Q2},
+           {"P1b", fem::ElementKind::P1b},
+           {"P2", fem::ElementKind::P2}},
           [](auto& c) -> auto& { return c.element; })
-          .doc("velocity element: Q1 (4-node bilinear) or Q2 (9-node biquadratic)"),
+          .constraint("Q1 or Q2 on quadrilaterals and hexahedra, P1b or P2 on triangles and "
+                      "tetrahedra; unset: Q2, or P2 on simplices")
+          .doc("velocity element: Q1 (4-node bilinear), Q2 (9-node biquadratic); on simplices "
+               "P1b (MINI: linear and a cell bubble, continuous P1 pressure) or P2 "
+               "(quadratic; with a discontinuous pressure enriched by bubbles, P2+)"),
       real_key(
           "mesh.size", 1.0, [](auto& c) -> auto& { return c.mesh.size; })
           .within(1e-6, 1e6)

@@ -17,6 +17,8 @@ namespace {
 mesh::Mesh<2> broken_mesh(const mesh::Mesh<2>& mesh) {
   mesh::Mesh<2> broken;
   broken.order = mesh.order;
+  broken.shape = mesh.shape;
+  broken.bubbles = mesh.bubbles;
   const int n = mesh.nodes_per_cell();
   broken.nodes.resize(2, static_cast<Index>(mesh.n_cells()) * n);
   broken.cells.resize(n, mesh.n_cells());

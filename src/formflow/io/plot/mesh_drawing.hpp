@@ -24,20 +24,28 @@ Box bounding_box(const mesh::Mesh<2>& mesh);
 /// (corner polygon) drawn with the x scale of `axes`.
 double cell_pixels(const Axes& axes, const mesh::Mesh<2>& mesh);
 
-/// Samples a nodal field and the geometry of a cell on a (s+1)×(s+1) grid of
-/// reference points through the cell's own shape functions, so Q2 fields and
-/// curved Q2 cells are drawn as the solver sees them.
+/// Samples a nodal field and the geometry of a cell at reference points through the
+/// cell's own shape functions, so Q2/P2 fields and curved cells are drawn as the solver
+/// sees them: an (s+1)×(s+1) grid of a quadrilateral, or the triangular lattice
+/// {(i, j)/s : i + j ≤ s} of a triangle.
 class CellSampler {
 public:
-  CellSampler(int order, int subdivisions);
+  CellSampler(const mesh::CellType& type, int subdivisions);
   int subdivisions() const { return subdivisions_; }
-  /// Grid points of `cell` (lexicographic, x fastest) in pixels, and the field there.
+  /// Sample points of `cell` in pixels, and the field there (the order of pieces()).
   void sample(const mesh::Mesh<2>& mesh, Index cell, const VectorX& nodal, const Axes& axes,
               std::vector<Pixel>& points, std::vector<double>& values) const;
+  /// The small quadrilaterals (or triangles) that tile the cell, as sample-point indices
+  /// counter-clockwise in the reference cell.
+  const std::vector<std::vector<int>>& pieces() const { return pieces_; }
+  /// The sample points along the cell's boundary, counter-clockwise.
+  const std::vector<int>& ring() const { return ring_; }
 
 private:
   int subdivisions_;
-  MatrixX shape_; ///< ((s+1)², nodes per cell) shape values at the grid points
+  MatrixX shape_; ///< (sample points, nodes per cell) shape values at the sample points
+  std::vector<std::vector<int>> pieces_;
+  std::vector<int> ring_;
 };
 
 /// Filled contours of `nodal` (one value per mesh node): each cell is split
