@@ -80,12 +80,6 @@ std::optional<KeyRefusal> simplex_scope_problem(const Case& case_) {
                       "the solid-channel generators come next)",
                       "use mesh.cell = \"hexahedron\" with geometry.dimension = 3, or triangles "
                       "in 2D"};
-  if (case_.mesh.source != mesh::MeshSource::Structured)
-    return KeyRefusal{{"mesh.source", "mesh.cell"},
-                      "triangles are made from the structured channel's squares so far; Gmsh "
-                      "triangulations and .msh files of triangles are not read yet",
-                      "use mesh.source = \"structured\" with mesh.cell = \"triangle\", or "
-                      "quadrilaterals"};
   if (case_.manufactured != physics::ManufacturedSolution::None)
     return KeyRefusal{{"verification.solution", "mesh.cell"},
                       "the manufactured solutions' box mesh is of quadrilaterals only so far",

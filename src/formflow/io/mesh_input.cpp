@@ -68,17 +68,22 @@ void check_jacobians(const Case& case_, const mesh::MeshSpec& spec, const mesh::
     if (gauss_valid && at_nodes.reinit(coordinates)) continue;
     const Point<dim> centre = coordinates.rowwise().mean();
     const Case::KeyLocation where = location_of(case_, "mesh.file");
-    throw InputError(where.file, where.line, "mesh.file",
-                     fmt::format("{}: cell {} (centre {}) is inverted, tangled or "
-                                 "degenerate: its Jacobian is not positive at a {}",
-                                 spec.file, cell, point_text<dim>(centre),
-                                 gauss_valid ? "node (a collapsed edge or a corner angle ≥ 180°)"
-                                             : "Gauss point"),
-                     dim == 2 ? "fix the mesh: every quadrilateral must be convex enough that its "
-                                "isoparametric map is one-to-one"
-                              : "fix the mesh: every hexahedron must be convex enough that its "
-                                "isoparametric map is one-to-one (no face folded, no corner "
-                                "pulled through the opposite face)");
+    throw InputError(
+        where.file, where.line, "mesh.file",
+        fmt::format("{}: cell {} (centre {}) is inverted, tangled or "
+                    "degenerate: its Jacobian is not positive at a {}",
+                    spec.file, cell, point_text<dim>(centre),
+                    gauss_valid ? "node (a collapsed edge or a corner angle ≥ 180°)"
+                                : "Gauss point"),
+        mesh.is_simplex()
+            ? std::string("fix the mesh: every ") + (dim == 2 ? "triangle" : "tetrahedron") +
+                  " must have a positive volume, and curved (second-order) edges "
+                  "must not fold it"
+        : dim == 2 ? "fix the mesh: every quadrilateral must be convex enough that its "
+                     "isoparametric map is one-to-one"
+                   : "fix the mesh: every hexahedron must be convex enough that its "
+                     "isoparametric map is one-to-one (no face folded, no corner "
+                     "pulled through the opposite face)");
   }
 }
 
@@ -95,13 +100,15 @@ template <int dim> mesh::Mesh<dim> read_mesh_file(const Case& case_, const mesh:
   try {
     if constexpr (dim == 2)
       return mesh::gmsh_meshers().read_mesh(resolved_mesh_path(case_, spec), boundary_map(spec),
-                                            fem::element_order(case_.element));
+                                            fem::element_order(case_.element),
+                                            mesh::shape_of(spec.cell));
     else
       return mesh::gmsh_meshers().read_solid_mesh(
           resolved_mesh_path(case_, spec), boundary_map(spec), fem::element_order(case_.element));
   } catch (const mesh::MeshFileError& error) {
     std::string key = "mesh.file";
     if (error.subject == Subject::Element) key = "mesh.element";
+    if (error.subject == Subject::Cell) key = "mesh.cell";
     if (error.subject == Subject::Boundaries) key = "mesh.boundaries";
     if (error.subject == Subject::Group) key = "mesh.boundaries." + error.group;
     // A key at its default has no line: blame the line of mesh.file (or of the map).
@@ -180,8 +187,11 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
       return mesh::gmsh_meshers().solid_channel_mesh(spec.geometry, spec.solid, spec.size, order,
                                                      drawing);
     mesh::Mesh<2> mesh = mesh::gmsh_meshers().channel_mesh(
-        spec.geometry, mesh::die_face_polyline(spec.geometry, spec.size), spec.size, order);
+        spec.geometry, mesh::die_face_polyline(spec.geometry, spec.size), spec.size, order,
+        mesh::shape_of(spec.cell));
     if (drawing) mesh::free_container_wall(mesh);
+    if (const mesh::CellType cells = case_cell_type(case_); cells.bubbles)
+      return mesh::with_bubble_nodes(mesh);
     return mesh;
   }
   // A file's parts are the user's map: drawing maps the wall before the die to free_entry.
@@ -192,7 +202,9 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
     return mesh;
   };
   if (spec.dimension == 3) return checked(read_mesh_file<3>(case_, spec));
-  return checked(read_mesh_file<2>(case_, spec));
+  mesh::Mesh<2> read = read_mesh_file<2>(case_, spec);
+  if (case_cell_type(case_).bubbles) read = mesh::with_bubble_nodes(read);
+  return checked(std::move(read));
 #else
   const auto found = case_.key_locations.find("mesh.source");
   const Case::KeyLocation where =

@@ -59,6 +59,14 @@ ChannelModel add_channel_geometry(const ChannelGeometry& geometry,
   return model;
 }
 
+/// Gmsh's Frontal-Delaunay triangles of target size `size`, complete second order.
+void set_triangle_options(Real size) {
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  gmsh::option::setNumber("Mesh.RecombineAll", 0);
+  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0);
+}
+
 void set_recombined_quadrilateral_options(Real size) {
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   // Frontal-Delaunay triangles recombined by the blossom algorithm into an
@@ -71,7 +79,7 @@ void set_recombined_quadrilateral_options(Real size) {
 
 void build_channel_model(const GmshSession& session, const ChannelGeometry& geometry,
                          const std::vector<Point<2>>& die_face, Real size, int order,
-                         const std::function<void()>& size_field) {
+                         const std::function<void()>& size_field, CellShape shape) {
   FF_ASSERT(order == 1 || order == 2, "order must be 1 or 2");
   session.call([&] {
     gmsh::model::add("channel");
@@ -80,7 +88,10 @@ void build_channel_model(const GmshSession& session, const ChannelGeometry& geom
     for (const auto& [label, curves] : model.parts) add_part(label, curves);
     // Only elements in a physical group are written to a .msh: the surface too.
     gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {model.surface}), "domain");
-    set_recombined_quadrilateral_options(size);
+    if (shape == CellShape::Simplex)
+      set_triangle_options(size);
+    else
+      set_recombined_quadrilateral_options(size);
     if (size_field) size_field();
     gmsh::model::mesh::generate(2);
     if (order == 2) gmsh::model::mesh::setOrder(2);
@@ -88,11 +99,12 @@ void build_channel_model(const GmshSession& session, const ChannelGeometry& geom
 }
 
 Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry,
-                               const std::vector<Point<2>>& die_face, Real size, int order) {
+                               const std::vector<Point<2>>& die_face, Real size, int order,
+                               CellShape shape) {
   GmshSession session;
-  build_channel_model(session, geometry, die_face, size, order);
+  build_channel_model(session, geometry, die_face, size, order, {}, shape);
   try {
-    return mesh_from_gmsh_model(session, {}, order); // the groups carry the part names
+    return mesh_from_gmsh_model(session, {}, order, shape); // the groups carry the part names
   } catch (const MeshFileError& error) {
     // Our own geometry: a failure here is a bug, not the user's input.
     throw InternalError("Gmsh channel mesh: " + error.message);

@@ -38,14 +38,17 @@ void set_recombined_quadrilateral_options(Real size);
 /// the part names (label_name); the surface is the physical group "domain",
 /// so that a written .msh keeps its elements. `size_field`, if given, runs in
 /// the session just before meshing, to replace the uniform size by a field
-/// (mesh/gmsh_sized_channel.hpp).
+/// (mesh/gmsh_sized_channel.hpp). `shape`: recombined quadrilaterals, or Gmsh's
+/// Frontal-Delaunay triangles as they are.
 void build_channel_model(const GmshSession& session, const ChannelGeometry& geometry,
                          const std::vector<Point<2>>& die_face, Real size, int order,
-                         const std::function<void()>& size_field = {});
+                         const std::function<void()>& size_field = {},
+                         CellShape shape = CellShape::Cube);
 
 /// The channel with `die_face`, meshed by Gmsh, as a formflow mesh.
 Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry,
-                               const std::vector<Point<2>>& die_face, Real size, int order);
+                               const std::vector<Point<2>>& die_face, Real size, int order,
+                               CellShape shape = CellShape::Cube);
 
 /// The channel of `geometry` (any die shape, with its land), meshed by Gmsh.
 inline Mesh<2> make_gmsh_channel_mesh(const ChannelGeometry& geometry, Real size, int order) {

@@ -25,7 +25,8 @@ int lexicographic_of_gmsh_node(int order, int gmsh_node);
 /// caller can name the case key: the file itself, one physical group of the
 /// boundary map, the element kind, or the boundary map as a whole.
 struct MeshFileError : std::runtime_error {
-  enum class Subject { File, Group, Element, Boundaries };
+  /// Cell: the file's cells are of the other shape than mesh.cell asks for.
+  enum class Subject { File, Group, Element, Cell, Boundaries };
   Subject subject;
   std::string group; ///< the physical name concerned (Subject::Group), else empty
   std::string message;
@@ -37,7 +38,8 @@ struct MeshFileError : std::runtime_error {
 };
 
 /// Converts the current model of `session`: its 2D elements become the cells
-/// (Gmsh quad-4 → Q1, quad-9 → Q2, reordered lexicographically; clockwise
+/// (Gmsh quad-4 → Q1, quad-9 → Q2, reordered lexicographically; with `shape` =
+/// Simplex tri-3 → P1, tri-6 → P2, already in our order; clockwise
 /// cells are mirrored to counter-clockwise), the cell faces used by one cell
 /// only are the boundary facets, labelled by the physical curve groups named
 /// in `boundaries`. Several names may map to one part; an empty `boundaries`
@@ -50,7 +52,8 @@ struct MeshFileError : std::runtime_error {
 /// parts, and boundary facets without a label.
 /// The Jacobian of the cells is not checked here (see fem::CellValues).
 Mesh<2> mesh_from_gmsh_model(const GmshSession& session,
-                             const std::vector<PhysicalBoundary>& boundaries, int order);
+                             const std::vector<PhysicalBoundary>& boundaries, int order,
+                             CellShape shape = CellShape::Cube);
 
 /// Reads a mesh file through Gmsh (.msh 4.1 or 2.2, ASCII or binary) and
 /// converts it as mesh_from_gmsh_model does. The file is data, never a
@@ -58,7 +61,7 @@ Mesh<2> mesh_from_gmsh_model(const GmshSession& session,
 /// private copy (mesh/msh_file.hpp). A missing or unreadable file, or one that
 /// is not MSH, is a MeshFileError with Subject::File.
 Mesh<2> read_gmsh_mesh(const std::string& path, const std::vector<PhysicalBoundary>& boundaries,
-                       int order);
+                       int order, CellShape shape = CellShape::Cube);
 
 /// Writes the mesh of the current model of `session` as .msh format 4.1.
 void write_gmsh_mesh(const GmshSession& session, const std::string& path, bool binary);

@@ -22,14 +22,14 @@ namespace formflow::mesh {
 struct GmshMeshers {
   std::size_t size = sizeof(GmshMeshers); ///< the module's view of this struct (checked)
   Mesh<2> (*channel_mesh)(const ChannelGeometry& geometry, const std::vector<Point<2>>& die_face,
-                          Real size, int order) = nullptr;
+                          Real size, int order, CellShape shape) = nullptr;
   Mesh<2> (*sized_channel_mesh)(const ChannelGeometry& geometry,
                                 const std::vector<Point<2>>& die_face, const Mesh<2>& background,
                                 const VectorX& node_sizes, int order) = nullptr;
   Mesh<3> (*solid_channel_mesh)(const ChannelGeometry& geometry, const SolidChannel& solid,
                                 Real size, int order, bool drawing) = nullptr;
   Mesh<2> (*read_mesh)(const std::string& path, const std::vector<PhysicalBoundary>& boundaries,
-                       int order) = nullptr;
+                       int order, CellShape shape) = nullptr;
   Mesh<3> (*read_solid_mesh)(const std::string& path,
                              const std::vector<PhysicalBoundary>& boundaries, int order) = nullptr;
 };

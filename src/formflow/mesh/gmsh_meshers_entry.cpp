@@ -10,8 +10,9 @@ namespace {
 
 formflow::mesh::Mesh<2> channel_mesh(const formflow::mesh::ChannelGeometry& geometry,
                                      const std::vector<formflow::Point<2>>& die_face,
-                                     formflow::Real size, int order) {
-  return formflow::mesh::make_gmsh_channel_mesh(geometry, die_face, size, order);
+                                     formflow::Real size, int order,
+                                     formflow::mesh::CellShape shape) {
+  return formflow::mesh::make_gmsh_channel_mesh(geometry, die_face, size, order, shape);
 }
 
 } // namespace

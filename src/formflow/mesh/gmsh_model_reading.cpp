@@ -26,7 +26,7 @@ template <int dim> struct Words {
   static constexpr const char* group = dim == 2 ? "curve" : "surface";
   static constexpr const char* facets = dim == 2 ? "facets" : "faces";
   static constexpr const char* domain = dim == 2 ? "surface" : "volume";
-  static constexpr const char* cell = dim == 2 ? "quadrilateral" : "hexahedron";
+  static constexpr const char* cell = "cell";
 };
 
 template <int dim> FacetKey<dim> sorted(FacetKey<dim> corners) {

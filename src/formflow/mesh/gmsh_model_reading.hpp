@@ -14,7 +14,7 @@ namespace formflow::mesh::gmsh_reading {
 
 /// Gmsh element type numbers (gmsh.h getElementProperties, .msh format documentation).
 constexpr int line2 = 1, line3 = 8, quad4 = 3, quad9 = 10, quad8 = 16, hexa8 = 5, hexa27 = 12,
-              hexa20 = 17;
+              hexa20 = 17, triangle3 = 2, triangle6 = 9, tetra4 = 4, tetra10 = 11;
 
 /// Gmsh's name of element type `type` ("Quadrilateral 9", "Hexahedron 20", ...).
 /// Call it while a GmshSession is open.

@@ -94,7 +94,6 @@ TEST(CellKeys, SimplicesRefuseTheVolumetricPenaltyAndTheCubesPressures) {
 }
 
 TEST(CellKeys, WhatSimplicesDoNotRunYetIsRefusedByItsKey) {
-  refusal("[mesh]\ncell = \"triangle\"\nsource = \"gmsh\"\n", "mesh.source", 3);
   refusal("[mesh]\ncell = \"triangle\"\n[adapt]\ntarget_error = 0.01\n", "adapt.target_error", 4);
   refusal("[geometry]\ndimension = 3\nsection = \"slab\"\n[mesh]\ncell = \"tetrahedron\"\n",
           "mesh.cell", 5);

@@ -37,8 +37,8 @@ TEST(GmshModuleLoading, OnlyTheFirstGmshMeshMapsGmsh) {
   EXPECT_EQ(before.find("libgmsh"), std::string::npos) << "Gmsh mapped before any Gmsh mesh";
   EXPECT_EQ(before.find("libformflow_gmsh"), std::string::npos);
 
-  const Mesh<2> unstructured =
-      gmsh_meshers().channel_mesh(geometry, die_face_polyline(geometry, 2.5), 2.5, 2);
+  const Mesh<2> unstructured = gmsh_meshers().channel_mesh(
+      geometry, die_face_polyline(geometry, 2.5), 2.5, 2, CellShape::Cube);
   EXPECT_GT(unstructured.n_cells(), 0);
   const std::string after = mapped_objects();
   EXPECT_NE(after.find("libformflow_gmsh"), std::string::npos);
