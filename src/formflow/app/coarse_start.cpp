@@ -125,7 +125,8 @@ coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, P
       // pressure (condensed for Newton, which runs mixed cases only with d > 0, d_N > 0).
       if (case_.formulation.type == assembly::FormulationType::Mixed) {
         mixed_pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-            mesh, case_.penalty, formulation, problem->full_rule(), problem->n_contact_points());
+            mesh, case_.penalty, formulation, problem->full_rule(), problem->n_contact_points(),
+            problem->discretisation().axisymmetric());
         problem->attach_multipliers(mixed_pressure.get());
       }
       if (level < levels)

@@ -65,7 +65,8 @@ attached_pressure_multipliers(const io::Case& case_, const mesh::Mesh<dim>& mesh
                               assembly::FormingProblem<dim>& problem) {
   if (case_.formulation.type != assembly::FormulationType::Mixed) return nullptr;
   auto pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-      mesh, case_.penalty, case_.formulation, problem.full_rule(), problem.n_contact_points());
+      mesh, case_.penalty, case_.formulation, problem.full_rule(), problem.n_contact_points(),
+      problem.discretisation().axisymmetric());
   problem.attach_multipliers(pressure.get());
   return pressure;
 }

@@ -255,7 +255,8 @@ void solve_on(const io::Case& case_, const mesh::Mesh<dim>& mesh, bool mesh_from
   std::unique_ptr<assembly::ConstraintMultipliers<dim>> constraint_multipliers;
   if (case_.formulation.type == assembly::FormulationType::Mixed || case_.penalty.d_n == 0) {
     constraint_multipliers = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-        mesh, case_.penalty, case_.formulation, problem->full_rule(), problem->n_contact_points());
+        mesh, case_.penalty, case_.formulation, problem->full_rule(), problem->n_contact_points(),
+        problem->discretisation().axisymmetric());
     problem->attach_multipliers(constraint_multipliers.get());
   }
   const SolvePlan plan = make_solve_plan(case_);

@@ -18,8 +18,9 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
                                                   const physics::Penalty& penalty,
                                                   const Formulation& formulation,
                                                   const fem::QuadratureRule<dim>& full_rule,
-                                                  Index n_contact_points)
+                                                  Index n_contact_points, bool axisymmetric)
     : mesh_(mesh), penalty_(penalty), formulation_(formulation) {
+  FF_ASSERT(!axisymmetric || dim == 2, "axisymmetry is a plane model");
   contact_multiplier_.assign(n_contact_points, 0.0);
   contact_weight_.assign(n_contact_points, 0.0);
   if (!has_pressure_space()) return;
@@ -40,13 +41,19 @@ ConstraintMultipliers<dim>::ConstraintMultipliers(const mesh::Mesh<dim>& mesh,
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
     values.reinit(coordinates);
+    if (axisymmetric) values.weight_by_radius();
     MatrixX divergence = MatrixX::Zero(n_pressure_, n_local);
     MatrixX mass = MatrixX::Zero(n_pressure_, n_pressure_);
     VectorX integral = VectorX::Zero(n_pressure_);
+    VectorX divergence_row(n_local);
     for (int q = 0; q < values.n_points(); ++q) {
-      // div(φ_a e_i) = ∂_i φ_a: the flattened gradient is the divergence row.
+      // div(φ_a e_i) = ∂_i φ_a: the flattened gradient is the divergence row; in
+      // axisymmetry the radial component adds its hoop rate φ_a/r.
       const auto& grad = values.gradients(q);
-      const Eigen::Map<const VectorX> divergence_row(grad.data(), n_local);
+      divergence_row = Eigen::Map<const VectorX>(grad.data(), n_local);
+      if (axisymmetric)
+        for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+          divergence_row[a * dim + 1] += values.shape(q)[a] / values.point(q)[1];
       divergence.noalias() += values.JxW(q) * basis[q] * divergence_row.transpose(); // ψ div φ dx
       mass.noalias() += values.JxW(q) * basis[q] * basis[q].transpose();             // ψ ψ dx
       integral += values.JxW(q) * basis[q];

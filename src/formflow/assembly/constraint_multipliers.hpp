@@ -58,9 +58,11 @@ template <int dim> class ConstraintMultipliers {
 public:
   /// `full_rule` integrates B and M exactly on affine cells; `n_contact_points`
   /// is the number of Γ3 quadrature points (FormingProblem::contact_state order).
+  /// `axisymmetric` (y = r): the integrals are per radian (dx = r dr dz) and the
+  /// divergence has the hoop rate, div(φ_a e_r) = ∂_r φ_a + φ_a/r.
   ConstraintMultipliers(const mesh::Mesh<dim>& mesh, const physics::Penalty& penalty,
                         const Formulation& formulation, const fem::QuadratureRule<dim>& full_rule,
-                        Index n_contact_points);
+                        Index n_contact_points, bool axisymmetric = false);
 
   bool has_pressure_space() const { return formulation_.type == FormulationType::Mixed; }
   /// Global pressure dofs solved together with the velocity

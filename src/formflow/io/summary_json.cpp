@@ -274,6 +274,18 @@ json summary_document(const Case& case_, const post::Results& results) {
   out["power"] = power_json(results.power);
   out["max_equivalent_strain_rate"] = results.max_equivalent_strain_rate;
   out["contact"] = contact_json(case_, results);
+  if (results.exit.present) {
+    const post::ExitFlow& exit = results.exit;
+    // The exit section (post/exit_flow.hpp): axial velocity, its spread, the flux balance.
+    out["exit"] = {
+        {"velocity",
+         {{"min", exit.velocity_min}, {"mean", exit.velocity_mean}, {"max", exit.velocity_max}}},
+        {"nonuniformity", exit.nonuniformity},
+        {"flux_balance", exit.flux_balance},
+        {"exit_flux", exit.exit_flux},
+        {"entry_flux", exit.entry_flux},
+        {"area", exit.area}};
+  }
   if (results.thermal.enabled) out["thermal"] = thermal_json(results.thermal);
   out["mesh"] = mesh_json(case_, results);
   if (!results.adapt.cycles.empty()) {

@@ -3,6 +3,7 @@
 #include "formflow/post/post_process.hpp"
 
 #include "formflow/mesh/cell_diameter.hpp"
+#include "formflow/post/exit_flow.hpp"
 
 namespace formflow::post {
 
@@ -46,6 +47,7 @@ void evaluate_results(const assembly::FormingProblem<dim>& problem, const Vector
                                                 results.fields.equivalent_strain_rate.maxCoeff());
   results.contact = contact_profile(problem, contact);
   contact_zones(problem, contact, results.container_zones, results.die_zones);
+  results.exit = exit_flow(problem, u);
 }
 
 template void evaluate_results<2>(const assembly::FormingProblem<2>&, const VectorX&, Results&,

@@ -45,6 +45,21 @@ struct ContactSample {
   int part = 0;                ///< 0 container, 1 die (mesh::BoundaryLabel order)
 };
 
+/// The flow through the exit section (the "front" facets) against the entry (the "rear"
+/// facets): what extrusion engineers read (post/exit_flow.hpp). In axisymmetry the
+/// integrals are per radian, like every other one.
+struct ExitFlow {
+  bool present = false; ///< the mesh has both an exit and an entry section
+  /// Axial velocity u_x over the exit: the smallest and largest at the exit's nodes, and
+  /// the mean ∫ u_x dA / ∫ dA.
+  Real velocity_min = 0.0, velocity_mean = 0.0, velocity_max = 0.0;
+  Real nonuniformity = 0.0; ///< (max − min) / mean
+  Real area = 0.0;          ///< ∫ dA of the exit section
+  Real exit_flux = 0.0;     ///< ∫ u·n dA over the exit (outflow > 0)
+  Real entry_flux = 0.0;    ///< −∫ u·n dA over the entry (inflow > 0)
+  Real flux_balance = 0.0;  ///< exit_flux / entry_flux − 1
+};
+
 /// Stick and slip zones of one contact part, measured with the Γ3 quadrature weights
 /// (each point stands for its share JxW of the boundary).
 struct ContactZones {
@@ -201,6 +216,7 @@ struct Results {
   Fields fields;
   std::vector<ContactSample> contact;
   ContactZones container_zones, die_zones;
+  ExitFlow exit; ///< the exit section's velocities and the flux balance
   Augmentation augmentation;
   ThermalResults thermal;
   LoadErrorEstimate load_error;

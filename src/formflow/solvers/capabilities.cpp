@@ -36,10 +36,6 @@ std::optional<Refusal> refusal(const ProblemShape& shape) {
                    "friction.stick = \"exact\" needs one friction multiplier per Γ3 node "
                    "(with face Gauss points the stuck tractions are not unique)",
                    "use contact.normals = \"nodes\", or friction.stick = \"augmented\""};
-  if (shape.mixed && shape.axisymmetric)
-    return Refusal{{"formulation.type", "geometry.symmetry"},
-                   "the mixed formulation is plane only: its pressure term has no hoop part u_r/r",
-                   "use formulation.type = \"penalty\" for axisymmetric runs"};
   if (shape.global_pressure && shape.exact_friction)
     return Refusal{{pressure_key(shape), "friction.regularization"},
                    fmt::format("exact friction (its augmented-Lagrangian loop runs the CHOLMOD "

@@ -28,7 +28,7 @@ ProblemSettings settings(int volumetric_points) {
 }
 
 /// A smooth, non-uniform velocity so that the secant viscosity varies in every cell.
-VectorX lagged_velocity(const mesh::Mesh<2>& mesh) {
+VectorX mixed_lagged_velocity(const mesh::Mesh<2>& mesh) {
   VectorX w(mesh.n_nodes() * 2);
   for (Index node = 0; node < mesh.n_nodes(); ++node) {
     const Real x = mesh.nodes(0, node), y = mesh.nodes(1, node);
@@ -50,7 +50,7 @@ std::pair<MatrixX, MatrixX> penalty_and_mixed(int order, int points, fem::Pressu
   ConstraintMultipliers<2> multipliers(mesh, penalty_settings.penalty, formulation,
                                        mixed.full_rule(), mixed.n_contact_points());
   mixed.attach_multipliers(&multipliers);
-  const VectorX w = lagged_velocity(mesh);
+  const VectorX w = mixed_lagged_velocity(mesh);
   LinearSystem a = penalty.plan().make_system(), b = mixed.plan().make_system();
   penalty.assemble(&w, a);
   mixed.assemble(&w, b);

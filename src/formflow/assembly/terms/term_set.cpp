@@ -34,7 +34,7 @@ TermSet<dim> make_terms(const ProblemSettings& settings, const Discretisation<di
   TermSet<dim> terms;
   terms.cell.push_back(make_viscous_term<dim>(settings.law, settings.viscous_strain, axisymmetric));
   if (multipliers && multipliers->has_pressure_space()) {
-    // Case validation: the mixed formulation is plane only.
+    // Axisymmetry is in the multipliers' cell matrices (the hoop rate in B).
     if (multipliers->has_global_pressure())
       terms.cell.push_back(make_global_pressure_term<dim>(*multipliers, mesh.cell_type()));
     else if (multipliers->is_exact_pressure())

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// Exit velocities and the flux balance (post/exit_flow.hpp).
+#include "formflow/post/exit_flow.hpp"
+
+#include "formflow/fem/dof_map.hpp"
+#include "formflow/fem/reference_element.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace formflow::post {
+
+template <int dim>
+ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& u) {
+  const mesh::Mesh<dim>& mesh = problem.discretisation().mesh();
+  const bool axisymmetric = problem.discretisation().axisymmetric();
+  fem::FacetValues<dim> face(mesh.cell_type(), fem::face_rule<dim>(mesh.cell_type()));
+  typename fem::FacetValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
+  ExitFlow flow;
+  Real axial_integral = 0.0, entry_area = 0.0;
+  flow.velocity_min = std::numeric_limits<Real>::infinity();
+  flow.velocity_max = -std::numeric_limits<Real>::infinity();
+  for (const mesh::BoundaryFacet& facet : mesh.facets) {
+    const bool exit = facet.label == mesh::BoundaryLabel::Front;
+    if (!exit && facet.label != mesh::BoundaryLabel::Rear) continue;
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+      coordinates.col(a) = mesh.nodes.col(mesh.cells(a, facet.cell));
+    face.reinit(coordinates, facet.local_face);
+    if (axisymmetric) face.weight_by_radius();
+    for (int q = 0; q < face.n_points(); ++q) {
+      Point<dim> velocity = Point<dim>::Zero();
+      for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+        velocity += face.shape(q)[a] *
+                    u.template segment<dim>(fem::dof_of<dim>(mesh.cells(a, facet.cell), 0));
+      const Real normal_flux = velocity.dot(face.normal(q)) * face.JxW(q);
+      if (exit) {
+        flow.exit_flux += normal_flux;
+        axial_integral += velocity[0] * face.JxW(q);
+        flow.area += face.JxW(q);
+      } else {
+        flow.entry_flux -= normal_flux;
+        entry_area += face.JxW(q);
+      }
+    }
+    if (!exit) continue;
+    for (const int local : mesh.face_nodes(facet.local_face)) {
+      const Real axial = u[fem::dof_of<dim>(mesh.cells(local, facet.cell), 0)];
+      flow.velocity_min = std::min(flow.velocity_min, axial);
+      flow.velocity_max = std::max(flow.velocity_max, axial);
+    }
+  }
+  flow.present = flow.area > 0 && entry_area > 0;
+  if (!flow.present) return ExitFlow{};
+  flow.velocity_mean = axial_integral / flow.area;
+  flow.nonuniformity = (flow.velocity_max - flow.velocity_min) / flow.velocity_mean;
+  flow.flux_balance = flow.exit_flux / flow.entry_flux - 1.0;
+  return flow;
+}
+
+template ExitFlow exit_flow<2>(const assembly::FormingProblem<2>&, const VectorX&);
+template ExitFlow exit_flow<3>(const assembly::FormingProblem<3>&, const VectorX&);
+
+} // namespace formflow::post
