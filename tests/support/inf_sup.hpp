@@ -8,6 +8,7 @@
 #include "formflow/fem/cell_values.hpp"
 #include "formflow/fem/dof_map.hpp"
 #include "formflow/fem/pressure_space.hpp"
+#include "formflow/fem/reference_element.hpp"
 #include "formflow/mesh/mesh.hpp"
 
 #include <Eigen/Cholesky>
@@ -63,8 +64,11 @@ inline PressureNumbering number_pressures(const mesh::Mesh<2>& mesh, fem::Pressu
         numbering.dofs(i, cell) = numbering.n_dofs++;
         continue;
       }
-      // Vertex i = (bit 0: ξ side, bit 1: η side) in the lexicographic lattice.
-      const int local = (i & 1) * mesh.order + ((i >> 1) & 1) * mesh.order * (mesh.order + 1);
+      // Q1: vertex i = (bit 0: ξ side, bit 1: η side) in the lexicographic lattice;
+      // P1: simplex vertex i, local node i.
+      const int local = mesh.is_simplex()
+                            ? i
+                            : (i & 1) * mesh.order + ((i >> 1) & 1) * mesh.order * (mesh.order + 1);
       const auto [entry, inserted] = vertex_dof.emplace(mesh.cells(local, cell), numbering.n_dofs);
       if (inserted) ++numbering.n_dofs;
       numbering.dofs(i, cell) = entry->second;
@@ -76,7 +80,7 @@ inline PressureNumbering number_pressures(const mesh::Mesh<2>& mesh, fem::Pressu
 inline std::vector<Index> interior_dofs(const mesh::Mesh<2>& mesh, Index& n_free) {
   std::vector<bool> on_boundary(mesh.n_nodes(), false);
   for (const mesh::BoundaryFacet& facet : mesh.facets)
-    for (int local : mesh::face_local_nodes<2>(mesh.nodes_per_side(), facet.local_face))
+    for (int local : mesh.face_nodes(facet.local_face))
       on_boundary[mesh.cells(local, facet.cell)] = true;
   std::vector<Index> free(mesh.n_nodes() * 2, -1);
   n_free = 0;
@@ -134,8 +138,8 @@ inline InfSupEstimate inf_sup_constant(const mesh::Mesh<2>& mesh, fem::PressureS
   const PressureNumbering pressure = number_pressures(mesh, space);
   const int n_p = fem::pressure_functions_per_cell<2>(space);
   const int n_local = mesh.nodes_per_cell() * 2;
-  const fem::QuadratureRule<2> rule = fem::gauss_rule<2>(mesh.order + 1);
-  fem::CellValues<2> values(mesh.order, rule);
+  const fem::QuadratureRule<2> rule = fem::full_rule<2>(mesh.cell_type());
+  fem::CellValues<2> values(mesh.cell_type(), rule);
   fem::CellValues<2>::Gradients coordinates(2, mesh.nodes_per_cell());
 
   MatrixX laplacian = MatrixX::Zero(n_free, n_free);

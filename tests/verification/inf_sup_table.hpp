@@ -4,6 +4,7 @@
 #pragma once
 
 #include "formflow/mesh/channel_mesh.hpp"
+#include "formflow/mesh/simplex_split.hpp"
 #include "support/inf_sup.hpp"
 
 #include <cstdio>
@@ -17,6 +18,8 @@ struct Pair {
   int order;
   fem::PressureSpace space;
   bool filter;
+  /// Triangles (the squares cut along a diagonal), with or without bubble nodes.
+  bool triangles = false, bubbles = false;
 };
 
 inline const std::vector<Pair>& inf_sup_pairs() {
@@ -28,6 +31,10 @@ inline const std::vector<Pair>& inf_sup_pairs() {
       {"Q1-P0", 1, fem::PressureSpace::P0, false},
       {"Q1-P0 + 2x2 macro filter", 1, fem::PressureSpace::P0, true},
       {"Q1-Q1", 1, fem::PressureSpace::Q1, false},
+      {"P2+-P1disc (triangles)", 2, fem::PressureSpace::P1disc, false, true, true},
+      {"P2-P1 (Taylor-Hood, triangles)", 2, fem::PressureSpace::P1, false, true, false},
+      {"P1b-P1 (MINI, triangles)", 1, fem::PressureSpace::P1, false, true, true},
+      {"P2-P1disc (no bubbles, triangles)", 2, fem::PressureSpace::P1disc, false, true, false},
   };
   return pairs;
 }
@@ -47,7 +54,8 @@ inf_sup_table(const std::vector<int>& cells_per_unit) {
     std::vector<testing::InfSupEstimate> row;
     std::string line = "| " + pair.name + " |";
     for (int n : cells_per_unit) {
-      const mesh::Mesh<2> mesh = mesh::make_channel_mesh(geometry, 1.0 / n, pair.order);
+      mesh::Mesh<2> mesh = mesh::make_channel_mesh(geometry, 1.0 / n, pair.order);
+      if (pair.triangles) mesh = mesh::split_into_triangles(mesh, pair.bubbles);
       row.push_back(testing::inf_sup_constant(mesh, pair.space, pair.filter));
       char cell[64];
       std::snprintf(cell, sizeof cell, " %.4f (%d null) |", row.back().beta,

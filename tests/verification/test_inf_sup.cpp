@@ -7,13 +7,25 @@
 namespace formflow::testing {
 namespace {
 
-enum Row { Q2P1disc, Q2P0, TaylorHood, Q2Q1disc, Q1P0, Q1P0Filtered, Q1Q1 };
+enum Row {
+  Q2P1disc,
+  Q2P0,
+  TaylorHood,
+  Q2Q1disc,
+  Q1P0,
+  Q1P0Filtered,
+  Q1Q1,
+  P2PlusP1disc,
+  P2P1,
+  Mini,
+  P2P1discWithoutBubbles
+};
 
 TEST(InfSup, StablePairsStayBoundedAndUnstableOnesDoNot) {
   const auto table = inf_sup_table({4, 8});
   // Stable pairs: only the constant pressure is in the null space, and β_h
   // does not fall as h halves (a 10 % margin for the pre-asymptotic rungs).
-  for (Row row : {Q2P1disc, Q2P0, TaylorHood}) {
+  for (Row row : {Q2P1disc, Q2P0, TaylorHood, P2PlusP1disc, P2P1, Mini}) {
     SCOPED_TRACE(inf_sup_pairs()[row].name);
     for (const auto& estimate : table[row]) EXPECT_EQ(estimate.n_null_modes, 1);
     EXPECT_GT(table[row][1].beta, 0.9 * table[row][0].beta);
@@ -24,6 +36,9 @@ TEST(InfSup, StablePairsStayBoundedAndUnstableOnesDoNot) {
   EXPECT_LT(table[Q1P0][1].beta, 0.75 * table[Q1P0][0].beta);
   // Q1–Q1 (equal order) has spurious pressure modes.
   for (const auto& estimate : table[Q1Q1]) EXPECT_GE(estimate.n_null_modes, 2);
+  // Without its bubbles P2 cannot carry a discontinuous linear pressure: spurious modes
+  // (why mesh.element = "P2" takes bubbles with P1disc, fem/element_choice.hpp).
+  for (const auto& estimate : table[P2P1discWithoutBubbles]) EXPECT_GE(estimate.n_null_modes, 2);
   // The macro filter removes the checkerboard from the null space.
   for (const auto& estimate : table[Q1P0Filtered]) EXPECT_EQ(estimate.n_null_modes, 1);
 }
