@@ -60,7 +60,7 @@ TEST(StageRefusals, EachRefusedPairExitsTwoNamingTheKeys) {
        {"thermal.enabled=true", "thermal.max_temperature=1000", "solver.load_error=\"refined\""},
        "solver.load_error",
        "thermal.enabled",
-       "hot forming has no load error estimate yet"},
+       "hot forming has no refined load error estimate yet"},
   };
   const formflow::testing::ScratchDirectory scratch("formflow-stages");
   for (const RefusedPair& pair : pairs) {

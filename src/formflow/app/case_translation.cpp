@@ -18,13 +18,6 @@
 
 namespace formflow::app {
 
-InputError KeyPlaces::error(const std::string& key, const std::string& message,
-                            const std::string& hint) const {
-  const auto where = places.find(key);
-  if (where == places.end()) return InputError(source, 0, key, message, hint);
-  return InputError(where->second.file, where->second.line, key, message, hint);
-}
-
 namespace {
 
 /// The discrete problem's parameters taken from `case_`, with the loop's friction

@@ -168,9 +168,15 @@ load_error_of(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
       resolved_load_error_method(plan, mesh_from_plan, dim, problem.plan().n_dofs(), why);
   if (method == solvers::LoadErrorMethod::None) return no_estimate(why);
   if (!converged) return no_estimate("the run did not converge");
-  if (plan.thermal.enabled)
+  // Hot forming: only the run's own stages (the thermal coupling around the loop) solve a
+  // level with the heat coupling, and only the "coarser" estimate's levels are such runs;
+  // "auto" keeps hot runs without a bar (their levels would cost coupled solves unasked).
+  const bool coupled_levels =
+      plan.thermal.enabled && plan.solver.load_error == solvers::LoadErrorMethod::Coarser;
+  if (plan.thermal.enabled && !coupled_levels)
     return no_estimate("hot forming: the other levels would solve the flow without the heat "
-                       "coupling's temperature");
+                       "coupling's temperature; solver.load_error = \"coarser\" solves its "
+                       "levels 2h and 4h with the coupling");
   const std::string no_tangent = without_newton_tangent(plan, problem);
   if (method == solvers::LoadErrorMethod::Coarser) {
     if (!coarser_levels_fit(plan, mesh_from_plan))
@@ -179,8 +185,9 @@ load_error_of(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
           "(twice and four times mesh.size must divide its lengths); \"refined\" estimates "
           "any mesh");
     // Newton's levels where it reaches the problem (the load then its driven force at
-    // u, as the levels'), else the run's own loop on each level and its reported load.
-    return no_tangent.empty()
+    // u, as the levels'), else the run's own stages on each level (its loop, the heat
+    // coupling) and its reported load.
+    return no_tangent.empty() && !coupled_levels
                ? coarser_levels_estimate(plan, problem, u, post::driven_load(problem, u), false,
                                          times, on_iteration)
                : coarser_levels_estimate(plan, problem, u, run_load, true, times, on_iteration);

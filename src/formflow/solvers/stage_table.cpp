@@ -65,14 +65,16 @@ const std::vector<StageRow>& stage_rows() {
                              "solver.method = \"newton\"");
       },
       [](const StageSet& s) -> std::optional<StageRefusal> {
-        // The estimate's other levels would solve the flow at the billet's temperature,
-        // not the coupling's; "auto" says so in summary.json instead of refusing.
-        if (!s.thermal || !s.estimate_asked) return std::nullopt;
+        // The refined estimate settles and linearises the flow alone on the refined mesh;
+        // the "coarser" one's levels are whole runs of the stages, the coupling among them.
+        if (!s.thermal || !s.refined_estimate_asked) return std::nullopt;
         return StageRefusal{"solver.load_error", "thermal.enabled",
-                            "hot forming has no load error estimate yet: its other levels "
-                            "would solve the flow without the heat coupling's temperature",
-                            "set solver.load_error = \"auto\" or \"none\" (the run then says "
-                            "why it has no bar), or thermal.enabled = false"};
+                            "hot forming has no refined load error estimate yet: its settle "
+                            "and adjoint on the refined mesh would solve the flow without the "
+                            "heat coupling's temperature",
+                            "set solver.load_error = \"coarser\" (its levels 2h and 4h solve "
+                            "the coupling; 4 mesh.size must divide the channel), \"auto\" or "
+                            "\"none\", or thermal.enabled = false"};
       },
       [](const StageSet& s) -> std::optional<StageRefusal> {
         if (s.ranks <= 1 || s.petsc) return std::nullopt;

@@ -120,6 +120,33 @@ TEST(StageComposition, ThermalWithTheAutomaticEstimateSaysWhyItHasNoBar) {
       << results.load_error.unavailable;
 }
 
+TEST(StageComposition, CoarserEstimateSolvesItsLevelsWithTheCoupling) {
+  // h = 1/4: the structured channel admits 2h and 4h (= 1, mesh II's own size). The
+  // coupling of this fixture contracts slowly on the finer meshes (44 steps on h/2 to
+  // thermal.coupling_tolerance): each run gets the steps it needs, not the default 30.
+  const std::vector<io::Override> hot_runs = {{"thermal.max_coupling_iterations", "100"}};
+  std::vector<io::Override> estimated = hot_runs;
+  estimated.insert(estimated.end(), {{"mesh.size", "0.25"}, {"solver.load_error", "\"coarser\""}});
+  const io::Case case_ = small_case(estimated, hot_text);
+  const post::Results results = app::simulate(case_).results;
+  ASSERT_TRUE(results.converged());
+  ASSERT_TRUE(results.thermal.coupling_converged);
+  const post::LoadErrorEstimate& estimate = results.load_error;
+  ASSERT_TRUE(estimate.error.has_value()) << estimate.unavailable;
+  EXPECT_EQ(estimate.method, "coarser");
+  // Each level is a whole hot run (the thermal stage around its loop), counted per level.
+  EXPECT_GT(estimate.coarser_newton_iterations, 0);
+  EXPECT_GT(estimate.penalty_newton_iterations, 0);
+  // The bar's claim: |p_h − p| ≤ error. The hot run on h/2 is closer to p: with the
+  // levels' contraction q the bound's tail is |p_h − p_{h/2}|/(1 − q) ≥ |p_h − p_{h/2}|,
+  // so the refined run's load must lie within the bar.
+  std::vector<io::Override> refined = hot_runs;
+  refined.insert(refined.end(), {{"mesh.size", "0.125"}, {"solver.load_error", "\"none\""}});
+  const post::Results finer = app::simulate(small_case(refined, hot_text)).results;
+  ASSERT_TRUE(finer.converged());
+  EXPECT_LE(std::abs(finer.pressure.ram_reaction - results.pressure.ram_reaction), *estimate.error);
+}
+
 /// The InputError that composing `plan` throws: empty key if none is thrown.
 InputError refusal_of(const app::RunPlan& plan) {
   try {
