@@ -144,8 +144,8 @@ std::optional<Simulation> end_on_refined_mesh(const RunPlan& run, const Simulati
   return last;
 }
 
-/// The case of an intermediate cycle: the linearised estimate, indicators only.
-RunPlan cheap_cycle_case(const RunPlan& run) {
+/// The plan of an intermediate cycle: the linearised estimate, indicators only.
+RunPlan cheap_cycle_plan(const RunPlan& run) {
   RunPlan cheap = run;
   cheap.solver.load_error = solvers::LoadErrorMethod::Linearized;
   cheap.adapt.indicators_only = true;
@@ -216,7 +216,7 @@ Simulation simulate_adaptive(const RunPlan& plan, const IterationCallback& on_it
   IterationCallback staged = cycle_stage(0, nullptr);
   Simulation simulation = solve_cycle(run, nullptr, nullptr, staged); // cycle 0: the plan's mesh
   // Later cycles mark with the cheap estimate; the full one only where it may stop.
-  const RunPlan cheap = cheap_cycle_case(run);
+  const RunPlan cheap = cheap_cycle_plan(run);
   CheapCycles predictions =
       cheap_cycles ? calibrate_on_first_cycle(cheap, simulation) : CheapCycles{};
   bool cheap_cycle = false;
@@ -351,7 +351,7 @@ Simulation simulate_adaptive(const RunPlan& plan, const IterationCallback& on_it
 #endif
   }
   // The other phases are the last cycle's; "total" is the whole run's (every cycle),
-  // added by the run around this stage (app/simulation.cpp).
+  // added by the run around this stage (app/run.cpp).
   simulation.results.adapt = std::move(record);
   return simulation;
 }

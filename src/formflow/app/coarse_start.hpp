@@ -48,7 +48,7 @@ bool size_fits(const mesh::MeshSpec& spec, Real size);
 /// interpolation as "coarse start"), so the solver time includes the coarse work.
 /// std::nullopt when no coarse level is used (L = 0, none fits, mesh from a file).
 /// Each level varies only the mesh spec (plan.mesh with a larger size) and the
-/// iteration control; the case itself is read, never copied. `fine` is the case's
+/// iteration control; the plan itself is read, never copied. `fine` is the run's
 /// discretisation, of the dimension the case's mesh source makes, and so is every
 /// coarse level. Each level's velocity goes to the next mesh by interpolation, its Γ3
 /// nodes' normal velocity (which carries the contact pressure) as a scalar of its own

@@ -49,12 +49,12 @@ coarser_levels_estimate(const RunPlan& plan, const assembly::FormingProblem<dim>
   const mesh::Mesh<dim>& mesh = problem.mesh();
   post::LoadErrorEstimate estimate;
   // A level on `level_mesh` from `start`, a field on it.
-  const auto level = [&](const RunPlan& level_case, mesh::Mesh<dim> level_mesh,
+  const auto level = [&](const RunPlan& level_plan, mesh::Mesh<dim> level_mesh,
                          const VectorX& start, Index& iterations, std::string_view what) {
     const IterationCallback staged = level_stage(on_iteration, what, level_mesh);
     return own_loop
-               ? solved_by_own_loop(level_case, std::move(level_mesh), start, iterations, staged)
-               : solved_level(level_case, std::move(level_mesh), start, iterations, staged);
+               ? solved_by_own_loop(level_plan, std::move(level_mesh), start, iterations, staged)
+               : solved_level(level_plan, std::move(level_mesh), start, iterations, staged);
   };
   // The next coarser level from `from`'s velocity `field` restricted (interpolated).
   const auto coarsened = [&](Real size, const mesh::Mesh<dim>& from, const VectorX& field,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A run of a plan: its mesh, then the stages composed around the solve.
+// A run of a plan: its mesh, then the stages composed around the solve (app/run.hpp).
 #include "formflow/app/run.hpp"
 
 #include "formflow/app/manufactured_mesh.hpp"
