@@ -31,11 +31,6 @@ std::string arguments_of(const RefusedPair& pair, const fs::path& output) {
 
 TEST(StageRefusals, EachRefusedPairExitsTwoNamingTheKeys) {
   const std::vector<RefusedPair> pairs = {
-      {"adapt + thermal",
-       {"adapt.target_error=0.01", "thermal.enabled=true", "thermal.max_temperature=1000"},
-       "thermal.enabled",
-       "adapt.target_error",
-       "adaptivity with hot forming is not done yet"},
       {"adapt + manufactured",
        {"adapt.target_error=0.01", "verification.solution=\"smooth\"", "mesh.size=0.25"},
        "verification.solution",
@@ -56,11 +51,11 @@ TEST(StageRefusals, EachRefusedPairExitsTwoNamingTheKeys) {
        "solver.method",
        "adapt.target_error",
        "the secant iteration has no such start"},
-      {"thermal + estimate",
-       {"thermal.enabled=true", "thermal.max_temperature=1000", "solver.load_error=\"refined\""},
+      {"thermal + linearised estimate",
+       {"thermal.enabled=true", "thermal.max_temperature=1000", "solver.load_error=\"linearized\""},
        "solver.load_error",
        "thermal.enabled",
-       "hot forming has no refined load error estimate yet"},
+       "hot forming has no linearised load error estimate"},
   };
   const formflow::testing::ScratchDirectory scratch("formflow-stages");
   for (const RefusedPair& pair : pairs) {

@@ -74,5 +74,35 @@ TEST(AdaptiveStagePairs, CoarseStartInsideTheFirstCycle) {
   EXPECT_EQ(sequenced.adapt.cycles[0].dofs, plain.adapt.cycles[0].dofs);
 }
 
+TEST(AdaptiveStagePairs, HotCycles) {
+  // The ThermalBalance fixture's adiabatic tools; its coupling contracts slowly on the
+  // finer meshes: each hot run (the cycles and their estimates' levels) gets the steps
+  // it needs.
+  const io::Case case_ = two_small_cycles({{"solver.load_error", "\"refined\""},
+                                           {"thermal.enabled", "true"},
+                                           {"thermal.billet_temperature", "0"},
+                                           {"thermal.tool_temperature", "0"},
+                                           {"thermal.max_temperature", "1000"},
+                                           {"thermal.conductivity", "1e-3"},
+                                           {"thermal.heat_transfer", "0"},
+                                           {"thermal.max_coupling_iterations", "100"}});
+  const std::vector<std::string> names = stage_names(case_);
+  EXPECT_NE(std::find(names.begin(), names.end(), "thermal coupling"), names.end());
+  const post::Results results = app::simulate(case_).results;
+  ASSERT_TRUE(results.converged()) << solvers::stop_reason_name(results.stop_reason);
+  ASSERT_EQ(results.adapt.cycles.size(), 2u) << results.adapt.stop;
+  EXPECT_EQ(results.adapt.stop, "max_cycles");
+  for (const post::AdaptCycle& cycle : results.adapt.cycles) {
+    EXPECT_TRUE(cycle.estimate.has_value()) << "each cycle's hot estimate decides its stop";
+    EXPECT_FALSE(cycle.estimate_predicted) << "a hot run's cycles get the full estimate";
+  }
+  EXPECT_GT(results.adapt.cycles[1].dofs, results.adapt.cycles[0].dofs);
+  // The last cycle is a hot run on the remeshed channel: its coupling block and T field.
+  EXPECT_TRUE(results.thermal.enabled);
+  EXPECT_TRUE(results.thermal.coupling_converged);
+  EXPECT_EQ(results.fields.temperature.size(), results.fields.velocity.size() / 2);
+  ASSERT_TRUE(results.load_error.error.has_value()) << results.load_error.unavailable;
+}
+
 } // namespace
 } // namespace formflow

@@ -200,9 +200,12 @@ Simulation simulate_adaptive(const RunPlan& plan, const IterationCallback& on_it
   // on to 65 k, 37 s against 14 s with full cycles), and calibrating again as they grow
   // cost the Q2 runs what the cheap cycles save (docs/error-estimation.md, session 20).
   const solvers::LoadErrorMethod asked = plan.solver.load_error;
+  // A hot run's cycles all get the full estimate: its levels are hot runs, and the cheap
+  // (linearised) estimate has no hot form.
   const bool cheap_cycles =
-      asked == solvers::LoadErrorMethod::Linearized ||
-      (asked != solvers::LoadErrorMethod::Refined && plan.element == fem::ElementKind::Q2);
+      !plan.thermal.enabled &&
+      (asked == solvers::LoadErrorMethod::Linearized ||
+       (asked != solvers::LoadErrorMethod::Refined && plan.element == fem::ElementKind::Q2));
   run.solver.load_error = solvers::LoadErrorMethod::Refined;
   const post::AdaptSettings& adapt = plan.adapt;
   post::AdaptRecord record;
@@ -277,10 +280,12 @@ Simulation simulate_adaptive(const RunPlan& plan, const IterationCallback& on_it
           offset && std::abs(*offset) >= adapt.target_error * std::abs(entry.load)) {
         // Which key to lower: each doubled alone on this cycle's mesh (a few solves from
         // the converged field, made once, when the run stops).
+        // (A hot run's doubled runs would each be hot runs: its message names them all.)
         std::string keys;
-        for (const auto& [key, change] : regularisation_offsets<2>(
-                 run, simulation.plane_mesh(), results.fields.velocity, entry.load))
-          keys += fmt::format("{}{} ({:.2g})", keys.empty() ? "" : ", ", key, std::abs(change));
+        if (!run.thermal.enabled)
+          for (const auto& [key, change] : regularisation_offsets<2>(
+                   run, simulation.plane_mesh(), results.fields.velocity, entry.load))
+            keys += fmt::format("{}{} ({:.2g})", keys.empty() ? "" : ", ", key, std::abs(change));
         finish(fmt::format(
             "the regularisations' offset |p(2ε) − p(ε)| = {:.3g} alone is at least the target "
             "{:.3g} (adapt.target_error × |p|), and refining the mesh does not lower it: lower "

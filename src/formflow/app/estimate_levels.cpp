@@ -2,6 +2,8 @@
 // The error estimate's other levels: solved to δ by Newton or by the run's own loop, and
 // the case with its regularisations doubled.
 #include "formflow/app/estimate_levels.hpp"
+#include "formflow/app/thermal_coupling.hpp"
+#include "formflow/assembly/heat_problem.hpp"
 
 #include "formflow/physics/friction.hpp"
 #include "formflow/post/load_error_estimate.hpp"
@@ -131,7 +133,18 @@ std::optional<SolvedLevel<dim>> solved_by_own_loop(const RunPlan& plan, mesh::Me
   level.mesh = std::move(std::get<mesh::Mesh<dim>>(simulation.mesh));
   level.load = simulation.results.pressure.ram_reaction;
   level.velocity = std::move(simulation.results.fields.velocity);
+  if (simulation.results.thermal.enabled)
+    level.temperature = std::move(simulation.results.thermal.temperature);
   return level;
+}
+
+template <int dim>
+void set_level_temperature(const RunPlan& plan, assembly::FormingProblem<dim>& problem,
+                           const VectorX& T) {
+  const assembly::HeatProblem<dim> heat(problem.discretisation(), plan.thermal);
+  problem.set_point_temperatures(law_temperatures(plan.thermal, heat.point_values(T)));
+  if (physics::needs_shear_yield(plan.problem.friction))
+    problem.set_contact_temperatures(law_temperatures(plan.thermal, heat.contact_values(T)));
 }
 
 RunPlan doubled_regularisations(const RunPlan& plan) {
@@ -170,6 +183,8 @@ attached_pressure_multipliers<2>(const RunPlan&, const mesh::Mesh<2>&,
 template std::optional<Real> solved_load<2>(const RunPlan&, const mesh::Mesh<2>&, VectorX, Index&,
                                             const IterationCallback&, VectorX*);
 template mesh::Mesh<2> channel_at<2>(const RunPlan&, Real);
+template void set_level_temperature<2>(const RunPlan&, assembly::FormingProblem<2>&,
+                                       const VectorX&);
 template std::optional<SolvedLevel<2>> solved_level<2>(const RunPlan&, mesh::Mesh<2>, VectorX,
                                                        Index&, const IterationCallback&);
 template std::optional<SolvedLevel<2>> solved_by_own_loop<2>(const RunPlan&, mesh::Mesh<2>,
@@ -185,6 +200,8 @@ attached_pressure_multipliers<3>(const RunPlan&, const mesh::Mesh<3>&,
 template std::optional<Real> solved_load<3>(const RunPlan&, const mesh::Mesh<3>&, VectorX, Index&,
                                             const IterationCallback&, VectorX*);
 template mesh::Mesh<3> channel_at<3>(const RunPlan&, Real);
+template void set_level_temperature<3>(const RunPlan&, assembly::FormingProblem<3>&,
+                                       const VectorX&);
 template std::optional<SolvedLevel<3>> solved_level<3>(const RunPlan&, mesh::Mesh<3>, VectorX,
                                                        Index&, const IterationCallback&);
 template std::optional<SolvedLevel<3>> solved_by_own_loop<3>(const RunPlan&, mesh::Mesh<3>,

@@ -53,6 +53,7 @@ template <int dim> struct SolvedLevel {
   mesh::Mesh<dim> mesh;
   Real load = 0.0;
   VectorX velocity;
+  VectorX temperature; ///< nodal T of a hot level solved by its own stages; else empty
 };
 
 /// `mesh` solved to δ by Newton from `start` (a field on `mesh`); its load the driven
@@ -70,6 +71,13 @@ template <int dim>
 std::optional<SolvedLevel<dim>> solved_by_own_loop(const RunPlan& plan, mesh::Mesh<dim> mesh,
                                                    const VectorX& start, Index& iterations,
                                                    const IterationCallback& on_iteration);
+
+/// The nodal temperature `T` on `problem`'s mesh set as its flow law's temperature (at
+/// the full-rule points, and at the Γ3 points for a shear-yield threshold), clamped as the
+/// coupling clamps it (law_temperatures): a level of a hot run's estimate at that level's T.
+template <int dim>
+void set_level_temperature(const RunPlan& plan, assembly::FormingProblem<dim>& problem,
+                           const VectorX& T);
 
 /// The case with every regularisation doubled: the penalties d (incompressibility, also
 /// the mixed formulation's), d_N (contact) and d_T (friction), and the paper's power

@@ -103,6 +103,91 @@ void complete_estimate(const RunPlan& plan, const assembly::FormingProblem<dim>&
       post::load_error_bound(estimate.enriched_change, *ratio, *estimate.penalty_change);
 }
 
+/// The refined estimate of a hot run (docs/error-estimation.md, "Hot forming"): every
+/// level a whole hot run of the stages inside the estimate (the coupling around the loop,
+/// solved_by_own_loop), from u carried over. p_{h/2} is the hot run on the refined mesh;
+/// the cell indicators the weighted residuals of u against its velocity, with the
+/// reaction's adjoint at its velocity and temperature (post::weighted_residual_estimate:
+/// both fields converged, so they sum to the solved p_{h/2} − p_h within δ); the ratio
+/// observed with a hot run on 2h where the structured channel admits it (else q assumed,
+/// as the isothermal estimate without a third level); the regularisations' offset from a
+/// hot run with them doubled on the run's mesh. `load` is the run's reported reaction
+/// (the levels' loads are theirs).
+template <int dim>
+post::LoadErrorEstimate
+hot_refined_estimate(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
+                     const VectorX& u, Real load, bool mesh_from_plan, PhaseTimes& times,
+                     const IterationCallback& on_iteration) {
+  ScopedTimer timer(times, "error estimate");
+  const mesh::Mesh<dim>& mesh = problem.mesh();
+  mesh::RefinedMesh<dim> refined = estimate_mesh(plan, mesh, mesh_from_plan);
+  post::LoadErrorEstimate estimate;
+  Index settle_iterations = 0;
+  const VectorX prolonged = fem::interpolate_nodal_field(mesh, u, dim, refined.mesh);
+  const IterationCallback settle_stage =
+      level_stage(on_iteration, "the mesh refined once", refined.mesh);
+  const std::optional<SolvedLevel<dim>> fine = solved_by_own_loop(
+      plan, mesh::Mesh<dim>(refined.mesh), prolonged, settle_iterations, settle_stage);
+  if (!fine) return no_estimate("the hot run on the mesh refined once did not converge");
+  {
+    assembly::FormingProblem<dim> fine_problem(fine->mesh, plan.problem);
+    const auto pressure = attached_pressure_multipliers(plan, fine->mesh, fine_problem);
+    set_level_temperature(plan, fine_problem, fine->temperature);
+    estimate = post::weighted_residual_estimate(problem, u, fine_problem, fine->velocity,
+                                                refined.parent, plan.solve.linear);
+  }
+  if (!estimate.unavailable.empty()) return estimate;
+  estimate.method = "refined";
+  estimate.enriched_change = fine->load - load; // the solved difference, not the indicators'
+  estimate.enriched_dofs = static_cast<Index>(fine->velocity.size());
+  estimate.settle_iterations = static_cast<int>(settle_iterations);
+  estimate.refined_velocity = fine->velocity;
+  const Real coarser_size = 2 * plan.mesh.size;
+  if (mesh_from_plan && plan.mesh.source == mesh::MeshSource::Structured &&
+      size_fits(plan.mesh, coarser_size)) {
+    mesh::Mesh<dim> coarser = channel_at<dim>(plan, coarser_size);
+    const VectorX start = fem::interpolate_nodal_field(mesh, u, dim, coarser);
+    const IterationCallback staged =
+        level_stage(on_iteration, "the third level, the mesh coarsened once", coarser);
+    Index iterations = 0;
+    const std::optional<SolvedLevel<dim>> level =
+        solved_by_own_loop(plan, std::move(coarser), start, iterations, staged);
+    if (level && level->load != load) {
+      estimate.coarser_change = load - level->load;
+      estimate.observed_ratio = estimate.enriched_change / *estimate.coarser_change;
+    }
+  }
+  const std::optional<Real> ratio = post::tail_ratio(estimate.observed_ratio);
+  if (!ratio) {
+    estimate.unavailable =
+        fmt::format("the hot runs on 2h, h, h/2 do not converge monotonically (ratio of their "
+                    "differences {:.3g}): no tail can be summed",
+                    *estimate.observed_ratio);
+    return estimate;
+  }
+  estimate.ratio = *ratio;
+  estimate.discretisation_error = post::discretisation_tail(estimate.enriched_change, *ratio);
+  estimate.error = estimate.discretisation_error;
+  // An adaptive cycle whose tail from p_{h/2} alone is above the target stops on
+  // neither mesh: the doubled run would not change the decision.
+  const Real target = plan.adapt.cycle_target * std::abs(load);
+  if (target > 0 && post::tail_beyond_refined(estimate.enriched_change, *ratio) > target)
+    return estimate;
+  const std::optional<SolvedLevel<dim>> doubled = solved_by_own_loop(
+      doubled_regularisations(plan), mesh::Mesh<dim>(mesh), u, estimate.penalty_newton_iterations,
+      level_stage(on_iteration, "the regularisations doubled", mesh));
+  if (!doubled) {
+    estimate.error.reset();
+    estimate.unavailable =
+        "the hot run with doubled regularisations (d, d_N, d_T, α) did not converge";
+    return estimate;
+  }
+  estimate.penalty_change = doubled->load - load;
+  estimate.error =
+      post::load_error_bound(estimate.enriched_change, *ratio, *estimate.penalty_change);
+  return estimate;
+}
+
 /// Why Newton's tangent does not reach the run's problem, empty if it does: the refined
 /// estimate's settle and adjoint need it; the coarser one then solves its levels by the
 /// run's own loop.
@@ -168,15 +253,17 @@ load_error_of(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
       resolved_load_error_method(plan, mesh_from_plan, dim, problem.plan().n_dofs(), why);
   if (method == solvers::LoadErrorMethod::None) return no_estimate(why);
   if (!converged) return no_estimate("the run did not converge");
-  // Hot forming: only the run's own stages (the thermal coupling around the loop) solve a
-  // level with the heat coupling, and only the "coarser" estimate's levels are such runs;
-  // "auto" keeps hot runs without a bar (their levels would cost coupled solves unasked).
+  // Hot forming: every level of its estimate is a whole hot run of the stages inside the
+  // estimate (the coupling around the loop): "coarser" and "refined" when asked for (an
+  // adaptive run asks for "refined"). "auto" keeps hot runs without a bar (their levels
+  // would cost coupled solves unasked); "linearized" has no hot form (no settle).
   const bool coupled_levels =
-      plan.thermal.enabled && plan.solver.load_error == solvers::LoadErrorMethod::Coarser;
+      plan.thermal.enabled && (plan.solver.load_error == solvers::LoadErrorMethod::Coarser ||
+                               plan.solver.load_error == solvers::LoadErrorMethod::Refined);
   if (plan.thermal.enabled && !coupled_levels)
     return no_estimate("hot forming: the other levels would solve the flow without the heat "
-                       "coupling's temperature; solver.load_error = \"coarser\" solves its "
-                       "levels 2h and 4h with the coupling");
+                       "coupling's temperature; solver.load_error = \"coarser\" or "
+                       "\"refined\" solves its levels with the coupling");
   const std::string no_tangent = without_newton_tangent(plan, problem);
   if (method == solvers::LoadErrorMethod::Coarser) {
     if (!coarser_levels_fit(plan, mesh_from_plan))
@@ -191,6 +278,10 @@ load_error_of(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
                ? coarser_levels_estimate(plan, problem, u, post::driven_load(problem, u), false,
                                          times, on_iteration)
                : coarser_levels_estimate(plan, problem, u, run_load, true, times, on_iteration);
+  }
+  if (coupled_levels) {
+    if (!no_tangent.empty()) return no_estimate(no_tangent); // the adjoint is Newton's
+    return hot_refined_estimate(plan, problem, u, run_load, mesh_from_plan, times, on_iteration);
   }
   if (!no_tangent.empty()) {
     // "auto" fell back to the refined estimate because the mesh has no coarser levels:

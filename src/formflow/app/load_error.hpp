@@ -51,8 +51,11 @@ mesh::RefinedMesh<dim> estimate_mesh(const RunPlan& plan, const mesh::Mesh<dim>&
 ///   unavailable for exact friction, d = 0 or d_N = 0, Taylor–Hood.
 /// - "coarser": the loads at 2h and 4h (post::coarser_levels_bound), by Newton where it
 ///   reaches the problem, else by the run's own loop on each level.
+/// - a hot run, "refined" or "coarser" asked for: every level a whole hot run of the
+///   stages (the coupling around the loop, solved_by_own_loop); see hot_refined_estimate.
 /// Says why not (LoadErrorEstimate::unavailable) for "none", a run that did not
-/// converge, hot forming, or a mesh the method cannot use (docs/error-estimation.md).
+/// converge, a hot run under "auto" or "linearized", or a mesh the method cannot use
+/// (docs/error-estimation.md).
 template <int dim>
 post::LoadErrorEstimate
 load_error_of(const RunPlan& plan, const assembly::FormingProblem<dim>& problem, const VectorX& u,

@@ -11,8 +11,8 @@ solvers::StageSet stage_set(const Case& case_) {
   stages.manufactured = case_.manufactured != physics::ManufacturedSolution::None;
   stages.thermal = case_.thermal.enabled;
   stages.adapt = case_.adapt.enabled();
-  stages.refined_estimate_asked = case_.solver.load_error == solvers::LoadErrorMethod::Refined ||
-                                  case_.solver.load_error == solvers::LoadErrorMethod::Linearized;
+  stages.linearized_estimate_asked =
+      case_.solver.load_error == solvers::LoadErrorMethod::Linearized;
   stages.exact_friction = case_.friction.regularization == physics::FrictionRegularization::None;
   stages.exact_incompressibility =
       case_.formulation.type == assembly::FormulationType::Mixed && case_.penalty.d == 0;

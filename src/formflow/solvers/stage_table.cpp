@@ -40,10 +40,6 @@ const std::vector<StageRow>& stage_rows() {
                              "manufactured solution does not have");
       },
       [](const StageSet& s) -> std::optional<StageRefusal> {
-        if (!s.adapt || !s.thermal) return std::nullopt;
-        return adapt_refusal("thermal.enabled", "adaptivity with hot forming is not done yet");
-      },
-      [](const StageSet& s) -> std::optional<StageRefusal> {
         if (!s.adapt || !s.exact_friction) return std::nullopt;
         return adapt_refusal("friction.regularization",
                              "exact friction has no error estimate to drive adaptivity (no "
@@ -65,16 +61,17 @@ const std::vector<StageRow>& stage_rows() {
                              "solver.method = \"newton\"");
       },
       [](const StageSet& s) -> std::optional<StageRefusal> {
-        // The refined estimate settles and linearises the flow alone on the refined mesh;
-        // the "coarser" one's levels are whole runs of the stages, the coupling among them.
-        if (!s.thermal || !s.refined_estimate_asked) return std::nullopt;
+        // The linearised estimate is one adjoint at u prolonged, no settle: a hot level
+        // is a whole hot run (the coupling around the loop), which "refined" and
+        // "coarser" solve.
+        if (!s.thermal || !s.linearized_estimate_asked) return std::nullopt;
         return StageRefusal{"solver.load_error", "thermal.enabled",
-                            "hot forming has no refined load error estimate yet: its settle "
-                            "and adjoint on the refined mesh would solve the flow without the "
-                            "heat coupling's temperature",
-                            "set solver.load_error = \"coarser\" (its levels 2h and 4h solve "
-                            "the coupling; 4 mesh.size must divide the channel), \"auto\" or "
-                            "\"none\", or thermal.enabled = false"};
+                            "hot forming has no linearised load error estimate: each level of "
+                            "a hot run's estimate is a whole hot run, which the linearised one "
+                            "does not solve",
+                            "set solver.load_error = \"refined\" or \"coarser\" (their levels "
+                            "solve the coupling), \"auto\" or \"none\", or thermal.enabled = "
+                            "false"};
       },
       [](const StageSet& s) -> std::optional<StageRefusal> {
         if (s.ranks <= 1 || s.petsc) return std::nullopt;

@@ -15,9 +15,9 @@ struct StageSet {
   bool manufactured = false; ///< verification.solution ≠ "none": the manufactured run
   bool thermal = false;      ///< thermal.enabled: the heat coupling around the flow loop
   bool adapt = false;        ///< adapt.target_error > 0: the adaptive cycles
-  /// solver.load_error given as "refined" or "linearized": the estimate settled or
-  /// linearised on the refined mesh (not "coarser", whose levels are whole runs).
-  bool refined_estimate_asked = false;
+  /// solver.load_error given as "linearized": the adjoint at u prolonged to the refined
+  /// mesh, no settle there (its "refined" and "coarser" levels are whole runs).
+  bool linearized_estimate_asked = false;
   int ranks = 1; ///< MPI ranks (> 1: a distributed run, issue 20)
   // What the adaptive cycles and the distributed run ask of the solve inside them.
   bool exact_friction = false;          ///< friction.regularization = "none"
@@ -41,9 +41,9 @@ struct StageRefusal {
 };
 
 /// The first row of the table that refuses `stages`, or nothing when they compose.
-/// Rows in the order they are checked: adaptivity (with a manufactured solution, hot
-/// forming, exact friction, exact constraints, the secant method), hot forming (with the
-/// refined estimate asked for), then a distributed run (another back-end than PETSc, a
+/// Rows in the order they are checked: adaptivity (with a manufactured solution, exact
+/// friction, exact constraints, the secant method), hot forming (with the linearised
+/// estimate asked for), then a distributed run (another back-end than PETSc, a
 /// manufactured solution, exact stick, Taylor–Hood).
 std::optional<StageRefusal> refused_composition(const StageSet& stages);
 

@@ -147,6 +147,34 @@ TEST(StageComposition, CoarserEstimateSolvesItsLevelsWithTheCoupling) {
   EXPECT_LE(std::abs(finer.pressure.ram_reaction - results.pressure.ram_reaction), *estimate.error);
 }
 
+TEST(StageComposition, RefinedEstimateSolvesItsLevelsWithTheCoupling) {
+  // h = 1/2: its refined mesh h/4 and its third level 2h = 1 are hot runs too; the slow
+  // coupling of this fixture gets the steps it needs (44 on h/4).
+  const std::vector<io::Override> hot_runs = {{"thermal.max_coupling_iterations", "100"}};
+  std::vector<io::Override> estimated = hot_runs;
+  estimated.insert(estimated.end(), {{"solver.load_error", "\"refined\""}});
+  const post::Results results = app::simulate(small_case(estimated, hot_text)).results;
+  ASSERT_TRUE(results.converged());
+  const post::LoadErrorEstimate& estimate = results.load_error;
+  ASSERT_TRUE(estimate.error.has_value()) << estimate.unavailable;
+  EXPECT_EQ(estimate.method, "refined");
+  EXPECT_GT(estimate.settle_iterations, 0) << "the refined mesh's hot run";
+  EXPECT_TRUE(estimate.coarser_change.has_value()) << "the third level, 2h";
+  EXPECT_TRUE(estimate.penalty_change.has_value()) << "the doubled regularisations";
+  // The indicators an adaptive cycle marks by: one per cell of the run's mesh.
+  ASSERT_EQ(estimate.cell_indicators.size(), results.n_cells);
+  EXPECT_TRUE(estimate.cell_indicators.allFinite());
+  // The bar's claim |p_h − p| ≤ error, checked against the hot run on h/4 (finer than
+  // the estimate's own levels, so not one of the numbers it was made from): with the
+  // levels' contraction q, |p_h − p_{h/4}| ≤ |p_h − p| within the model.
+  std::vector<io::Override> finest = hot_runs;
+  finest.insert(finest.end(), {{"mesh.size", "0.125"}, {"solver.load_error", "\"none\""}});
+  const post::Results reference = app::simulate(small_case(finest, hot_text)).results;
+  ASSERT_TRUE(reference.converged());
+  EXPECT_LE(std::abs(reference.pressure.ram_reaction - results.pressure.ram_reaction),
+            *estimate.error);
+}
+
 /// The InputError that composing `plan` throws: empty key if none is thrown.
 InputError refusal_of(const app::RunPlan& plan) {
   try {
