@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The distributed run composed with the adaptive stage (issue 43): `mpirun -np 2 formflow
-// run` of an adaptive case runs the serial run's cycles, on the same meshes, to the
-// serial loads. (With the thermal coupling, the estimate and the coarse start it is
+// run` of an adaptive case, isothermal or hot, runs the serial run's cycles, on the same
+// meshes, to the serial loads. (With the thermal coupling, the estimate and the coarse start it is
 // tests/mpi/test_distributed_run.cpp's hot_forming, paper_load_error and default cases.)
 #include "formflow/app/simulation.hpp"
 #include "formflow/io/case.hpp"
@@ -52,8 +52,9 @@ nlohmann::json summary_on_ranks(const std::vector<io::Override>& edits, int rank
                                           : nlohmann::json();
 }
 
-TEST(DistributedStages, AdaptiveCyclesOfTheSerialRun) {
-  const io::Case case_ = io::load_case("", adaptive_edits);
+/// `mpirun -np 2` of the adaptive case with `edits` runs the serial run's cycles.
+void expect_the_serial_cycles(const std::vector<io::Override>& edits) {
+  const io::Case case_ = io::load_case("", edits);
   const app::Simulation serial = app::simulate(case_);
   ASSERT_TRUE(serial.results.converged());
   const post::AdaptRecord& record = serial.results.adapt;
@@ -71,7 +72,7 @@ TEST(DistributedStages, AdaptiveCyclesOfTheSerialRun) {
   testing::ScratchDirectory scratch("formflow-mpi-stages");
   int exit_code = -1;
   std::string err;
-  std::vector<io::Override> distributed = adaptive_edits;
+  std::vector<io::Override> distributed = edits;
   distributed.emplace_back("solver.linear", "\"petsc\""); // the serial run: CHOLMOD
   const nlohmann::json summary = summary_on_ranks(distributed, 2, scratch, exit_code, err);
   ASSERT_EQ(exit_code, 0) << err;
@@ -86,6 +87,24 @@ TEST(DistributedStages, AdaptiveCyclesOfTheSerialRun) {
         testing::approx(cycles[k].at("load").get<Real>(), record.cycles[k].load, tolerance));
   }
   EXPECT_EQ(summary.at("adapt").at("stop").get<std::string>(), record.stop);
+}
+
+TEST(DistributedStages, AdaptiveCyclesOfTheSerialRun) {
+  expect_the_serial_cycles(adaptive_edits);
+}
+
+TEST(DistributedStages, HotAdaptiveCyclesOfTheSerialRun) {
+  // The adiabatic-tools fixture of tests/verification/test_thermal_balance.cpp: every
+  // cycle a hot run, every level of its estimate too (the heat solve on rank 0).
+  std::vector<io::Override> hot = adaptive_edits;
+  hot.insert(hot.end(), {{"thermal.enabled", "true"},
+                         {"thermal.billet_temperature", "0"},
+                         {"thermal.tool_temperature", "0"},
+                         {"thermal.max_temperature", "1000"},
+                         {"thermal.conductivity", "1e-3"},
+                         {"thermal.heat_transfer", "0"},
+                         {"thermal.max_coupling_iterations", "100"}});
+  expect_the_serial_cycles(hot);
 }
 
 } // namespace
