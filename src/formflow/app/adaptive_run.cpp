@@ -64,16 +64,17 @@ std::optional<Real> refined_mesh_error(const post::LoadErrorEstimate& estimate, 
 
 /// The run on the estimate's refined mesh of the cycle that just ran (`simulation`),
 /// Newton from the estimate's settled solution there, no estimate of its own.
-Simulation simulate_on_refined_mesh(const io::Case& run, const Simulation& simulation,
-                                    bool mesh_from_case, const IterationCallback& on_iteration) {
-  io::Case last = run;
+Simulation simulate_on_refined_mesh(const RunPlan& run, const Simulation& simulation,
+                                    bool mesh_from_plan, const CycleSolve& solve_cycle,
+                                    const IterationCallback& on_iteration) {
+  RunPlan last = run;
   last.solver.load_error = solvers::LoadErrorMethod::None;
-  mesh::RefinedMesh<2> refined = estimate_mesh(run, simulation.plane_mesh(), mesh_from_case);
+  mesh::RefinedMesh<2> refined = estimate_mesh(run, simulation.plane_mesh(), mesh_from_plan);
   const VectorX& start = simulation.results.load_error.refined_velocity;
   const IterationCallback staged =
       with_stage(on_iteration, fmt::format("adapt: the last cycle's mesh split, {} dofs",
                                            2 * refined.mesh.n_nodes()));
-  Simulation result = simulate_from<2>(last, std::move(refined.mesh), start, staged);
+  Simulation result = solve_cycle(last, &refined.mesh, &start, staged);
   // Its error bar (refined_mesh_error) and the cycle's indicators, each parent's
   // shared among its children (a density on the mesh that ran last).
   post::LoadErrorEstimate estimate = simulation.results.load_error;
@@ -101,9 +102,10 @@ Simulation simulate_on_refined_mesh(const io::Case& run, const Simulation& simul
 /// target: returned, with `entry` and the refined mesh's entry appended to `record`
 /// and its stop reason set, when it ends the adaptive run (the target reached there
 /// with the direct change, or it did not converge); std::nullopt to go on cycling.
-std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulation& simulation,
-                                              bool mesh_from_case, const CycleClock& cycle_clock,
+std::optional<Simulation> end_on_refined_mesh(const RunPlan& run, const Simulation& simulation,
+                                              bool mesh_from_plan, const CycleClock& cycle_clock,
                                               post::AdaptCycle& entry, post::AdaptRecord& record,
+                                              const CycleSolve& solve_cycle,
                                               const IterationCallback& on_iteration) {
   const post::LoadErrorEstimate& estimate = simulation.results.load_error;
   const Real target = run.adapt.cycle_target;
@@ -115,7 +117,8 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   post::AdaptCycle cycle_entry = entry;
   cycle_clock.stamp(cycle_entry, simulation.results);
   const CycleClock refined_clock;
-  Simulation last = simulate_on_refined_mesh(run, simulation, mesh_from_case, on_iteration);
+  Simulation last =
+      simulate_on_refined_mesh(run, simulation, mesh_from_plan, solve_cycle, on_iteration);
   const post::Results& results = last.results;
   const std::optional<Real> error = results.load_error.error;
   const bool reached =
@@ -141,16 +144,16 @@ std::optional<Simulation> end_on_refined_mesh(const io::Case& run, const Simulat
   return last;
 }
 
-/// The case of an intermediate cycle: the linearised estimate, indicators only.
-io::Case cheap_cycle_case(const io::Case& run) {
-  io::Case cheap = run;
+/// The plan of an intermediate cycle: the linearised estimate, indicators only.
+RunPlan cheap_cycle_plan(const RunPlan& run) {
+  RunPlan cheap = run;
   cheap.solver.load_error = solvers::LoadErrorMethod::Linearized;
   cheap.adapt.indicators_only = true;
   return cheap;
 }
 
 /// Replaces a cheap cycle's estimate by the full one (`run`'s) on the same solution.
-void estimate_fully(const io::Case& run, Simulation& simulation,
+void estimate_fully(const RunPlan& run, Simulation& simulation,
                     const IterationCallback& on_iteration) {
   post::Results& results = simulation.results;
   results.load_error = load_error_on<2>(run, simulation.plane_mesh(), results.fields.velocity,
@@ -160,7 +163,7 @@ void estimate_fully(const io::Case& run, Simulation& simulation,
 
 /// Cycle 0 ran with the full estimate: its linearised change on the same solution
 /// calibrates the cheap cycles that follow.
-CheapCycles calibrate_on_first_cycle(const io::Case& cheap, const Simulation& simulation) {
+CheapCycles calibrate_on_first_cycle(const RunPlan& cheap, const Simulation& simulation) {
   CheapCycles plan;
   const post::Results& results = simulation.results;
   if (!results.converged() || !results.load_error.error) return plan;
@@ -177,17 +180,17 @@ CheapCycles calibrate_on_first_cycle(const io::Case& cheap, const Simulation& si
 
 } // namespace
 
-Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_iteration) {
-  FF_ASSERT(case_.adapt.enabled(), "adaptivity asked for");
-  const auto run_start = Clock::now();
+Simulation simulate_adaptive(const RunPlan& plan, const IterationCallback& on_iteration,
+                             const CycleSolve& solve_cycle) {
+  FF_ASSERT(plan.adapt.enabled(), "adaptivity asked for");
   // Every cycle after the first remeshes with Gmsh: its module loads on another thread
   // while cycle 0 solves. The loops' helper threads start first, since a thread started
   // during that load would wait for it (0.35 s held up at cycle 0 before they did).
   start_task_helpers();
   mesh::preload_gmsh_meshers();
-  io::Case run = case_;
+  RunPlan run = plan;
   run.adapt.target_error = 0; // each cycle is a plain run
-  run.adapt.cycle_target = case_.adapt.target_error;
+  run.adapt.cycle_target = plan.adapt.target_error;
   // The stops are decided by the full ("refined") estimate. On Q2 the cycles before the
   // first one that may stop are cheap (step 2c of docs/error-estimation.md, with its
   // endgame: 22–53 % less time on the sticking ram and Hill's 15° wedge, 0–11 % more on
@@ -196,12 +199,15 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
   // as the meshes grew (the ram: predictions 2.7× the error by 29 k dofs, the cycles ran
   // on to 65 k, 37 s against 14 s with full cycles), and calibrating again as they grow
   // cost the Q2 runs what the cheap cycles save (docs/error-estimation.md, session 20).
-  const solvers::LoadErrorMethod asked = case_.solver.load_error;
+  const solvers::LoadErrorMethod asked = plan.solver.load_error;
+  // A hot run's cycles all get the full estimate: its levels are hot runs, and the cheap
+  // (linearised) estimate has no hot form.
   const bool cheap_cycles =
-      asked == solvers::LoadErrorMethod::Linearized ||
-      (asked != solvers::LoadErrorMethod::Refined && case_.element == fem::ElementKind::Q2);
+      !plan.thermal.enabled &&
+      (asked == solvers::LoadErrorMethod::Linearized ||
+       (asked != solvers::LoadErrorMethod::Refined && plan.element == fem::ElementKind::Q2));
   run.solver.load_error = solvers::LoadErrorMethod::Refined;
-  const post::AdaptSettings& adapt = case_.adapt;
+  const post::AdaptSettings& adapt = plan.adapt;
   post::AdaptRecord record;
   CycleClock cycle_clock;
   // The monitor's stage of cycle k's solves (its estimate's levels name themselves).
@@ -211,10 +217,11 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
                            : fmt::format("adapt cycle {}, the case's mesh", cycle));
   };
   IterationCallback staged = cycle_stage(0, nullptr);
-  Simulation simulation = simulate(run, staged); // cycle 0: the case's mesh
+  Simulation simulation = solve_cycle(run, nullptr, nullptr, staged); // cycle 0: the plan's mesh
   // Later cycles mark with the cheap estimate; the full one only where it may stop.
-  const io::Case cheap = cheap_cycle_case(run);
-  CheapCycles plan = cheap_cycles ? calibrate_on_first_cycle(cheap, simulation) : CheapCycles{};
+  const RunPlan cheap = cheap_cycle_plan(run);
+  CheapCycles predictions =
+      cheap_cycles ? calibrate_on_first_cycle(cheap, simulation) : CheapCycles{};
   bool cheap_cycle = false;
   for (int cycle = 0;; ++cycle) {
     const post::Results& results = simulation.results;
@@ -248,12 +255,12 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
     };
     bool may_stop = !cheap_cycle;
     if (cheap_cycle) {
-      const CheapCycles::Prediction prediction = plan.predict(
+      const CheapCycles::Prediction prediction = predictions.predict(
           results.load_error.enriched_change, results.pressure.ram_reaction, adapt.target_error);
       entry.estimate = prediction.estimate;
       entry.estimate_predicted = true;
       may_stop = prediction.may_stop;
-      if (may_stop) plan.prediction_called_for_full_estimate();
+      if (may_stop) predictions.prediction_called_for_full_estimate();
     }
     if (may_stop) {
       estimate_fully_once();
@@ -273,10 +280,12 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
           offset && std::abs(*offset) >= adapt.target_error * std::abs(entry.load)) {
         // Which key to lower: each doubled alone on this cycle's mesh (a few solves from
         // the converged field, made once, when the run stops).
+        // (A hot run's doubled runs would each be hot runs: its message names them all.)
         std::string keys;
-        for (const auto& [key, change] : regularisation_offsets<2>(
-                 run, simulation.plane_mesh(), results.fields.velocity, entry.load))
-          keys += fmt::format("{}{} ({:.2g})", keys.empty() ? "" : ", ", key, std::abs(change));
+        if (!run.thermal.enabled)
+          for (const auto& [key, change] : regularisation_offsets<2>(
+                   run, simulation.plane_mesh(), results.fields.velocity, entry.load))
+            keys += fmt::format("{}{} ({:.2g})", keys.empty() ? "" : ", ", key, std::abs(change));
         finish(fmt::format(
             "the regularisations' offset |p(2ε) − p(ε)| = {:.3g} alone is at least the target "
             "{:.3g} (adapt.target_error × |p|), and refining the mesh does not lower it: lower "
@@ -290,7 +299,7 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
       // The estimate's refined mesh, whose settled solution is at hand, may already be
       // accurate enough: solve there to δ and end on it, its load as the result.
       if (std::optional<Simulation> last = end_on_refined_mesh(
-              run, simulation, cycle == 0, cycle_clock, entry, record, on_iteration)) {
+              run, simulation, cycle == 0, cycle_clock, entry, record, solve_cycle, on_iteration)) {
         simulation = std::move(*last);
         break;
       }
@@ -333,23 +342,22 @@ Simulation simulate_adaptive(const io::Case& case_, const IterationCallback& on_
       finish(fmt::format("the remesh for the next cycle failed: {}", error.what()));
       break;
     }
-    if (run.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(next);
+    if (run.problem.process.type == physics::ProcessType::Drawing) mesh::free_container_wall(next);
     const VectorX start = fem::interpolate_nodal_field(current, results.fields.velocity, 2, next);
     cycle_clock.stamp(entry, results);
     record.cycles.push_back(entry);
     cycle_clock = CycleClock{};
-    cheap_cycle = plan.next_cycle_cheap();
+    cheap_cycle = predictions.next_cycle_cheap();
     staged = cycle_stage(cycle + 1, &next);
-    simulation = simulate_from<2>(cheap_cycle ? cheap : run, std::move(next), start, staged);
+    simulation = solve_cycle(cheap_cycle ? cheap : run, &next, &start, staged);
 #else
     finish("adaptivity needs Gmsh (FORMFLOW_WITH_GMSH=OFF)");
     break;
 #endif
   }
+  // The other phases are the last cycle's; "total" is the whole run's (every cycle),
+  // added by the run around this stage (app/run.cpp).
   simulation.results.adapt = std::move(record);
-  // "total" is the whole run's (every cycle), the other phases the last cycle's.
-  PhaseTimes& timing = simulation.results.timing;
-  timing.add("total", seconds_since(run_start) - timing.get("total"));
   return simulation;
 }
 

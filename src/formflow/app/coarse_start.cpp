@@ -2,12 +2,9 @@
 // Solve on 2^L h, ..., 2h, interpolating each solution to the next mesh.
 #include "formflow/app/coarse_start.hpp"
 
-#include "formflow/app/solve_plan.hpp"
-
-#include "formflow/app/simulation.hpp"
+#include "formflow/app/run.hpp"
 #include "formflow/assembly/contact_normal_velocity.hpp"
 #include "formflow/fem/nodal_interpolation.hpp"
-#include "formflow/io/mesh_input.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/solid_channel_mesh.hpp"
 #include "formflow/solvers/forming_nonlinear_problem.hpp"
@@ -31,7 +28,7 @@ constexpr Real coarse_tolerance = 1e-2;
 
 /// Whether a structured channel mesh of `size` can be made for `geometry`: every
 /// length the generator divides is a multiple of it (the case validation's test
-/// for mesh.size, io/case_cross_checks.cpp) and the exit keeps fewer cells than the entry.
+/// for mesh.size, io/plancross_checks.cpp) and the exit keeps fewer cells than the entry.
 bool structured_size_fits(const mesh::ChannelGeometry& g, Real size) {
   std::vector<Real> lengths = {g.container_length, g.entry_half_height, g.exit_length};
   if (g.die == mesh::DieShape::Square) lengths.push_back(g.exit_half_height);
@@ -86,47 +83,47 @@ bool size_fits(const mesh::MeshSpec& spec, Real size) {
 
 template <int dim>
 std::optional<CoarseStart>
-coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, PhaseTimes& times) {
-  if (case_.mesh.source == mesh::MeshSource::File) return std::nullopt;
+coarse_start(const RunPlan& plan, const assembly::Discretisation<dim>& fine, PhaseTimes& times) {
+  if (plan.mesh.source == mesh::MeshSource::File) return std::nullopt;
   // As many of the asked levels as the geometry admits (2^L h must divide its lengths).
   int levels = 0;
-  while (levels < case_.solver.coarse_levels &&
-         (case_.mesh.source != mesh::MeshSource::Structured ||
-          size_fits(case_.mesh, case_.mesh.size * std::ldexp(1.0, levels + 1))))
+  while (levels < plan.solver.coarse_levels &&
+         (plan.mesh.source != mesh::MeshSource::Structured ||
+          size_fits(plan.mesh, plan.mesh.size * std::ldexp(1.0, levels + 1))))
     ++levels;
   if (levels == 0) return std::nullopt;
   CoarseStart start;
-  const SolvePlan plan = make_solve_plan(case_);
-  const CoarseLoop loop = coarse_loop(plan);
+  const SolvePlan& solve = plan.solve;
+  const CoarseLoop loop = coarse_loop(solve);
   // The levels' iteration control: no nesting of their own, a looser tolerance.
-  solvers::IterationControl control = case_.solver;
+  solvers::IterationControl control = plan.solver;
   control.coarse_levels = 0;
-  control.tolerance = std::max(case_.solver.tolerance, coarse_tolerance);
+  control.tolerance = std::max(plan.solver.tolerance, coarse_tolerance);
   // The discrete problem is the case's on every level: only the mesh differs (and how a
   // discontinuous pressure is solved, which does not change the problem).
-  const assembly::ProblemSettings settings = problem_settings(case_);
-  assembly::Formulation formulation = case_.formulation;
+  const assembly::ProblemSettings settings = plan.problem;
+  assembly::Formulation formulation = plan.formulation;
   if (loop == CoarseLoop::CondensedNewton)
     formulation.discontinuous = assembly::DiscontinuousPressure::Condensed;
   mesh::Mesh<dim> previous_mesh;
   VectorX previous_velocity, previous_normal_velocity;
   for (int level = levels; level >= 1; --level) {
-    mesh::MeshSpec spec = case_.mesh;
-    spec.size = case_.mesh.size * std::ldexp(1.0, level);
+    mesh::MeshSpec spec = plan.mesh;
+    spec.size = plan.mesh.size * std::ldexp(1.0, level);
     mesh::Mesh<dim> mesh;
     std::unique_ptr<assembly::FormingProblem<dim>> problem;
     std::unique_ptr<assembly::ConstraintMultipliers<dim>> mixed_pressure;
     VectorX guess;
     {
       ScopedTimer timer(times, "coarse start");
-      mesh = std::get<mesh::Mesh<dim>>(io::load_mesh(case_, spec)); // one source, one dimension
+      mesh = std::get<mesh::Mesh<dim>>(plan.make_mesh(spec)); // one source, one dimension
       problem = std::make_unique<assembly::FormingProblem<dim>>(mesh, settings);
       // The same discrete problem on the coarse mesh: the mixed formulation keeps its
       // pressure (condensed for Newton, which runs mixed cases only with d > 0, d_N > 0).
-      if (case_.formulation.type == assembly::FormulationType::Mixed) {
+      if (plan.formulation.type == assembly::FormulationType::Mixed) {
         mixed_pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
-            mesh, case_.penalty, formulation, problem->full_rule(), problem->n_contact_points(),
-            problem->discretisation().axisymmetric());
+            mesh, plan.problem.penalty, formulation, problem->full_rule(),
+            problem->n_contact_points(), problem->discretisation().axisymmetric());
         problem->attach_multipliers(mixed_pressure.get());
       }
       if (level < levels)
@@ -137,8 +134,8 @@ coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, P
     solvers::FormingNonlinearProblem<dim> nonlinear(*problem);
     solvers::SecantOutcome outcome;
     if (loop == CoarseLoop::SaddlePointSecant) {
-      auto solver = solvers::make_linear_solver(plan.linear, solvers::MatrixStorage::Full,
-                                                case_.solver.petsc_options);
+      auto solver = solvers::make_linear_solver(solve.linear, solvers::MatrixStorage::Full,
+                                                plan.solver.petsc_options);
       solvers::TimedLinearStep linear(*solver, times);
       solvers::SaddlePointSolve<dim> saddle(nonlinear, linear);
       outcome = solvers::secant_iteration(nonlinear, saddle, control, {}, level_start);
@@ -150,10 +147,10 @@ coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, P
       const bool condensed = loop == CoarseLoop::CondensedNewton;
       const bool distributed = settings.distribution.distributed();
       const solvers::LinearSolverKind kind =
-          condensed && !distributed ? solvers::LinearSolverKind::Cholmod : plan.linear;
+          condensed && !distributed ? solvers::LinearSolverKind::Cholmod : solve.linear;
       auto solver =
           solvers::make_linear_solver(kind, solvers::MatrixStorage::SymmetricLower,
-                                      condensed ? std::string() : case_.solver.petsc_options);
+                                      condensed ? std::string() : plan.solver.petsc_options);
       if (condensed && distributed) solver->set_options_prefix("coarse_");
       outcome = solvers::newton_iteration(nonlinear, *solver, control, {}, times, level_start);
     }
@@ -172,8 +169,8 @@ coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, P
 }
 
 template std::optional<CoarseStart>
-coarse_start<2>(const io::Case&, const assembly::Discretisation<2>&, PhaseTimes&);
+coarse_start<2>(const RunPlan&, const assembly::Discretisation<2>&, PhaseTimes&);
 template std::optional<CoarseStart>
-coarse_start<3>(const io::Case&, const assembly::Discretisation<3>&, PhaseTimes&);
+coarse_start<3>(const RunPlan&, const assembly::Discretisation<3>&, PhaseTimes&);
 
 } // namespace formflow::app

@@ -2,9 +2,9 @@
 // Mesh sequencing: Newton's first iterate from the solution on coarser meshes.
 #pragma once
 
+#include "formflow/app/run_plan.hpp"
 #include "formflow/assembly/discretisation.hpp"
 #include "formflow/core/timer.hpp"
-#include "formflow/io/case.hpp"
 #include "formflow/mesh/mesh.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
@@ -27,7 +27,7 @@ struct CoarseStart {
 /// cells than the entry (the levels of mesh sequencing and of the load's estimate).
 bool size_fits(const mesh::MeshSpec& spec, Real size);
 
-/// Nested iteration (solver.coarse_levels = L > 0): solves `case_` with Newton on
+/// Nested iteration (solver.coarse_levels = L > 0): solves `plan` with Newton on
 /// the meshes of size 2^L h, ..., 2h (h = mesh.size; a structured channel mesh and
 /// its refinement by 2 nest exactly), the coarsest from the constant-viscosity
 /// solution and each finer one from the previous solution interpolated to its
@@ -47,14 +47,14 @@ bool size_fits(const mesh::MeshSpec& spec, Real size);
 /// (the coarse solves in the solver's own phases, meshing, set-up and
 /// interpolation as "coarse start"), so the solver time includes the coarse work.
 /// std::nullopt when no coarse level is used (L = 0, none fits, mesh from a file).
-/// Each level varies only the mesh spec (case_.mesh with a larger size) and the
-/// iteration control; the case itself is read, never copied. `fine` is the case's
+/// Each level varies only the mesh spec (plan.mesh with a larger size) and the
+/// iteration control; the plan itself is read, never copied. `fine` is the run's
 /// discretisation, of the dimension the case's mesh source makes, and so is every
 /// coarse level. Each level's velocity goes to the next mesh by interpolation, its Γ3
 /// nodes' normal velocity (which carries the contact pressure) as a scalar of its own
 /// (assembly::set_contact_normal_velocity).
 template <int dim>
 std::optional<CoarseStart>
-coarse_start(const io::Case& case_, const assembly::Discretisation<dim>& fine, PhaseTimes& times);
+coarse_start(const RunPlan& plan, const assembly::Discretisation<dim>& fine, PhaseTimes& times);
 
 } // namespace formflow::app

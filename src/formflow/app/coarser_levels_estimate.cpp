@@ -3,7 +3,6 @@
 #include "formflow/app/coarser_levels_estimate.hpp"
 
 #include "formflow/app/estimate_levels.hpp"
-#include "formflow/app/solve_plan.hpp"
 #include "formflow/fem/nodal_interpolation.hpp"
 #include "formflow/post/load_error_estimate.hpp"
 
@@ -20,13 +19,13 @@ namespace {
 /// fields converged: no linearisation), at the resolution of 2h: where the load's error
 /// comes from, as the refined estimate's indicators say it at h.
 template <int dim>
-VectorX indicators_over_coarser(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
+VectorX indicators_over_coarser(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
                                 const VectorX& u, const SolvedLevel<dim>& coarser) {
-  assembly::FormingProblem<dim> coarser_problem(coarser.mesh, problem_settings(case_));
-  const auto pressure = attached_pressure_multipliers(case_, coarser.mesh, coarser_problem);
+  assembly::FormingProblem<dim> coarser_problem(coarser.mesh, plan.problem);
+  const auto pressure = attached_pressure_multipliers(plan, coarser.mesh, coarser_problem);
   const std::vector<Index> parent = post::parent_cells(coarser.mesh, problem.mesh());
   const post::LoadErrorEstimate weighted = post::weighted_residual_estimate(
-      coarser_problem, coarser.velocity, problem, u, parent, make_solve_plan(case_).linear);
+      coarser_problem, coarser.velocity, problem, u, parent, plan.solve.linear);
   if (!weighted.unavailable.empty()) return {};
   std::vector<int> children(static_cast<std::size_t>(coarser.mesh.n_cells()), 0);
   for (Index cell : parent) ++children[static_cast<std::size_t>(cell)];
@@ -43,32 +42,32 @@ VectorX indicators_over_coarser(const io::Case& case_, const assembly::FormingPr
 
 template <int dim>
 post::LoadErrorEstimate
-coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
+coarser_levels_estimate(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
                         const VectorX& u, Real load, bool own_loop, PhaseTimes& times,
                         const IterationCallback& on_iteration) {
   ScopedTimer timer(times, "error estimate");
   const mesh::Mesh<dim>& mesh = problem.mesh();
   post::LoadErrorEstimate estimate;
   // A level on `level_mesh` from `start`, a field on it.
-  const auto level = [&](const io::Case& level_case, mesh::Mesh<dim> level_mesh,
+  const auto level = [&](const RunPlan& level_plan, mesh::Mesh<dim> level_mesh,
                          const VectorX& start, Index& iterations, std::string_view what) {
     const IterationCallback staged = level_stage(on_iteration, what, level_mesh);
     return own_loop
-               ? solved_by_own_loop(level_case, std::move(level_mesh), start, iterations, staged)
-               : solved_level(level_case, std::move(level_mesh), start, iterations, staged);
+               ? solved_by_own_loop(level_plan, std::move(level_mesh), start, iterations, staged)
+               : solved_level(level_plan, std::move(level_mesh), start, iterations, staged);
   };
   // The next coarser level from `from`'s velocity `field` restricted (interpolated).
   const auto coarsened = [&](Real size, const mesh::Mesh<dim>& from, const VectorX& field,
                              std::string_view what) {
-    mesh::Mesh<dim> level_mesh = channel_at<dim>(case_, size);
+    mesh::Mesh<dim> level_mesh = channel_at<dim>(plan, size);
     const VectorX start = fem::interpolate_nodal_field(from, field, dim, level_mesh);
-    return level(case_, std::move(level_mesh), start, estimate.coarser_newton_iterations, what);
+    return level(plan, std::move(level_mesh), start, estimate.coarser_newton_iterations, what);
   };
   const std::optional<SolvedLevel<dim>> coarser =
-      coarsened(2 * case_.mesh.size, mesh, u, "the mesh coarsened once (2h)");
+      coarsened(2 * plan.mesh.size, mesh, u, "the mesh coarsened once (2h)");
   if (!coarser) return no_estimate("the solve on the mesh coarsened once (2h) did not converge");
   const std::optional<SolvedLevel<dim>> coarsest = coarsened(
-      4 * case_.mesh.size, coarser->mesh, coarser->velocity, "the mesh coarsened twice (4h)");
+      4 * plan.mesh.size, coarser->mesh, coarser->velocity, "the mesh coarsened twice (4h)");
   if (!coarsest) return no_estimate("the solve on the mesh coarsened twice (4h) did not converge");
   const Real change = load - coarser->load;
   const Real coarsest_change = coarser->load - coarsest->load;
@@ -86,7 +85,7 @@ coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<di
   estimate.ratio = *ratio;
   estimate.discretisation_error = post::tail_beyond_refined(change, *ratio);
   const std::optional<SolvedLevel<dim>> doubled =
-      level(doubled_regularisations(case_), coarser->mesh, coarser->velocity,
+      level(doubled_regularisations(plan), coarser->mesh, coarser->velocity,
             estimate.penalty_newton_iterations, "the regularisations doubled on 2h");
   if (!doubled) {
     estimate.unavailable =
@@ -95,15 +94,15 @@ coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<di
   }
   estimate.penalty_change = doubled->load - coarser->load;
   estimate.error = post::coarser_levels_bound(change, *ratio, *estimate.penalty_change);
-  if (!own_loop) estimate.cell_indicators = indicators_over_coarser(case_, problem, u, *coarser);
+  if (!own_loop) estimate.cell_indicators = indicators_over_coarser(plan, problem, u, *coarser);
   return estimate;
 }
 
-template post::LoadErrorEstimate coarser_levels_estimate<2>(const io::Case&,
+template post::LoadErrorEstimate coarser_levels_estimate<2>(const RunPlan&,
                                                             const assembly::FormingProblem<2>&,
                                                             const VectorX&, Real, bool, PhaseTimes&,
                                                             const IterationCallback&);
-template post::LoadErrorEstimate coarser_levels_estimate<3>(const io::Case&,
+template post::LoadErrorEstimate coarser_levels_estimate<3>(const RunPlan&,
                                                             const assembly::FormingProblem<3>&,
                                                             const VectorX&, Real, bool, PhaseTimes&,
                                                             const IterationCallback&);

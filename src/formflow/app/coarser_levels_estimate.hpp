@@ -2,10 +2,10 @@
 // The "coarser" estimate: the loads on the structured channel at 2h and 4h.
 #pragma once
 
-#include "formflow/app/simulation.hpp"
+#include "formflow/app/run.hpp"
+#include "formflow/app/run_plan.hpp"
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/core/timer.hpp"
-#include "formflow/io/case.hpp"
 #include "formflow/post/results.hpp"
 
 namespace formflow::app {
@@ -18,7 +18,7 @@ namespace formflow::app {
 /// larger). `own_loop`: the levels are solved by the run's loop, not by Newton.
 template <int dim>
 post::LoadErrorEstimate
-coarser_levels_estimate(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
+coarser_levels_estimate(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
                         const VectorX& u, Real load, bool own_loop, PhaseTimes& times,
                         const IterationCallback& on_iteration);
 

@@ -4,10 +4,10 @@
 // app/coarser_levels_estimate.cpp and the adaptive run share them).
 #pragma once
 
-#include "formflow/app/simulation.hpp"
+#include "formflow/app/run.hpp"
+#include "formflow/app/run_plan.hpp"
 #include "formflow/assembly/constraint_multipliers.hpp"
 #include "formflow/assembly/forming_problem.hpp"
-#include "formflow/io/case.hpp"
 #include "formflow/post/results.hpp"
 
 #include <memory>
@@ -33,32 +33,33 @@ IterationCallback level_stage(const IterationCallback& on_iteration, std::string
 /// as long as `problem`.
 template <int dim>
 std::unique_ptr<assembly::ConstraintMultipliers<dim>>
-attached_pressure_multipliers(const io::Case& case_, const mesh::Mesh<dim>& mesh,
+attached_pressure_multipliers(const RunPlan& plan, const mesh::Mesh<dim>& mesh,
                               assembly::FormingProblem<dim>& problem);
 
-/// A converged Newton solve of `case_` (to its δ) on `mesh` from `start` (a field on
+/// A converged Newton solve of `plan` (to its δ) on `mesh` from `start` (a field on
 /// `mesh`; its prescribed values are replaced), and the load there: the third level
 /// and the doubled-penalty run of the estimate. std::nullopt if it did not converge.
 /// `solution`, if given, receives the velocity (whole on every rank).
 template <int dim>
-std::optional<Real> solved_load(const io::Case& case_, const mesh::Mesh<dim>& mesh, VectorX start,
+std::optional<Real> solved_load(const RunPlan& plan, const mesh::Mesh<dim>& mesh, VectorX start,
                                 Index& iterations, const IterationCallback& on_iteration,
                                 VectorX* solution = nullptr);
 
 /// The case's structured channel at `size` (a level of the estimate).
-template <int dim> mesh::Mesh<dim> channel_at(const io::Case& case_, Real size);
+template <int dim> mesh::Mesh<dim> channel_at(const RunPlan& plan, Real size);
 
 /// A level of the estimate: its mesh, load and velocity (whole on every rank).
 template <int dim> struct SolvedLevel {
   mesh::Mesh<dim> mesh;
   Real load = 0.0;
   VectorX velocity;
+  VectorX temperature; ///< nodal T of a hot level solved by its own stages; else empty
 };
 
 /// `mesh` solved to δ by Newton from `start` (a field on `mesh`); its load the driven
 /// force (solved_load). Adds its Newton iterations to `iterations`.
 template <int dim>
-std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, mesh::Mesh<dim> mesh,
+std::optional<SolvedLevel<dim>> solved_level(const RunPlan& plan, mesh::Mesh<dim> mesh,
                                              VectorX start, Index& iterations,
                                              const IterationCallback& on_iteration);
 
@@ -67,15 +68,22 @@ std::optional<SolvedLevel<dim>> solved_level(const io::Case& case_, mesh::Mesh<d
 /// takes a start, its load the reported reaction. For the problems Newton does not
 /// reach: their load is the secant system's driven force with the multipliers.
 template <int dim>
-std::optional<SolvedLevel<dim>> solved_by_own_loop(const io::Case& case_, mesh::Mesh<dim> mesh,
+std::optional<SolvedLevel<dim>> solved_by_own_loop(const RunPlan& plan, mesh::Mesh<dim> mesh,
                                                    const VectorX& start, Index& iterations,
                                                    const IterationCallback& on_iteration);
+
+/// The nodal temperature `T` on `problem`'s mesh set as its flow law's temperature (at
+/// the full-rule points, and at the Γ3 points for a shear-yield threshold), clamped as the
+/// coupling clamps it (law_temperatures): a level of a hot run's estimate at that level's T.
+template <int dim>
+void set_level_temperature(const RunPlan& plan, assembly::FormingProblem<dim>& problem,
+                           const VectorX& T);
 
 /// The case with every regularisation doubled: the penalties d (incompressibility, also
 /// the mixed formulation's), d_N (contact) and d_T (friction), and the paper's power
 /// law's rate sensitivity α (its limit α → 0 is the rigid-plastic problem the slip-line
 /// referees solve; other laws' rate dependence is the material's, not doubled).
-io::Case doubled_regularisations(const io::Case& case_);
+RunPlan doubled_regularisations(const RunPlan& plan);
 
 /// Which regularisation the load's offset |p(2ε) − p(ε)| comes from: for each key
 /// doubled_regularisations doubles (penalty.d, penalty.d_n, friction.d_t with friction,
@@ -84,7 +92,7 @@ io::Case doubled_regularisations(const io::Case& case_);
 /// that did not converge is left out. For a message that says what to lower: the
 /// offsets of one key at a time do not add up to the doubled-together offset exactly.
 template <int dim>
-std::vector<std::pair<std::string, Real>> regularisation_offsets(const io::Case& case_,
+std::vector<std::pair<std::string, Real>> regularisation_offsets(const RunPlan& plan,
                                                                  const mesh::Mesh<dim>& mesh,
                                                                  const VectorX& u, Real load);
 

@@ -5,10 +5,8 @@
 #include "formflow/app/coarse_start.hpp"
 #include "formflow/app/coarser_levels_estimate.hpp"
 #include "formflow/app/estimate_levels.hpp"
-#include "formflow/app/simulation.hpp"
-#include "formflow/app/solve_plan.hpp"
+#include "formflow/app/run.hpp"
 #include "formflow/fem/nodal_interpolation.hpp"
-#include "formflow/io/mesh_input.hpp"
 #include "formflow/mesh/uniform_refinement.hpp"
 #include "formflow/post/load_error_estimate.hpp"
 
@@ -36,28 +34,28 @@ namespace {
 /// at 1e-2, too loose for a load difference: this level is solved to δ, from u
 /// restricted), else h/4 (below). `refined` is the estimate's mesh h/2.
 template <int dim>
-void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim>& problem,
-                       const VectorX& u, bool mesh_from_case, const mesh::Mesh<dim>& refined,
+void complete_estimate(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
+                       const VectorX& u, bool mesh_from_plan, const mesh::Mesh<dim>& refined,
                        post::LoadErrorEstimate& estimate, PhaseTimes& times,
                        const IterationCallback& on_iteration) {
-  if (case_.adapt.indicators_only) return; // an adaptive run's marking-only cycle
+  if (plan.adapt.indicators_only) return; // an adaptive run's marking-only cycle
   ScopedTimer timer(times, "error estimate");
   const Real load = post::driven_load(problem, u);
   const mesh::Mesh<dim>& mesh = problem.mesh();
-  const Real coarser_size = 2 * case_.mesh.size;
-  if (mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured &&
-      size_fits(case_.mesh, coarser_size)) {
-    const auto coarser = channel_at<dim>(case_, coarser_size);
+  const Real coarser_size = 2 * plan.mesh.size;
+  if (mesh_from_plan && plan.mesh.source == mesh::MeshSource::Structured &&
+      size_fits(plan.mesh, coarser_size)) {
+    const auto coarser = channel_at<dim>(plan, coarser_size);
     Index iterations = 0;
     const std::optional<Real> coarser_load =
-        solved_load(case_, coarser, fem::interpolate_nodal_field(mesh, u, dim, coarser), iterations,
+        solved_load(plan, coarser, fem::interpolate_nodal_field(mesh, u, dim, coarser), iterations,
                     level_stage(on_iteration, "the third level, the mesh coarsened once", coarser));
     if (coarser_load && *coarser_load != load) {
       estimate.coarser_change = load - *coarser_load;
       estimate.observed_ratio = estimate.enriched_change / *estimate.coarser_change;
     }
-  } else if (mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured &&
-             estimate.refined_velocity.size() > 0 && case_.adapt.cycle_target == 0) {
+  } else if (mesh_from_plan && plan.mesh.source == mesh::MeshSource::Structured &&
+             estimate.refined_velocity.size() > 0 && plan.adapt.cycle_target == 0) {
     // No 2h (the benchmark's mesh II at h = 1, the wedges' one row across the exit):
     // the third level is h/4, solved from the settled h/2 field prolonged, and the
     // ratio (p_{h/4} − p_{h/2})/(p_{h/2} − p_h) observed there. Without it the order is
@@ -65,10 +63,10 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
     // its bar (docs/error-estimation.md, "The two-grid factor"). It costs a solve on
     // 16× the run's dofs, so it is made only where no 2h exists, and not in an
     // adaptive run's cycle 0, whose marking does not need it.
-    const auto finer = channel_at<dim>(case_, case_.mesh.size / 4);
+    const auto finer = channel_at<dim>(plan, plan.mesh.size / 4);
     Index iterations = 0;
     const std::optional<Real> finer_load = solved_load(
-        case_, finer, fem::interpolate_nodal_field(refined, estimate.refined_velocity, dim, finer),
+        plan, finer, fem::interpolate_nodal_field(refined, estimate.refined_velocity, dim, finer),
         iterations, level_stage(on_iteration, "the third level, the mesh refined twice", finer));
     const Real refined_load = load + estimate.enriched_change; // linearised from settled: δ²
     if (finer_load && estimate.enriched_change != 0) {
@@ -90,10 +88,10 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
   estimate.error = estimate.discretisation_error;
   // An adaptive cycle whose tail from p_{h/2} alone is above the target stops on
   // neither mesh: the penalty run would not change the decision.
-  const Real target = case_.adapt.cycle_target * std::abs(load);
+  const Real target = plan.adapt.cycle_target * std::abs(load);
   if (target > 0 && post::tail_beyond_refined(estimate.enriched_change, *ratio) > target) return;
   const std::optional<Real> doubled =
-      solved_load(doubled_regularisations(case_), mesh, u, estimate.penalty_newton_iterations,
+      solved_load(doubled_regularisations(plan), mesh, u, estimate.penalty_newton_iterations,
                   level_stage(on_iteration, "the regularisations doubled", mesh));
   if (!doubled) {
     estimate.error.reset();
@@ -105,16 +103,101 @@ void complete_estimate(const io::Case& case_, const assembly::FormingProblem<dim
       post::load_error_bound(estimate.enriched_change, *ratio, *estimate.penalty_change);
 }
 
+/// The refined estimate of a hot run (docs/error-estimation.md, "Hot forming"): every
+/// level a whole hot run of the stages inside the estimate (the coupling around the loop,
+/// solved_by_own_loop), from u carried over. p_{h/2} is the hot run on the refined mesh;
+/// the cell indicators the weighted residuals of u against its velocity, with the
+/// reaction's adjoint at its velocity and temperature (post::weighted_residual_estimate:
+/// both fields converged, so they sum to the solved p_{h/2} − p_h within δ); the ratio
+/// observed with a hot run on 2h where the structured channel admits it (else q assumed,
+/// as the isothermal estimate without a third level); the regularisations' offset from a
+/// hot run with them doubled on the run's mesh. `load` is the run's reported reaction
+/// (the levels' loads are theirs).
+template <int dim>
+post::LoadErrorEstimate
+hot_refined_estimate(const RunPlan& plan, const assembly::FormingProblem<dim>& problem,
+                     const VectorX& u, Real load, bool mesh_from_plan, PhaseTimes& times,
+                     const IterationCallback& on_iteration) {
+  ScopedTimer timer(times, "error estimate");
+  const mesh::Mesh<dim>& mesh = problem.mesh();
+  mesh::RefinedMesh<dim> refined = estimate_mesh(plan, mesh, mesh_from_plan);
+  post::LoadErrorEstimate estimate;
+  Index settle_iterations = 0;
+  const VectorX prolonged = fem::interpolate_nodal_field(mesh, u, dim, refined.mesh);
+  const IterationCallback settle_stage =
+      level_stage(on_iteration, "the mesh refined once", refined.mesh);
+  const std::optional<SolvedLevel<dim>> fine = solved_by_own_loop(
+      plan, mesh::Mesh<dim>(refined.mesh), prolonged, settle_iterations, settle_stage);
+  if (!fine) return no_estimate("the hot run on the mesh refined once did not converge");
+  {
+    assembly::FormingProblem<dim> fine_problem(fine->mesh, plan.problem);
+    const auto pressure = attached_pressure_multipliers(plan, fine->mesh, fine_problem);
+    set_level_temperature(plan, fine_problem, fine->temperature);
+    estimate = post::weighted_residual_estimate(problem, u, fine_problem, fine->velocity,
+                                                refined.parent, plan.solve.linear);
+  }
+  if (!estimate.unavailable.empty()) return estimate;
+  estimate.method = "refined";
+  estimate.enriched_change = fine->load - load; // the solved difference, not the indicators'
+  estimate.enriched_dofs = static_cast<Index>(fine->velocity.size());
+  estimate.settle_iterations = static_cast<int>(settle_iterations);
+  estimate.refined_velocity = fine->velocity;
+  const Real coarser_size = 2 * plan.mesh.size;
+  if (mesh_from_plan && plan.mesh.source == mesh::MeshSource::Structured &&
+      size_fits(plan.mesh, coarser_size)) {
+    mesh::Mesh<dim> coarser = channel_at<dim>(plan, coarser_size);
+    const VectorX start = fem::interpolate_nodal_field(mesh, u, dim, coarser);
+    const IterationCallback staged =
+        level_stage(on_iteration, "the third level, the mesh coarsened once", coarser);
+    Index iterations = 0;
+    const std::optional<SolvedLevel<dim>> level =
+        solved_by_own_loop(plan, std::move(coarser), start, iterations, staged);
+    if (level && level->load != load) {
+      estimate.coarser_change = load - level->load;
+      estimate.observed_ratio = estimate.enriched_change / *estimate.coarser_change;
+    }
+  }
+  const std::optional<Real> ratio = post::tail_ratio(estimate.observed_ratio);
+  if (!ratio) {
+    estimate.unavailable =
+        fmt::format("the hot runs on 2h, h, h/2 do not converge monotonically (ratio of their "
+                    "differences {:.3g}): no tail can be summed",
+                    *estimate.observed_ratio);
+    return estimate;
+  }
+  estimate.ratio = *ratio;
+  estimate.discretisation_error = post::discretisation_tail(estimate.enriched_change, *ratio);
+  estimate.error = estimate.discretisation_error;
+  // An adaptive cycle whose tail from p_{h/2} alone is above the target stops on
+  // neither mesh: the doubled run would not change the decision.
+  const Real target = plan.adapt.cycle_target * std::abs(load);
+  if (target > 0 && post::tail_beyond_refined(estimate.enriched_change, *ratio) > target)
+    return estimate;
+  const std::optional<SolvedLevel<dim>> doubled = solved_by_own_loop(
+      doubled_regularisations(plan), mesh::Mesh<dim>(mesh), u, estimate.penalty_newton_iterations,
+      level_stage(on_iteration, "the regularisations doubled", mesh));
+  if (!doubled) {
+    estimate.error.reset();
+    estimate.unavailable =
+        "the hot run with doubled regularisations (d, d_N, d_T, α) did not converge";
+    return estimate;
+  }
+  estimate.penalty_change = doubled->load - load;
+  estimate.error =
+      post::load_error_bound(estimate.enriched_change, *ratio, *estimate.penalty_change);
+  return estimate;
+}
+
 /// Why Newton's tangent does not reach the run's problem, empty if it does: the refined
 /// estimate's settle and adjoint need it; the coarser one then solves its levels by the
 /// run's own loop.
 template <int dim>
-std::string without_newton_tangent(const io::Case& case_,
+std::string without_newton_tangent(const RunPlan& plan,
                                    const assembly::FormingProblem<dim>& problem) {
   if (problem.has_exact_friction())
     return "exact friction has no Newton tangent without its multipliers";
-  const bool mixed = case_.formulation.type == assembly::FormulationType::Mixed;
-  if ((mixed && case_.penalty.d == 0) || case_.penalty.d_n == 0)
+  const bool mixed = plan.formulation.type == assembly::FormulationType::Mixed;
+  if ((mixed && plan.problem.penalty.d == 0) || plan.problem.penalty.d_n == 0)
     return "exact constraints (d = 0 or dN = 0) have no Newton tangent";
   if (!problem.terms().newton_ready()) return "this formulation has no Newton tangent";
   return {};
@@ -122,18 +205,18 @@ std::string without_newton_tangent(const io::Case& case_,
 
 /// Whether the mesh that ran is the case's structured channel and that channel can be
 /// made at 2h and 4h: the levels of the "coarser" estimate.
-bool coarser_levels_fit(const io::Case& case_, bool mesh_from_case) {
-  return mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured &&
-         size_fits(case_.mesh, 2 * case_.mesh.size) && size_fits(case_.mesh, 4 * case_.mesh.size);
+bool coarser_levels_fit(const RunPlan& plan, bool mesh_from_plan) {
+  return mesh_from_plan && plan.mesh.source == mesh::MeshSource::Structured &&
+         size_fits(plan.mesh, 2 * plan.mesh.size) && size_fits(plan.mesh, 4 * plan.mesh.size);
 }
 
 } // namespace
 
-solvers::LoadErrorMethod resolved_load_error_method(const io::Case& case_, bool mesh_from_case,
+solvers::LoadErrorMethod resolved_load_error_method(const RunPlan& plan, bool mesh_from_plan,
                                                     int dim, Index n_dofs, std::string& why) {
-  const solvers::LoadErrorMethod asked = case_.solver.load_error;
+  const solvers::LoadErrorMethod asked = plan.solver.load_error;
   if (asked != solvers::LoadErrorMethod::Auto) return asked;
-  if (coarser_levels_fit(case_, mesh_from_case)) return solvers::LoadErrorMethod::Coarser;
+  if (coarser_levels_fit(plan, mesh_from_plan)) return solvers::LoadErrorMethod::Coarser;
   const Index refined_dofs = n_dofs << dim;
   if (refined_dofs <= auto_refined_dofs_limit(dim)) return solvers::LoadErrorMethod::Refined;
   why = fmt::format(
@@ -146,12 +229,12 @@ solvers::LoadErrorMethod resolved_load_error_method(const io::Case& case_, bool 
 }
 
 template <int dim>
-mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim>& mesh,
-                                     bool mesh_from_case) {
-  if (mesh_from_case && case_.mesh.source == mesh::MeshSource::Structured) {
+mesh::RefinedMesh<dim> estimate_mesh(const RunPlan& plan, const mesh::Mesh<dim>& mesh,
+                                     bool mesh_from_plan) {
+  if (mesh_from_plan && plan.mesh.source == mesh::MeshSource::Structured) {
     // The structured channel at half the size: nested in the one that ran.
     mesh::RefinedMesh<dim> refined;
-    refined.mesh = channel_at<dim>(case_, case_.mesh.size / 2);
+    refined.mesh = channel_at<dim>(plan, plan.mesh.size / 2);
     refined.parent = post::parent_cells(mesh, refined.mesh);
     return refined;
   }
@@ -162,35 +245,48 @@ mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim
 
 template <int dim>
 post::LoadErrorEstimate
-load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,
-              Real run_load, bool mesh_from_case, bool converged, PhaseTimes& times,
+load_error_of(const RunPlan& plan, const assembly::FormingProblem<dim>& problem, const VectorX& u,
+              Real run_load, bool mesh_from_plan, bool converged, PhaseTimes& times,
               const IterationCallback& on_iteration) {
   std::string why = "solver.load_error = \"none\"";
   const solvers::LoadErrorMethod method =
-      resolved_load_error_method(case_, mesh_from_case, dim, problem.plan().n_dofs(), why);
+      resolved_load_error_method(plan, mesh_from_plan, dim, problem.plan().n_dofs(), why);
   if (method == solvers::LoadErrorMethod::None) return no_estimate(why);
   if (!converged) return no_estimate("the run did not converge");
-  if (case_.thermal.enabled)
+  // Hot forming: every level of its estimate is a whole hot run of the stages inside the
+  // estimate (the coupling around the loop): "coarser" and "refined" when asked for (an
+  // adaptive run asks for "refined"). "auto" keeps hot runs without a bar (their levels
+  // would cost coupled solves unasked); "linearized" has no hot form (no settle).
+  const bool coupled_levels =
+      plan.thermal.enabled && (plan.solver.load_error == solvers::LoadErrorMethod::Coarser ||
+                               plan.solver.load_error == solvers::LoadErrorMethod::Refined);
+  if (plan.thermal.enabled && !coupled_levels)
     return no_estimate("hot forming: the other levels would solve the flow without the heat "
-                       "coupling's temperature");
-  const std::string no_tangent = without_newton_tangent(case_, problem);
+                       "coupling's temperature; solver.load_error = \"coarser\" or "
+                       "\"refined\" solves its levels with the coupling");
+  const std::string no_tangent = without_newton_tangent(plan, problem);
   if (method == solvers::LoadErrorMethod::Coarser) {
-    if (!coarser_levels_fit(case_, mesh_from_case))
+    if (!coarser_levels_fit(plan, mesh_from_plan))
       return no_estimate(
           "solver.load_error = \"coarser\" needs the case's structured channel at 2h and 4h "
           "(twice and four times mesh.size must divide its lengths); \"refined\" estimates "
           "any mesh");
     // Newton's levels where it reaches the problem (the load then its driven force at
-    // u, as the levels'), else the run's own loop on each level and its reported load.
-    return no_tangent.empty()
-               ? coarser_levels_estimate(case_, problem, u, post::driven_load(problem, u), false,
+    // u, as the levels'), else the run's own stages on each level (its loop, the heat
+    // coupling) and its reported load.
+    return no_tangent.empty() && !coupled_levels
+               ? coarser_levels_estimate(plan, problem, u, post::driven_load(problem, u), false,
                                          times, on_iteration)
-               : coarser_levels_estimate(case_, problem, u, run_load, true, times, on_iteration);
+               : coarser_levels_estimate(plan, problem, u, run_load, true, times, on_iteration);
+  }
+  if (coupled_levels) {
+    if (!no_tangent.empty()) return no_estimate(no_tangent); // the adjoint is Newton's
+    return hot_refined_estimate(plan, problem, u, run_load, mesh_from_plan, times, on_iteration);
   }
   if (!no_tangent.empty()) {
     // "auto" fell back to the refined estimate because the mesh has no coarser levels:
     // say both, so the reader knows what would give a bar (a mesh.size admitting 4h).
-    if (case_.solver.load_error == solvers::LoadErrorMethod::Auto)
+    if (plan.solver.load_error == solvers::LoadErrorMethod::Auto)
       return no_estimate(
           "solver.load_error = \"auto\": the mesh has no coarser levels 2h and 4h (a "
           "structured channel whose lengths admit them would give the \"coarser\" bar), and "
@@ -204,53 +300,53 @@ load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& proble
   std::vector<Index> parent;
   {
     ScopedTimer timer(times, "error estimate");
-    mesh::RefinedMesh<dim> refined = estimate_mesh(case_, problem.mesh(), mesh_from_case);
+    mesh::RefinedMesh<dim> refined = estimate_mesh(plan, problem.mesh(), mesh_from_plan);
     fine_mesh = std::move(refined.mesh);
     parent = std::move(refined.parent);
-    fine = std::make_unique<assembly::FormingProblem<dim>>(fine_mesh, problem_settings(case_));
+    fine = std::make_unique<assembly::FormingProblem<dim>>(fine_mesh, plan.problem);
     // The condensed pressure, as on the mesh that ran (d > 0 here).
-    fine_pressure = attached_pressure_multipliers(case_, fine_mesh, *fine);
+    fine_pressure = attached_pressure_multipliers(plan, fine_mesh, *fine);
     if (!fine->terms().newton_ready())
       return no_estimate("the refined problem has no Newton tangent");
   }
-  solvers::IterationControl settle = case_.solver;
+  solvers::IterationControl settle = plan.solver;
   settle.coarse_levels = 0;
-  settle.tolerance = case_.solver.tolerance;
+  settle.tolerance = plan.solver.tolerance;
   const bool do_settle = method == solvers::LoadErrorMethod::Refined;
   post::LoadErrorEstimate estimate = post::estimate_load_error(
-      problem, u, *fine, parent, make_solve_plan(case_).linear, do_settle ? &settle : nullptr,
-      times, level_stage(on_iteration, "the mesh refined once", fine_mesh));
+      problem, u, *fine, parent, plan.solve.linear, do_settle ? &settle : nullptr, times,
+      level_stage(on_iteration, "the mesh refined once", fine_mesh));
   fine.reset(); // the refined mesh's problem is not needed past the adjoint
   estimate.method = do_settle ? "refined" : "linearized";
   if (estimate.error)
-    complete_estimate(case_, problem, u, mesh_from_case, fine_mesh, estimate, times, on_iteration);
+    complete_estimate(plan, problem, u, mesh_from_plan, fine_mesh, estimate, times, on_iteration);
   return estimate;
 }
 
 template <int dim>
-post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<dim>& mesh,
-                                      const VectorX& u, bool mesh_from_case, PhaseTimes& times,
+post::LoadErrorEstimate load_error_on(const RunPlan& plan, const mesh::Mesh<dim>& mesh,
+                                      const VectorX& u, bool mesh_from_plan, PhaseTimes& times,
                                       const IterationCallback& on_iteration) {
-  assembly::FormingProblem<dim> problem(mesh, problem_settings(case_));
-  const auto pressure = attached_pressure_multipliers(case_, mesh, problem);
-  return load_error_of(case_, problem, u, post::driven_load(problem, u), mesh_from_case, true,
-                       times, on_iteration);
+  assembly::FormingProblem<dim> problem(mesh, plan.problem);
+  const auto pressure = attached_pressure_multipliers(plan, mesh, problem);
+  return load_error_of(plan, problem, u, post::driven_load(problem, u), mesh_from_plan, true, times,
+                       on_iteration);
 }
 
-template mesh::RefinedMesh<2> estimate_mesh<2>(const io::Case&, const mesh::Mesh<2>&, bool);
-template mesh::RefinedMesh<3> estimate_mesh<3>(const io::Case&, const mesh::Mesh<3>&, bool);
-template post::LoadErrorEstimate load_error_of<2>(const io::Case&,
+template mesh::RefinedMesh<2> estimate_mesh<2>(const RunPlan&, const mesh::Mesh<2>&, bool);
+template mesh::RefinedMesh<3> estimate_mesh<3>(const RunPlan&, const mesh::Mesh<3>&, bool);
+template post::LoadErrorEstimate load_error_of<2>(const RunPlan&,
                                                   const assembly::FormingProblem<2>&,
                                                   const VectorX&, Real, bool, bool, PhaseTimes&,
                                                   const IterationCallback&);
-template post::LoadErrorEstimate load_error_of<3>(const io::Case&,
+template post::LoadErrorEstimate load_error_of<3>(const RunPlan&,
                                                   const assembly::FormingProblem<3>&,
                                                   const VectorX&, Real, bool, bool, PhaseTimes&,
                                                   const IterationCallback&);
-template post::LoadErrorEstimate load_error_on<2>(const io::Case&, const mesh::Mesh<2>&,
+template post::LoadErrorEstimate load_error_on<2>(const RunPlan&, const mesh::Mesh<2>&,
                                                   const VectorX&, bool, PhaseTimes&,
                                                   const IterationCallback&);
-template post::LoadErrorEstimate load_error_on<3>(const io::Case&, const mesh::Mesh<3>&,
+template post::LoadErrorEstimate load_error_on<3>(const RunPlan&, const mesh::Mesh<3>&,
                                                   const VectorX&, bool, PhaseTimes&,
                                                   const IterationCallback&);
 

@@ -2,9 +2,9 @@
 // The load's error estimate of a run: the refined mesh and problem it needs.
 #pragma once
 
+#include "formflow/app/run.hpp"
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/core/timer.hpp"
-#include "formflow/io/case.hpp"
 #include "formflow/mesh/uniform_refinement.hpp"
 #include "formflow/post/results.hpp"
 
@@ -26,24 +26,24 @@ constexpr Index auto_refined_dofs_limit(int dim) {
 }
 
 /// solver.load_error with "auto" resolved for a run of `n_dofs` dofs on a mesh of
-/// dimension `dim` (`mesh_from_case`: the case's own mesh source made it): "coarser"
+/// dimension `dim` (`mesh_from_plan`: the case's own mesh source made it): "coarser"
 /// where the case's structured channel admits 2h and 4h, else "refined" up to
 /// auto_refined_dofs_limit(dim) refined dofs, else None with `why` set. Any other asked
 /// method is returned as it is.
-solvers::LoadErrorMethod resolved_load_error_method(const io::Case& case_, bool mesh_from_case,
+solvers::LoadErrorMethod resolved_load_error_method(const RunPlan& plan, bool mesh_from_plan,
                                                     int dim, Index n_dofs, std::string& why);
 
 /// The refined mesh of the estimate and each of its cells' parent in `mesh`: the
 /// structured channel at half the size when the case's structured mesh ran
-/// (`mesh_from_case`), else `mesh` split uniformly.
+/// (`mesh_from_plan`), else `mesh` split uniformly.
 template <int dim>
-mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim>& mesh,
-                                     bool mesh_from_case);
+mesh::RefinedMesh<dim> estimate_mesh(const RunPlan& plan, const mesh::Mesh<dim>& mesh,
+                                     bool mesh_from_plan);
 
-/// The load's error estimate of a run of `case_` on `problem` with velocity `u` and
+/// The load's error estimate of a run of `plan` on `problem` with velocity `u` and
 /// reported load `run_load`, by solver.load_error (resolved_load_error_method):
 /// - "refined" / "linearized": post::estimate_load_error on the mesh refined once
-///   (case_.mesh at half the size when the case's structured channel ran, which nests;
+///   (plan.mesh at half the size when the case's structured channel ran, which nests;
 ///   else every cell split), the same discrete problem there (the mixed formulation's
 ///   condensed pressure included), completed into a bound (post::load_error_bound) by a
 ///   solve with the regularisations doubled on the same mesh and a third level for the
@@ -51,19 +51,22 @@ mesh::RefinedMesh<dim> estimate_mesh(const io::Case& case_, const mesh::Mesh<dim
 ///   unavailable for exact friction, d = 0 or d_N = 0, Taylor–Hood.
 /// - "coarser": the loads at 2h and 4h (post::coarser_levels_bound), by Newton where it
 ///   reaches the problem, else by the run's own loop on each level.
+/// - a hot run, "refined" or "coarser" asked for: every level a whole hot run of the
+///   stages (the coupling around the loop, solved_by_own_loop); see hot_refined_estimate.
 /// Says why not (LoadErrorEstimate::unavailable) for "none", a run that did not
-/// converge, hot forming, or a mesh the method cannot use (docs/error-estimation.md).
+/// converge, a hot run under "auto" or "linearized", or a mesh the method cannot use
+/// (docs/error-estimation.md).
 template <int dim>
 post::LoadErrorEstimate
-load_error_of(const io::Case& case_, const assembly::FormingProblem<dim>& problem, const VectorX& u,
-              Real run_load, bool mesh_from_case, bool converged, PhaseTimes& times,
+load_error_of(const RunPlan& plan, const assembly::FormingProblem<dim>& problem, const VectorX& u,
+              Real run_load, bool mesh_from_plan, bool converged, PhaseTimes& times,
               const IterationCallback& on_iteration = {});
 
-/// load_error_of for a converged solution `u` of `case_` on `mesh`, the problem built
+/// load_error_of for a converged solution `u` of `plan` on `mesh`, the problem built
 /// again (an adaptive run asks the full estimate of a cycle that ran with the cheap one).
 template <int dim>
-post::LoadErrorEstimate load_error_on(const io::Case& case_, const mesh::Mesh<dim>& mesh,
-                                      const VectorX& u, bool mesh_from_case, PhaseTimes& times,
+post::LoadErrorEstimate load_error_on(const RunPlan& plan, const mesh::Mesh<dim>& mesh,
+                                      const VectorX& u, bool mesh_from_plan, PhaseTimes& times,
                                       const IterationCallback& on_iteration = {});
 
 } // namespace formflow::app

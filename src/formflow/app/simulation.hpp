@@ -1,89 +1,48 @@
 // SPDX-License-Identifier: MIT
-// The whole solve of one case: mesh → dofs → secant iteration → post-processing.
+// The front ends' entry to a run: a case in, translated once into a run plan.
 #pragma once
 
+#include "formflow/app/run.hpp"
 #include "formflow/io/case.hpp"
-#include "formflow/mesh/any_mesh.hpp"
-#include "formflow/post/error_norms.hpp"
-#include "formflow/post/results.hpp"
-#include "formflow/post/temperature_error_norms.hpp"
 
-#include <functional>
-#include <optional>
+#include <string>
+#include <vector>
 
 namespace formflow::app {
 
-/// Called once per nonlinear iteration with its record (for the monitor).
-using IterationCallback = std::function<void(const solvers::IterationRecord&)>;
+/// The one translation of a case into a run plan (app/case_translation.cpp): the mesh
+/// spec and its reader, the problem settings, the solve plan, the outer loops' settings
+/// and the stages they compose, the keys' places. `case_` is validated (load_case).
+RunPlan make_run_plan(const io::Case& case_);
 
-/// `on_iteration` with every record's `stage` set to `stage`, for a solve that is not
-/// the run's own (an error estimate's level, an adaptive cycle), after the stage a
-/// nested with_stage set ("adapt cycle 3, 2938 dofs · error estimate: ..."); empty if
-/// `on_iteration` is. The records reach the caller's callback, so a stop signal is
-/// honoured during those solves too.
-IterationCallback with_stage(const IterationCallback& on_iteration, std::string stage);
-
-/// One run's mesh and what was computed on it, of either dimension.
-///
-/// Why a variant of meshes and not a Simulation<dim>: everything a run
-/// produces except the mesh is already dimension-free data (post::Results holds
-/// flat node-major fields of dim components and contact samples with three
-/// coordinates), so only the mesh varies. One Simulation type lets the CLI, the
-/// studies and the tests hold a run without being templated themselves; the
-/// code that needs dim (the solve, post-processing, the VTU writer) is
-/// templated and reached by one std::visit on `mesh`, the dimension the mesh
-/// source produced. The solve itself is simulate_on<dim>.
-struct Simulation {
-  mesh::AnyMesh mesh;
-  post::Results results;
-  /// Error against the exact field: only for a manufactured solution (verification.solution).
-  std::optional<post::ErrorNorms> errors;
-  /// Temperature error: only for the coupled manufactured solution (thermal.enabled too).
-  std::optional<post::TemperatureErrorNorms> temperature_errors;
-  /// CHOLMOD rcond of K(u) at the final velocity, when asked for.
-  std::optional<Real> reciprocal_condition;
-
-  int dimension() const { return mesh::dimension_of(mesh); }
-  /// The mesh of a plane run, for the 2D-only consumers (pictures, the die
-  /// corner of a study). Precondition: dimension() == 2 (std::bad_variant_access).
-  const mesh::Mesh<2>& plane_mesh() const { return std::get<mesh::Mesh<2>>(mesh); }
-};
-
-/// Solves `case_` on the mesh its mesh source makes (io::load_mesh), in the
-/// dimension of that mesh. Never throws for numerical trouble: a run that does
-/// not converge returns results with the stop reason set. A case with a
-/// manufactured solution is solved by simulate_manufactured.
+/// simulate(make_run_plan(case_), ...): what the CLI, the Python module and a study run.
 Simulation simulate(const io::Case& case_, const IterationCallback& on_iteration = {},
                     bool estimate_condition = false);
 
-/// The forming problem of `case_` (its process, physics and solve plan) on
-/// `mesh`: everything simulate does after making the mesh. The mesh's labels
-/// carry the process (the driven end, symmetry, Γ3); `case_.mesh` is read only
-/// for mesh sequencing (solver.coarse_levels), which re-makes coarser meshes
-/// from it and so applies only when `mesh` came from it.
+/// simulate_on(make_run_plan(case_), mesh, ...).
 template <int dim>
 Simulation simulate_on(const io::Case& case_, mesh::Mesh<dim> mesh,
                        const IterationCallback& on_iteration = {}, bool estimate_condition = false);
 
-/// simulate_on with Newton started from `start` (a full dof vector on `mesh`, e.g.
-/// the previous adaptive cycle's solution interpolated; its prescribed values are
-/// replaced by the problem's) instead of a coarse start. The load's error estimate,
-/// if asked for, is computed on `mesh` refined uniformly (mesh/uniform_refinement.hpp).
-template <int dim>
-Simulation simulate_from(const io::Case& case_, mesh::Mesh<dim> mesh, const VectorX& start,
-                         const IterationCallback& on_iteration = {});
-
-/// The manufactured-solution problem of `case_` (verification.solution ≠ none):
-/// unit square, box mesh with the case's distortion, exact velocity on the
-/// whole boundary, body force; `errors` filled (app/manufactured_simulation.cpp).
-Simulation simulate_manufactured(const io::Case& case_, const IterationCallback& on_iteration = {},
-                                 bool estimate_condition = false);
-
-/// The discrete problem's parameters taken from `case_`.
+/// The discrete problem's parameters of `case_`: make_run_plan(case_).problem.
 assembly::ProblemSettings problem_settings(const io::Case& case_);
 
-/// CHOLMOD rcond of the secant matrix K(u) of `problem` at velocity `u`.
-template <int dim>
-Real condition_at(const assembly::FormingProblem<dim>& problem, const VectorX& u);
+/// The solve plan of a validated case (load_case refused what no loop serves).
+SolvePlan make_solve_plan(const io::Case& case_);
+
+/// resolved_load_error_method (app/load_error.hpp) of make_run_plan(case_).
+solvers::LoadErrorMethod resolved_load_error_method(const io::Case& case_, bool mesh_from_case,
+                                                    int dim, Index n_dofs, std::string& why);
+
+/// On more than one rank, refuses (InputError naming the key, before the solve) what the
+/// distributed run does not serve (the stage table, solvers/stage_table.hpp).
+void check_distributed(const io::Case& case_);
+
+/// `case_` loaded from `path` with `overrides`, and on more than one rank with PETSc as
+/// the default of solver.linear (the one distributed back-end: `mpirun -np 2 formflow
+/// run case.toml` runs): a case that sets solver.linear keeps its choice (and
+/// check_distributed refuses any but PETSc, naming the key). Likewise friction.stick:
+/// left unset where it would resolve to exact stick (serial only), it is "augmented".
+io::Case load_run_case(const std::string& path, std::vector<io::Override> overrides);
 
 } // namespace formflow::app

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The solve plan: which loop, linear solver, coarse levels and multiplier
-// augmentation a case runs with, built once from the case (issue 13).
+// augmentation a case runs with, built once from the case (issue 13; the translation
+// is app/case_translation.cpp).
 #pragma once
 
-#include "formflow/io/case.hpp"
 #include "formflow/solvers/capabilities.hpp"
 
 #include <string>
@@ -36,8 +36,5 @@ struct SolvePlan {
   /// summary.json `method`: the loop's name, "from coarse meshes" when a coarse start ran.
   std::string name(bool coarse_start_ran) const;
 };
-
-/// The plan of a validated case (load_case refused what no loop serves).
-SolvePlan make_solve_plan(const io::Case& case_);
 
 } // namespace formflow::app

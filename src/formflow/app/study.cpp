@@ -2,7 +2,6 @@
 // Ladder of runs over one key: running, differences, orders (planning: app/study_plan.cpp).
 #include "formflow/app/study.hpp"
 
-#include "formflow/app/adaptive_run.hpp"
 #include "formflow/app/simulation.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_keys.hpp"
@@ -103,7 +102,7 @@ post::StudyTable run_study(const StudyPlan& plan, bool estimate_condition,
         last.mesh);
   post::compute_orders(table);
   if (against_adaptive)
-    table.adaptive = simulate_adaptive(plan.cases.front(), on_iteration).results.adapt;
+    table.adaptive = simulate(plan.cases.front(), on_iteration).results.adapt; // [adapt]
   const io::Case& first = plan.cases.front();
   if (plan.key == "mesh.size" && first.manufactured != physics::ManufacturedSolution::None) {
     const int order = fem::element_order(first.element); // Theorem 4.1, smooth solution

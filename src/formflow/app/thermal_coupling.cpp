@@ -92,11 +92,11 @@ Real last_pressure(const solvers::SecantOutcome& outcome) {
 
 template <int dim>
 solvers::SecantOutcome
-couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
+couple_thermal(const physics::Thermal& thermal, const physics::Friction& friction,
+               Real final_tolerance, assembly::FormingProblem<dim>& problem,
                const FlowSolve& solve_flow, const IterationCallback& on_iteration,
                const assembly::FrictionMultipliers<dim>& multipliers, post::Results& results,
                const ManufacturedHeat<dim>* manufactured) {
-  const physics::Thermal& thermal = case_.thermal;
   post::ThermalResults& out = results.thermal;
   out.enabled = true;
   assembly::HeatProblem<dim> heat(problem.discretisation(), thermal,
@@ -125,7 +125,7 @@ couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
   problem.set_point_temperatures(law_temperatures(
       thermal, std::vector<Real>(static_cast<std::size_t>(n_points), thermal.billet_temperature)));
   // The Γ3 points' T for the Tresca and hybrid shear yield (Coulomb does not read it).
-  const bool shear_yield = physics::needs_shear_yield(case_.friction);
+  const bool shear_yield = physics::needs_shear_yield(friction);
   if (shear_yield)
     problem.set_contact_temperatures(law_temperatures(
         thermal,
@@ -135,7 +135,6 @@ couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
   // not be solved below ΔT/10 (the first one, at the billet's T, to 1e-2); the final
   // tolerance δ = solver.tolerance once ΔT/10 reaches it, and the coupling converges only
   // on a flow solved to δ.
-  const Real final_tolerance = case_.solver.tolerance;
   const auto inner_tolerance = [&](Real temperature_change) {
     return std::max(final_tolerance, std::min(first_flow_tolerance, 0.1 * temperature_change));
   };
@@ -235,11 +234,13 @@ template assembly::HeatSources heat_sources<2>(const assembly::FormingProblem<2>
 template assembly::HeatSources heat_sources<3>(const assembly::FormingProblem<3>&,
                                                const physics::Thermal&, const VectorX&,
                                                const assembly::FrictionMultipliers<3>*);
-template solvers::SecantOutcome couple_thermal<2>(const io::Case&, assembly::FormingProblem<2>&,
+template solvers::SecantOutcome couple_thermal<2>(const physics::Thermal&, const physics::Friction&,
+                                                  Real, assembly::FormingProblem<2>&,
                                                   const FlowSolve&, const IterationCallback&,
                                                   const assembly::FrictionMultipliers<2>&,
                                                   post::Results&, const ManufacturedHeat<2>*);
-template solvers::SecantOutcome couple_thermal<3>(const io::Case&, assembly::FormingProblem<3>&,
+template solvers::SecantOutcome couple_thermal<3>(const physics::Thermal&, const physics::Friction&,
+                                                  Real, assembly::FormingProblem<3>&,
                                                   const FlowSolve&, const IterationCallback&,
                                                   const assembly::FrictionMultipliers<3>&,
                                                   post::Results&, const ManufacturedHeat<3>*);

@@ -2,10 +2,9 @@
 // Hot forming: the staggered loop between the flow and the heat problem (issue 18).
 #pragma once
 
-#include "formflow/app/simulation.hpp"
+#include "formflow/app/run.hpp"
 #include "formflow/assembly/forming_problem.hpp"
 #include "formflow/assembly/heat_problem.hpp"
-#include "formflow/io/case.hpp"
 #include "formflow/post/results.hpp"
 #include "formflow/solvers/secant_iteration.hpp"
 
@@ -39,13 +38,15 @@ template <int dim> struct ManufacturedHeat {
 /// temperature (relative to its rise) and the process pressure change by less than
 /// thermal.coupling_tolerance, with each flow solved to max(δ, min(1e-2, ΔT/10)) for the
 /// relative change ΔT of the heat solve before it (inexact staggering) and the last one
-/// to δ = solver.tolerance; the last step is a heat solve, not a flow solve at a T the
-/// flow already has (within the tolerance). Each step's closing record goes to `on_iteration`
+/// to δ = `final_tolerance` (solver.tolerance); `friction` says whether the Γ3 points
+/// need their T (a shear-yield threshold); the last step is a heat solve, not a flow solve at a T
+/// the flow already has (within the tolerance). Each step's closing record goes to `on_iteration`
 /// (IterationRecord::coupling > 0); fills results.thermal and returns the last flow
 /// outcome, whose stop reason is CouplingLimit when the coupling did not converge.
 template <int dim>
 solvers::SecantOutcome
-couple_thermal(const io::Case& case_, assembly::FormingProblem<dim>& problem,
+couple_thermal(const physics::Thermal& thermal, const physics::Friction& friction,
+               Real final_tolerance, assembly::FormingProblem<dim>& problem,
                const FlowSolve& solve_flow, const IterationCallback& on_iteration,
                const assembly::FrictionMultipliers<dim>& multipliers, post::Results& results,
                const ManufacturedHeat<dim>* manufactured = nullptr);

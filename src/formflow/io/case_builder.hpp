@@ -79,6 +79,7 @@ private:
   void check_solid() const;
   void check_mesh_source() const;
   void check_verification() const;
+  void check_stages(const std::string& stage_key) const;
   void check_thermal() const;
   void check_adapt() const;
   void check_mesh_memory() const;

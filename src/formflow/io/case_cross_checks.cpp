@@ -7,6 +7,7 @@
 #include "formflow/io/case_validation_simplex.hpp"
 #include "formflow/io/mesh_memory.hpp"
 #include "formflow/io/problem_shape.hpp"
+#include "formflow/io/stage_set.hpp"
 #include "formflow/mesh/fitting_sizes.hpp"
 #include "formflow/physics/friction.hpp"
 #include "formflow/physics/manufactured_thermal.hpp"
@@ -348,6 +349,16 @@ void CaseBuilder::check_thermal() const {
               "(hensel_spittel: 0 < m3 + m8 T ≤ 1), or a lower thermal.max_temperature",
               {"material.law", "material.hs_m3", "material.hs_m8", "material.st_n",
                "thermal.billet_temperature", "thermal.tool_temperature"});
+  // The stages hot forming does not compose with (solvers/stage_table.hpp).
+  check_stages("thermal.enabled");
+}
+
+/// The first row of the outer loops' composition table (solvers/stage_table.hpp) that
+/// refuses this case and belongs to the stage switched on by `stage_key`.
+void CaseBuilder::check_stages(const std::string& stage_key) const {
+  const auto refusal = solvers::refused_composition(stage_set(case_));
+  if (refusal && refusal->stage_key == stage_key)
+    die_error(refusal->key, refusal->message, refusal->hint, {refusal->stage_key});
 }
 
 /// Adaptivity (docs/error-estimation.md) remeshes the plane channel with Gmsh and
@@ -369,28 +380,8 @@ void CaseBuilder::check_adapt() const {
   if (case_.mesh.source == mesh::MeshSource::File)
     die_error("mesh.source", "a mesh from a file has no channel geometry for the cycles to remesh",
               off + ", or mesh.source = \"structured\" or \"gmsh\"", switch_key);
-  if (case_.manufactured != physics::ManufacturedSolution::None)
-    die_error("verification.solution",
-              "adaptivity estimates a forming load, which a "
-              "manufactured solution does not have",
-              off, switch_key);
-  if (case_.thermal.enabled)
-    die_error("thermal.enabled", "adaptivity with hot forming is not done yet", off, switch_key);
-  if (case_.friction.regularization == physics::FrictionRegularization::None)
-    die_error("friction.regularization",
-              "exact friction has no error estimate to drive adaptivity (no Newton tangent "
-              "without its multipliers)",
-              off + ", or a regularised friction law (friction.regularization)", switch_key);
-  if ((case_.formulation.type == assembly::FormulationType::Mixed && case_.penalty.d == 0) ||
-      case_.penalty.d_n == 0)
-    die_error(case_.penalty.d_n == 0 ? "penalty.dN" : "penalty.d",
-              "exact constraints (d = 0 or dN = 0) have no error estimate to drive adaptivity",
-              off + ", or a penalty > 0", switch_key);
-  if (case_.solver.method != solvers::NonlinearMethod::Newton)
-    die_error("solver.method",
-              "adaptivity restarts each cycle's Newton from the previous solution; the secant "
-              "iteration has no such start",
-              off + ", or solver.method = \"newton\"", switch_key);
+  // The stages adaptivity does not compose with: the table the run plan reads too.
+  check_stages("adapt.target_error");
 }
 
 /// A mesh that cannot fit in this machine's memory is refused now, not by the allocator.

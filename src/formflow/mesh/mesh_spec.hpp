@@ -16,7 +16,7 @@ namespace formflow::mesh {
 /// Everything io::load_mesh (and the verification box mesh) reads to make the
 /// cells, so that mesh sequencing (app/coarse_start.cpp) varies one small
 /// struct instead of copying the whole case. The velocity element
-/// (`mesh.element`) is fem's choice and stays in io::Case: the mesh layer sees
+/// (`mesh.element`) is fem's choice and stays in the case: the mesh layer sees
 /// only the cells' polynomial order, which the caller passes beside the spec.
 struct MeshSpec {
   MeshSource source = MeshSource::Structured; ///< mesh.source

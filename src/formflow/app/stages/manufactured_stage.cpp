@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A manufactured-solution case: box mesh, exact boundary values, body force, error norms.
-#include "formflow/app/simulation.hpp"
+#include "formflow/app/manufactured_mesh.hpp"
+#include "formflow/app/stages/stage.hpp"
 #include "formflow/app/thermal_coupling.hpp"
 
 #include "formflow/assembly/boundary_values.hpp"
@@ -28,13 +29,13 @@ physics::ManufacturedTemperature manufactured_temperature(const physics::Thermal
                                           physics::coupled_temperature_rise);
 }
 
-/// The exact field of `case_` in `dim` dimensions: the stream-function field on the
+/// The exact field of `plan` in `dim` dimensions: the stream-function field on the
 /// unit square, the vector-potential field on the unit cube.
-template <int dim> auto exact_field(const io::Case& case_) {
+template <int dim> auto exact_field(const RunPlan& plan) {
   if constexpr (dim == 2)
-    return physics::StreamFunctionField::of(case_.manufactured);
+    return physics::StreamFunctionField::of(plan.manufactured);
   else
-    return physics::VectorPotentialField::of(case_.manufactured);
+    return physics::VectorPotentialField::of(plan.manufactured);
 }
 
 /// The coupled manufactured solution (thermal.enabled, plane only): the smooth velocity
@@ -42,15 +43,15 @@ template <int dim> auto exact_field(const io::Case& case_) {
 /// of a hot run (app/thermal_coupling.hpp) with the exact T on all of ∂Ω, the body force
 /// of the temperature-dependent law and the heat source that make the pair exact. The
 /// velocity of the convection and the β σ_p ε̄̇ of the heat source are the discrete ones.
-void solve_coupled_manufactured(const io::Case& case_, Simulation& simulation,
+void solve_coupled_manufactured(const RunPlan& plan, Simulation& simulation,
                                 const IterationCallback& on_iteration) {
   post::Results& results = simulation.results;
   const mesh::Mesh<2>& box = std::get<mesh::Mesh<2>>(simulation.mesh);
-  const auto field = physics::StreamFunctionField::of(case_.manufactured);
-  const physics::ManufacturedTemperature temperature = manufactured_temperature(case_.thermal);
-  assembly::ProblemSettings settings = problem_settings(case_);
+  const auto field = physics::StreamFunctionField::of(plan.manufactured);
+  const physics::ManufacturedTemperature temperature = manufactured_temperature(plan.thermal);
+  assembly::ProblemSettings settings = plan.problem;
   settings.symmetry = physics::Symmetry::Plane;
-  const physics::FlowLaw law = case_.material.selected();
+  const physics::FlowLaw law = plan.problem.law; // its T is set at each point
   auto velocity = [field](const Point<2>& x) { return field.velocity(x); };
   auto body_force = [field, temperature, law](const Point<2>& x) {
     return physics::coupled_body_force(law, field, temperature, x);
@@ -73,7 +74,7 @@ void solve_coupled_manufactured(const io::Case& case_, Simulation& simulation,
       values.reinit(coordinates);
       for (int q = 0; q < values.n_points(); ++q)
         heat.source.push_back(
-            physics::coupled_heat_source(law, case_.thermal, field, temperature, values.point(q)));
+            physics::coupled_heat_source(law, plan.thermal, field, temperature, values.point(q)));
     }
   }
   // The body force rules Newton out (assembly/newton_system.cpp): the secant loop, from
@@ -81,13 +82,14 @@ void solve_coupled_manufactured(const io::Case& case_, Simulation& simulation,
   const auto solver = solvers::reuse_analysis(solvers::make_cholmod_solver());
   const FlowSolve solve_flow = [&](const VectorX*, Real tolerance) {
     solvers::FormingNonlinearProblem<2> nonlinear(*problem);
-    solvers::IterationControl control = case_.solver;
+    solvers::IterationControl control = plan.solver;
     control.tolerance = tolerance;
     return solvers::secant_iteration(nonlinear, *solver, control, on_iteration, results.timing);
   };
   const assembly::FrictionMultipliers<2> no_multipliers;
   solvers::SecantOutcome outcome =
-      couple_thermal(case_, *problem, solve_flow, on_iteration, no_multipliers, results, &heat);
+      couple_thermal(plan.thermal, plan.problem.friction, plan.solver.tolerance, *problem,
+                     solve_flow, on_iteration, no_multipliers, results, &heat);
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());
@@ -103,12 +105,12 @@ void solve_coupled_manufactured(const io::Case& case_, Simulation& simulation,
 }
 
 template <int dim>
-void solve_manufactured(const io::Case& case_, Simulation& simulation,
+void solve_manufactured(const RunPlan& plan, Simulation& simulation,
                         const IterationCallback& on_iteration, bool estimate_condition) {
   post::Results& results = simulation.results;
   const mesh::Mesh<dim>& box = std::get<mesh::Mesh<dim>>(simulation.mesh);
-  const auto field = exact_field<dim>(case_);
-  assembly::ProblemSettings settings = problem_settings(case_);
+  const auto field = exact_field<dim>(plan);
+  assembly::ProblemSettings settings = plan.problem;
   // The manufactured fields are Cartesian (physics/manufactured*.hpp); the box has no axis.
   settings.symmetry = physics::Symmetry::Plane;
   auto velocity = [field](const Point<dim>& x) { return field.velocity(x); };
@@ -124,7 +126,7 @@ void solve_manufactured(const io::Case& case_, Simulation& simulation,
   auto solver = solvers::make_cholmod_solver();
   solvers::FormingNonlinearProblem<dim> nonlinear(*problem);
   solvers::SecantOutcome outcome =
-      solvers::secant_iteration(nonlinear, *solver, case_.solver, on_iteration, results.timing);
+      solvers::secant_iteration(nonlinear, *solver, plan.solver, on_iteration, results.timing);
   results.stop_reason = outcome.stop_reason;
   results.history = std::move(outcome.history);
   results.iterations = static_cast<int>(results.history.size());
@@ -138,30 +140,44 @@ void solve_manufactured(const io::Case& case_, Simulation& simulation,
 
 } // namespace
 
-Simulation simulate_manufactured(const io::Case& case_, const IterationCallback& on_iteration,
-                                 bool estimate_condition) {
-  Simulation simulation;
-  const auto start = std::chrono::steady_clock::now();
-  const int cells = mesh::cells_along(1.0, case_.mesh.size);
+mesh::AnyMesh manufactured_mesh(const RunPlan& plan) {
+  const int cells = mesh::cells_along(1.0, plan.mesh.size);
   FF_ASSERT(cells > 0, "the case validation guarantees that mesh.size divides 1");
-  const int order = fem::element_order(case_.element);
-  {
-    ScopedTimer timer(simulation.results.timing, "mesh");
-    if (case_.mesh.dimension == 3)
-      simulation.mesh = mesh::make_unit_cube_mesh(cells, order, case_.mesh.distortion);
-    else
-      simulation.mesh = mesh::make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), cells, cells,
-                                            order, case_.mesh.distortion);
+  const int order = fem::element_order(plan.element);
+  if (plan.mesh.dimension == 3)
+    return mesh::make_unit_cube_mesh(cells, order, plan.mesh.distortion);
+  return mesh::make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), cells, cells, order,
+                             plan.mesh.distortion);
+}
+
+namespace {
+
+/// A manufactured solution (verification.solution ≠ none) on the unit box the run made
+/// (manufactured_mesh): the exact velocity on the whole boundary, its body force, the
+/// secant loop; with thermal.enabled the coupled pair by the hot run's staggered loop.
+/// A solve stage of its own, the only stage of its chain: its stop rule is the loop's
+/// (and the coupling's); its block in summary.json the error norms (`errors`).
+class ManufacturedStage final : public StageOf<ManufacturedStage> {
+public:
+  std::string_view name() const override { return "manufactured solution"; }
+
+  template <int dim> void run_on(SolveState<dim>& state, const StageChain&) const {
+    const RunPlan& plan = state.run_plan();
+    if constexpr (dim == 2) {
+      if (plan.thermal.enabled) { // plane only (case validation)
+        solve_coupled_manufactured(plan, *state.simulation, state.on_iteration);
+        return;
+      }
+    }
+    solve_manufactured<dim>(plan, *state.simulation, state.on_iteration, state.estimate_condition);
   }
-  if (case_.thermal.enabled)
-    solve_coupled_manufactured(case_, simulation, on_iteration); // plane only (case validation)
-  else if (case_.mesh.dimension == 3)
-    solve_manufactured<3>(case_, simulation, on_iteration, estimate_condition);
-  else
-    solve_manufactured<2>(case_, simulation, on_iteration, estimate_condition);
-  simulation.results.timing.add(
-      "total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  return simulation;
+};
+
+} // namespace
+
+const Stage& manufactured_stage() {
+  static const ManufacturedStage stage;
+  return stage;
 }
 
 } // namespace formflow::app
