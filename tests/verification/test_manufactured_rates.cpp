@@ -60,5 +60,42 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::Bool()),
     name_of);
 
+/// P2+–P1disc on triangles (each square of the box cut along its diagonal, distorted
+/// with it): Theorem 4.1's orders of a quadratic element, 2 in V and 3 in L2. The
+/// triangles approach them more slowly than Q2 (V: 1.70, 1.81, 1.92 from h = 1/4 to
+/// 1/32 on the uniform mesh, not d's doing: the same at d = 1e-6), so the ladder starts
+/// at h = 1/8. On the smoothly distorted box the constant-viscosity run still shows V
+/// order 1.82 at h = 1/32 (docs/simplices.md lists it as open), so the distorted
+/// meshes are not asserted here.
+class ManufacturedTriangleRates
+    : public ::testing::TestWithParam<std::tuple<mesh::Distortion, bool>> {};
+
+TEST_P(ManufacturedTriangleRates, ObservedOrdersAreQuadraticOnFinestPair) {
+  const auto [distortion, nonlinear] = GetParam();
+  const post::StudyTable table =
+      testing::mesh_ladder({1.0 / 8, 1.0 / 16, 1.0 / 32}, [&](Real size) {
+        io::Case case_ =
+            testing::manufactured_case(fem::ElementKind::Q2, size, distortion, nonlinear);
+        case_.mesh.cell = mesh::CellKind::Triangle;
+        case_.element = fem::ElementKind::P2;
+        case_.formulation.type = assembly::FormulationType::Mixed;
+        case_.formulation.pressure = fem::PressureSpace::P1disc;
+        return case_;
+      });
+  ASSERT_TRUE(table.all_converged());
+  const post::StudyRung& finest = table.rungs.back();
+  ASSERT_TRUE(finest.order_v && finest.order_l2);
+  EXPECT_NEAR(*finest.order_v, 2.0, 0.15);
+  EXPECT_NEAR(*finest.order_l2, 3.0, 0.15);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Theorem41, ManufacturedTriangleRates,
+    ::testing::Combine(::testing::Values(mesh::Distortion::None), ::testing::Bool()),
+    [](const auto& info) {
+      return std::string(std::get<0>(info.param) == mesh::Distortion::None ? "Uniform" : "Smooth") +
+             (std::get<1>(info.param) ? "PowerLaw" : "Constant");
+    });
+
 } // namespace
 } // namespace formflow

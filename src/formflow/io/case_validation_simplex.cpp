@@ -80,10 +80,10 @@ std::optional<KeyRefusal> simplex_scope_problem(const Case& case_) {
                       "the solid-channel generators come next)",
                       "use mesh.cell = \"hexahedron\" with geometry.dimension = 3, or triangles "
                       "in 2D"};
-  if (case_.manufactured != physics::ManufacturedSolution::None)
+  if (case_.manufactured != physics::ManufacturedSolution::None && case_.mesh.dimension == 3)
     return KeyRefusal{{"verification.solution", "mesh.cell"},
-                      "the manufactured solutions' box mesh is of quadrilaterals only so far",
-                      "set verification.solution = \"none\", or mesh.cell = \"quadrilateral\""};
+                      "the manufactured solutions' unit cube is of hexahedra only so far",
+                      "set verification.solution = \"none\", or mesh.cell = \"hexahedron\""};
   if (case_.adapt.enabled())
     return KeyRefusal{{"adapt.target_error", "mesh.cell"},
                       "adaptive refinement remeshes with quadrilaterals only",
@@ -107,6 +107,17 @@ void resolve_cell_defaults(Case& case_, const std::function<bool(const std::stri
 std::optional<KeyRefusal> cell_case_problem(const Case& case_,
                                             const std::function<bool(const std::string&)>& is_set) {
   if (auto problem = shape_problem(case_)) return problem;
+  // The manufactured solve is the CHOLMOD secant loop: a mixed pressure must be condensed
+  // with d > 0 there (no saddle point, no Uzawa steps).
+  const bool mixed = case_.formulation.type == FormulationType::Mixed;
+  if (mixed && case_.manufactured != physics::ManufacturedSolution::None &&
+      (!fem::is_discontinuous(case_.formulation.pressure) || case_.penalty.d == 0 ||
+       case_.formulation.discontinuous == assembly::DiscontinuousPressure::SaddlePoint))
+    return KeyRefusal{{"verification.solution", "formulation.pressure", "penalty.d"},
+                      "the manufactured solutions are solved with the pressure condensed per "
+                      "cell: a discontinuous pressure (P1disc, P0) with penalty.d > 0",
+                      "use formulation.pressure = \"P1disc\" with penalty.d > 0, or "
+                      "verification.solution = \"none\""};
   const bool simplex = mesh::shape_of(case_.mesh.cell) == mesh::CellShape::Simplex;
   if (!simplex) {
     if (case_.formulation.type == FormulationType::Mixed &&

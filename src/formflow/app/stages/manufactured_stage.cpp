@@ -6,8 +6,10 @@
 
 #include "formflow/assembly/boundary_values.hpp"
 #include "formflow/core/error.hpp"
+#include "formflow/fem/element_choice.hpp"
 #include "formflow/mesh/box_mesh.hpp"
 #include "formflow/mesh/cube_mesh.hpp"
+#include "formflow/mesh/simplex_split.hpp"
 #include "formflow/physics/manufactured_3d.hpp"
 #include "formflow/physics/manufactured_thermal.hpp"
 #include "formflow/post/post_process.hpp"
@@ -123,6 +125,14 @@ void solve_manufactured(const RunPlan& plan, Simulation& simulation,
     problem = std::make_unique<assembly::FormingProblem<dim>>(
         box, settings, assembly::make_boundary_constraints<dim>(box, velocity), body_force);
   }
+  // The mixed formulation (the only one of triangles) with its pressure condensed per cell:
+  // the velocity system stays SPD for CHOLMOD (case validation: d > 0, condensed).
+  std::unique_ptr<assembly::ConstraintMultipliers<dim>> pressure;
+  if (plan.formulation.type == assembly::FormulationType::Mixed) {
+    pressure = std::make_unique<assembly::ConstraintMultipliers<dim>>(
+        box, settings.penalty, plan.formulation, problem->full_rule(), problem->n_contact_points());
+    problem->attach_multipliers(pressure.get());
+  }
   auto solver = solvers::make_cholmod_solver();
   solvers::FormingNonlinearProblem<dim> nonlinear(*problem);
   solvers::SecantOutcome outcome =
@@ -146,8 +156,15 @@ mesh::AnyMesh manufactured_mesh(const RunPlan& plan) {
   const int order = fem::element_order(plan.element);
   if (plan.mesh.dimension == 3)
     return mesh::make_unit_cube_mesh(cells, order, plan.mesh.distortion);
-  return mesh::make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), cells, cells, order,
-                             plan.mesh.distortion);
+  const mesh::Mesh<2> box = mesh::make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), cells,
+                                                cells, order, plan.mesh.distortion);
+  // Triangles: each (distorted) square cut along its diagonal (io/case_validation_simplex.cpp
+  // refuses tetrahedra).
+  const mesh::CellType type =
+      fem::velocity_cell_type(plan.element, plan.formulation.pressure,
+                              plan.formulation.type == assembly::FormulationType::Mixed);
+  if (type.is_simplex()) return mesh::split_into_triangles(box, type.bubbles);
+  return box;
 }
 
 namespace {
