@@ -284,6 +284,8 @@ json summary_document(const Case& case_, const post::Results& results) {
         {"flux_balance", exit.flux_balance},
         {"exit_flux", exit.exit_flux},
         {"entry_flux", exit.entry_flux},
+        {"free_surface_flux", exit.free_surface_flux},
+        {"wall_flux", exit.wall_flux},
         {"area", exit.area}};
   }
   if (results.thermal.enabled) out["thermal"] = thermal_json(results.thermal);

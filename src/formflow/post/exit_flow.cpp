@@ -22,7 +22,10 @@ ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& 
   flow.velocity_max = -std::numeric_limits<Real>::infinity();
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
     const bool exit = facet.label == mesh::BoundaryLabel::Front;
-    if (!exit && facet.label != mesh::BoundaryLabel::Rear) continue;
+    const bool entry = facet.label == mesh::BoundaryLabel::Rear;
+    const bool free = facet.label == mesh::BoundaryLabel::FreeEntry ||
+                      facet.label == mesh::BoundaryLabel::FreeExit;
+    if (!exit && !entry && !free && !mesh::is_contact(facet.label)) continue;
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, facet.cell));
     face.reinit(coordinates, facet.local_face);
@@ -37,9 +40,13 @@ ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& 
         flow.exit_flux += normal_flux;
         axial_integral += velocity[0] * face.JxW(q);
         flow.area += face.JxW(q);
-      } else {
+      } else if (entry) {
         flow.entry_flux -= normal_flux;
         entry_area += face.JxW(q);
+      } else if (free) {
+        flow.free_surface_flux += normal_flux;
+      } else {
+        flow.wall_flux += normal_flux;
       }
     }
     if (!exit) continue;

@@ -58,6 +58,10 @@ struct ExitFlow {
   Real exit_flux = 0.0;     ///< ∫ u·n dA over the exit (outflow > 0)
   Real entry_flux = 0.0;    ///< −∫ u·n dA over the entry (inflow > 0)
   Real flux_balance = 0.0;  ///< exit_flux / entry_flux − 1
+  /// ∫ u·n dA (outward) through the free surfaces and through the contact walls: with
+  /// the exit and entry fluxes they add up to ∫ div u dV, which the penalty makes
+  /// d ∫ σ_H dV (the material's compressibility), so flux_balance is that and the leaks.
+  Real free_surface_flux = 0.0, wall_flux = 0.0;
 };
 
 /// Stick and slip zones of one contact part, measured with the Γ3 quadrature weights
