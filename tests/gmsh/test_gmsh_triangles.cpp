@@ -9,9 +9,9 @@
 #include "formflow/mesh/gmsh_mesh.hpp"
 #include "gmsh/gmsh_test_mesh.hpp"
 #include "support/approx.hpp"
+#include "support/run_cli.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -24,20 +24,13 @@ namespace fs = std::filesystem;
 using mesh::BoundaryLabel;
 using mesh::CellShape;
 
+/// The test's scratch directory (support/run_cli.hpp); `scratch / name` is a path in it.
 class TriangleScratch {
 public:
-  TriangleScratch() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("formflow-gmsh-tri-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TriangleScratch() { fs::remove_all(path_); }
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+  std::string operator/(const std::string& name) const { return (directory_ / name).string(); }
 
 private:
-  fs::path path_;
+  testing::ScratchDirectory directory_{"formflow-gmsh-tri"};
 };
 
 /// Every cell's Jacobian is positive at the full rule's points and at the nodes.
