@@ -68,7 +68,8 @@ def test_the_dom_is_the_whole_report(report):
     dom, log = chromium("--dump-dom", f"file://{page}", profile=os.path.join(scratch, "dom"))
     assert not LOAD_FAILURES.search(log), log
     images = re.findall(r'<img src="([^"]*)"', dom)
-    assert len(images) == 6  # strain rate, velocity, pressure, contact, convergence, load error
+    # strain rate, velocity, pressure, contact, convergence, load error, exit velocity
+    assert len(images) == 7
     assert all(src.startswith("data:image/svg+xml;base64,") for src in images)
     assert "<script" not in dom and "ram reaction" in dom and dom.rstrip().endswith("</html>")
     # The policy that makes any other load a logged refusal.

@@ -18,6 +18,7 @@ ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& 
   typename fem::FacetValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
   ExitFlow flow;
   Real axial_integral = 0.0, entry_area = 0.0;
+  std::vector<Index> exit_nodes;
   flow.velocity_min = std::numeric_limits<Real>::infinity();
   flow.velocity_max = -std::numeric_limits<Real>::infinity();
   for (const mesh::BoundaryFacet& facet : mesh.facets) {
@@ -51,9 +52,11 @@ ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& 
     }
     if (!exit) continue;
     for (const int local : mesh.face_nodes(facet.local_face)) {
-      const Real axial = u[fem::dof_of<dim>(mesh.cells(local, facet.cell), 0)];
+      const Index node = mesh.cells(local, facet.cell);
+      const Real axial = u[fem::dof_of<dim>(node, 0)];
       flow.velocity_min = std::min(flow.velocity_min, axial);
       flow.velocity_max = std::max(flow.velocity_max, axial);
+      if constexpr (dim == 2) exit_nodes.push_back(node);
     }
   }
   flow.present = flow.area > 0 && entry_area > 0;
@@ -61,6 +64,11 @@ ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& 
   flow.velocity_mean = axial_integral / flow.area;
   flow.nonuniformity = (flow.velocity_max - flow.velocity_min) / flow.velocity_mean;
   flow.flux_balance = flow.exit_flux / flow.entry_flux - 1.0;
+  std::sort(exit_nodes.begin(), exit_nodes.end());
+  exit_nodes.erase(std::unique(exit_nodes.begin(), exit_nodes.end()), exit_nodes.end());
+  for (const Index node : exit_nodes)
+    flow.profile.push_back({mesh.nodes(1, node), u[fem::dof_of<dim>(node, 0)]});
+  std::sort(flow.profile.begin(), flow.profile.end());
   return flow;
 }
 

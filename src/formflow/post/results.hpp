@@ -8,6 +8,7 @@
 #include "formflow/post/adaptivity.hpp"
 #include "formflow/solvers/stop_reason.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +63,9 @@ struct ExitFlow {
   /// the exit and entry fluxes they add up to ∫ div u dV, which the penalty makes
   /// d ∫ σ_H dV (the material's compressibility), so flux_balance is that and the leaks.
   Real free_surface_flux = 0.0, wall_flux = 0.0;
+  /// Plane and axisymmetric runs: (y, u_x) at the exit's nodes, y ascending, each node
+  /// once (the exit_velocity picture). Empty in 3D.
+  std::vector<std::array<Real, 2>> profile;
 };
 
 /// Stick and slip zones of one contact part, measured with the Γ3 quadrature weights

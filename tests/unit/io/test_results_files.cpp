@@ -362,8 +362,8 @@ TEST_F(ResultsFiles, WriteResultsWritesExactlyTheListedFiles) {
   io::write_results((scratch.path / "nested" / "out").string(), case_, mesh_, results_);
   std::set<std::string> expected = {"summary.json", "history.csv", "contact.csv", "fields.vtu",
                                     "report.html"};
-  for (const char* picture :
-       {"strain_rate", "velocity", "pressure", "contact", "convergence", "load_error"}) {
+  for (const char* picture : {"strain_rate", "velocity", "pressure", "contact", "convergence",
+                              "load_error", "exit_velocity"}) {
     expected.insert(std::string(picture) + ".png");
     expected.insert(std::string(picture) + ".svg");
   }

@@ -64,6 +64,12 @@ TEST(ExitFlow, ShearSpreadsTheExitVelocity) {
     EXPECT_NEAR(plane.nonuniformity, 0.5 / 1.75, 1e-13);
     const ExitFlow round = flow_of(mesh, physics::Symmetry::Axisymmetric, 0.1);
     EXPECT_NEAR(round.velocity_mean, 1.5 + 1.0 / 3.0, 1e-13);
+    // The profile: each exit node once (Q2/P2 on h = 1: 11 along y ∈ [0, 5]), ascending.
+    ASSERT_EQ(plane.profile.size(), 11u);
+    for (std::size_t k = 0; k < plane.profile.size(); ++k) {
+      EXPECT_NEAR(plane.profile[k][0], 0.5 * static_cast<Real>(k), 1e-14);
+      EXPECT_NEAR(plane.profile[k][1], 1.5 + 0.1 * plane.profile[k][0], 1e-14);
+    }
   }
 }
 

@@ -79,8 +79,9 @@ Rect graph_area() {
 }
 
 std::span<const std::string> picture_names() {
-  static const std::vector<std::string> names = {"strain_rate", "velocity",    "pressure",
-                                                 "contact",     "convergence", "load_error"};
+  static const std::vector<std::string> names = {"strain_rate",  "velocity",    "pressure",
+                                                 "contact",      "convergence", "load_error",
+                                                 "exit_velocity"};
   return names;
 }
 
@@ -98,8 +99,9 @@ std::vector<Picture> render_pictures(const Case& case_, const mesh::Mesh<2>& mes
                                      const post::Results& results) {
   const PictureData data{case_, mesh, results};
   using DrawPicture = void (*)(const Canvas&, const PictureData&);
-  const DrawPicture drawings[] = {draw_strain_rate, draw_velocity,    draw_pressure,
-                                  draw_contact,     draw_convergence, draw_load_error};
+  const DrawPicture drawings[] = {draw_strain_rate,  draw_velocity,    draw_pressure,
+                                  draw_contact,      draw_convergence, draw_load_error,
+                                  draw_exit_velocity};
   const std::span<const std::string> names = picture_names();
   FF_ASSERT(names.size() == std::size(drawings), "one name per picture");
   std::vector<PictureJob> jobs;

@@ -54,6 +54,8 @@ void draw_load_error(const Canvas& canvas, const PictureData& data);
 void draw_contact(const Canvas& canvas, const PictureData& data);
 /// Relative change per iteration (log) with the tolerance, and the pressure history.
 void draw_convergence(const Canvas& canvas, const PictureData& data);
+/// The axial velocity across the exit section against its mean (io/plot/exit_velocity_plot.cpp).
+void draw_exit_velocity(const Canvas& canvas, const PictureData& data);
 
 /// The stems of the pictures render_pictures draws, in its order:
 /// strain_rate, velocity, pressure, contact, convergence, load_error.

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// exit_velocity.png/.svg: the axial velocity across the exit section, against its mean.
+#include "formflow/io/plot/pictures.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace formflow::io::plot {
+
+namespace {
+
+const Rgb velocity_colour{0.12, 0.31, 0.61};
+const Rgb mean_colour{0.85, 0.37, 0.01};
+
+/// The velocity axis: the profile's range with a margin, never a zero span (a uniform
+/// exit is a flat line in the middle).
+Axis velocity_axis(const post::ExitFlow& exit) {
+  const double span = std::max(exit.velocity_max - exit.velocity_min,
+                               1e-3 * std::max(std::abs(exit.velocity_mean), 1e-12));
+  return Axis{exit.velocity_min - 0.5 * span,
+              exit.velocity_max + 0.5 * span,
+              false,
+              {},
+              "axial velocity u_{x} [length/time]"};
+}
+
+} // namespace
+
+void draw_exit_velocity(const Canvas& canvas, const PictureData& data) {
+  draw_title(canvas, "Axial velocity across the exit section",
+             run_description(data.case_, data.results));
+  const post::ExitFlow& exit = data.results.exit;
+  const bool axisymmetric = data.case_.symmetry == physics::Symmetry::Axisymmetric;
+  if (!exit.present || exit.profile.size() < 2) {
+    Axes(graph_area(), Axis{}, Axis{}).draw(canvas, false);
+    draw_no_data(canvas, graph_area(), "no exit section (no \"front\" facets)");
+    return;
+  }
+  const Axes axes(graph_area(),
+                  Axis{exit.profile.front()[0],
+                       exit.profile.back()[0],
+                       false,
+                       {},
+                       axisymmetric ? "radius r across the exit" : "y across the exit"},
+                  velocity_axis(exit));
+  axes.draw(canvas, true);
+  const Rect& area = axes.area();
+  canvas.clip(area);
+  const double y_mean = axes.py(exit.velocity_mean);
+  canvas.line({area.x, y_mean}, {area.right(), y_mean}, {1.6, mean_colour, 1.0, 9.0});
+  std::vector<Pixel> points;
+  for (const auto& [position, velocity] : exit.profile)
+    points.push_back(axes.at(position, velocity));
+  canvas.polyline(points, {2.0, velocity_colour});
+  canvas.unclip();
+  const std::vector<LegendEntry> legend = {
+      {"u_{x} at the exit's nodes", {2.0, velocity_colour}},
+      {fmt::format("{} {:.5g}", axisymmetric ? "flux-weighted mean" : "mean", exit.velocity_mean),
+       {1.6, mean_colour, 1.0, 9.0}}};
+  draw_legend(canvas, {area.right() - 10, area.y + 10}, legend);
+  canvas.text({area.x + 8, area.bottom() - 8},
+              fmt::format("nonuniformity (max − min)/mean = {:.3g}    flux balance = {:+.3g}",
+                          exit.nonuniformity, exit.flux_balance),
+              Font{12.0, false, {0.15, 0.15, 0.15}}, HAlign::Left, VAlign::Bottom);
+}
+
+} // namespace formflow::io::plot
