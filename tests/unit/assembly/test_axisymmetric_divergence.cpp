@@ -71,7 +71,8 @@ TEST(AxisymmetricDivergence, IncompressibleFlowHasNoDivergenceOnEveryPair) {
         interpolated(pair.mesh, [](Point<2> p) { return Point<2>(-2 * p.x(), p.y()); });
     Real scale = 0.0;
     for (const VectorX& b : cell_divergences(pair, u, scale))
-      // Round-off of sums of terms of size `scale`: a few ulps each, over ≤ 15 nodes.
+      // Round-off of sums of ≤ 30 terms (15 nodes × 2 components) of size ≤ `scale`, one
+      // rounding ε = 2.2e-16 each: 30 ε ≈ 6.7e-15 ≈ 64e-16 of `scale`.
       EXPECT_LT(b.cwiseAbs().maxCoeff(), 64 * 1e-16 * scale) << pair.name;
   }
 }
@@ -90,12 +91,16 @@ TEST(AxisymmetricDivergence, RadialExpansionIsTwiceTheRadiusWeightedBasisIntegra
       const VectorX& integral = multipliers.cell_basis_integral(cell);
       radial_moment += fem::is_discontinuous(pair.pressure) ? integral[0] : integral.sum();
     }
+    // 32–64 cells' exact integrals (r is linear) of size ≤ 1/16: the sum rounds by ≤ 64 ε.
     EXPECT_NEAR(radial_moment, 1.0, 1e-13) << pair.name;
     const VectorX u = interpolated(pair.mesh, [](Point<2> p) { return Point<2>(0.0, p.y()); });
     Real scale = 0.0;
     const std::vector<VectorX> divergences = cell_divergences(pair, u, scale);
     for (Index cell = 0; cell < pair.mesh.n_cells(); ++cell) {
       const VectorX expected = 2.0 * multipliers.cell_basis_integral(cell);
+      // The same sums on both sides, each ≤ 30 ε of `scale` in the worst case and about
+      // √30 ε typically: 64e-16 (29 ε) bounds their difference. Eigen's own loops, no
+      // BLAS: the bits do not depend on OPENBLAS_CORETYPE.
       EXPECT_LT((divergences[cell] - expected).cwiseAbs().maxCoeff(), 64 * 1e-16 * scale)
           << pair.name << " cell " << cell;
     }
