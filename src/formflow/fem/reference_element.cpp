@@ -46,10 +46,7 @@ template <int dim> QuadratureRule<dim - 1> face_rule(const mesh::CellType& type)
 
 template <int dim> QuadratureRule<dim - 1> face_nodal_rule(const mesh::CellType& type) {
   if constexpr (dim == 3)
-    if (type.is_simplex()) {
-      FF_ASSERT(type.order == 1, "nodal face rules on tetrahedra are the P1 vertex rule only");
-      return simplex_vertex_rule<2>();
-    }
+    if (type.is_simplex()) return triangle_nodal_rule(type.order, type.bubbles && type.order == 2);
   return nodal_rule<dim - 1>(type.order + 1);
 }
 

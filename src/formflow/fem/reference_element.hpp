@@ -38,8 +38,8 @@ template <int dim> QuadratureRule<dim> full_rule(const mesh::CellType& type);
 template <int dim> QuadratureRule<dim - 1> face_rule(const mesh::CellType& type);
 
 /// The face rule whose points are the face's nodes, in mesh::face_local_nodes order
-/// (Gauss–Lobatto: a face term integrated with it is lumped onto the nodes). Not for P2
-/// tetrahedra (whose P2 face's vertex weights vanish: assembly refuses nodal contact there).
+/// (Gauss–Lobatto: a face term integrated with it is lumped onto the nodes; a tetrahedron's
+/// triangle face: fem/simplex_quadrature.hpp triangle_nodal_rule, positive weights).
 template <int dim> QuadratureRule<dim - 1> face_nodal_rule(const mesh::CellType& type);
 
 /// A "rule" whose points are the cell's nodes in local order (weights: the cell measure

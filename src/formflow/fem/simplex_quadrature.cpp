@@ -178,6 +178,24 @@ template <int dim> QuadratureRule<dim> simplex_vertex_rule() {
   return rule;
 }
 
+QuadratureRule<2> triangle_nodal_rule(int order, bool centroid) {
+  FF_ASSERT(order == 1 || order == 2, "P1 or P2 triangles");
+  FF_ASSERT(!centroid || order == 2, "a centroid node belongs to the P2+ face");
+  if (order == 1) return simplex_vertex_rule<2>();
+  const Real area = simplex_measure<2>();
+  const Real vertex = centroid ? 1.0 / 20 : 1.0 / 19, midpoint = centroid ? 2.0 / 15 : 16.0 / 57;
+  QuadratureRule<2> rule;
+  rule.points = {Point<2>(0, 0),   Point<2>(1, 0),     Point<2>(0, 1),
+                 Point<2>(0.5, 0), Point<2>(0.5, 0.5), Point<2>(0, 0.5)};
+  rule.weights = {vertex * area,   vertex * area,   vertex * area,
+                  midpoint * area, midpoint * area, midpoint * area};
+  if (centroid) {
+    rule.points.push_back(Point<2>(1.0 / 3, 1.0 / 3));
+    rule.weights.push_back(9.0 / 20 * area);
+  }
+  return rule;
+}
+
 template QuadratureRule<1> simplex_rule<1>(int);
 template QuadratureRule<2> simplex_rule<2>(int);
 template QuadratureRule<3> simplex_rule<3>(int);

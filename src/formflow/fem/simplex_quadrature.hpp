@@ -23,4 +23,15 @@ template <int dim> QuadratureRule<dim> simplex_rule(int degree);
 /// a P1 face term with it lumps the term onto the face's vertices (contact at the nodes).
 template <int dim> QuadratureRule<dim> simplex_vertex_rule();
 
+/// A rule on the unit triangle with one point on each node of a P1, P2 or P2+ triangle, in
+/// its node order (vertices, the midpoints of edges (0,1), (1,2), (2,0), then the centroid
+/// with `centroid`), all weights positive, so that a face term integrated with it puts one
+/// point on every face node of a tetrahedron (contact at the nodes). P1: the vertex rule
+/// (degree 1). P2: the vertices 1/19 and midpoints 16/57 of the area, the diagonal of the P2
+/// mass matrix scaled to sum to the area (the Hinton–Rock–Zienkiewicz lumping; degree 1 —
+/// the degree-2 rule on these points has zero vertex weights and would leave the vertices
+/// unconstrained). P2+: the 7-point rule of degree 3 (vertices 1/20, midpoints 2/15,
+/// centroid 9/20).
+QuadratureRule<2> triangle_nodal_rule(int order, bool centroid);
+
 } // namespace formflow::fem

@@ -74,16 +74,6 @@ std::optional<KeyRefusal> simplex_pair_problem(const Case& case_) {
 
 /// What the simplex path does not run yet, refused by the key that asks for it.
 std::optional<KeyRefusal> simplex_scope_problem(const Case& case_) {
-  if (case_.mesh.cell == mesh::CellKind::Tetrahedron)
-    return KeyRefusal{{"mesh.cell"},
-                      "tetrahedral meshes are not built yet (the elements are; the meshes and "
-                      "the solid-channel generators come next)",
-                      "use mesh.cell = \"hexahedron\" with geometry.dimension = 3, or triangles "
-                      "in 2D"};
-  if (case_.manufactured != physics::ManufacturedSolution::None && case_.mesh.dimension == 3)
-    return KeyRefusal{{"verification.solution", "mesh.cell"},
-                      "the manufactured solutions' unit cube is of hexahedra only so far",
-                      "set verification.solution = \"none\", or mesh.cell = \"hexahedron\""};
   if (case_.adapt.enabled())
     return KeyRefusal{{"adapt.target_error", "mesh.cell"},
                       "adaptive refinement remeshes with quadrilaterals only",

@@ -10,6 +10,7 @@
 #include "formflow/mesh/die_channel_mesh.hpp"
 #include "formflow/mesh/simplex_split.hpp"
 #include "formflow/mesh/solid_channel_mesh.hpp"
+#include "formflow/mesh/tetrahedral_split.hpp"
 #if FORMFLOW_WITH_GMSH
 #include "formflow/mesh/die_face.hpp"
 #include "formflow/mesh/facet_axis.hpp"
@@ -104,7 +105,8 @@ template <int dim> mesh::Mesh<dim> read_mesh_file(const Case& case_, const mesh:
                                             mesh::shape_of(spec.cell));
     else
       return mesh::gmsh_meshers().read_solid_mesh(
-          resolved_mesh_path(case_, spec), boundary_map(spec), fem::element_order(case_.element));
+          resolved_mesh_path(case_, spec), boundary_map(spec), fem::element_order(case_.element),
+          mesh::shape_of(spec.cell));
   } catch (const mesh::MeshFileError& error) {
     std::string key = "mesh.file";
     if (error.subject == Subject::Element) key = "mesh.element";
@@ -170,28 +172,33 @@ void check_driven_part(const Case& case_, const mesh::MeshSpec& spec, const mesh
 mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
   const int order = fem::element_order(case_.element);
   const bool drawing = case_.process.type == physics::ProcessType::Drawing;
+  const mesh::CellType cells = case_cell_type(case_);
   if (spec.source == mesh::MeshSource::Structured) {
-    if (spec.dimension == 3) // every section: io/case_validation_3d.cpp checked what it needs
-      return mesh::make_solid_channel_mesh(spec.geometry, spec.solid, spec.size, order, drawing);
+    // Simplices: each square cut along a diagonal, each hexahedron into tetrahedra.
+    if (spec.dimension == 3) { // every section: io/case_validation_3d.cpp checked what it needs
+      mesh::Mesh<3> mesh =
+          mesh::make_solid_channel_mesh(spec.geometry, spec.solid, spec.size, order, drawing);
+      if (cells.is_simplex()) return mesh::split_into_tetrahedra(mesh, cells.bubbles);
+      return mesh;
+    }
     mesh::Mesh<2> mesh = mesh::make_die_channel_mesh(spec.geometry, spec.size, order);
     if (drawing) mesh::free_container_wall(mesh);
-    // Triangles: each square cut along a diagonal (io/case_validation_simplex.cpp refuses
-    // the sources that cannot give them yet).
-    const mesh::CellType cells = case_cell_type(case_);
     if (cells.is_simplex()) return mesh::split_into_triangles(mesh, cells.bubbles);
     return mesh;
   }
 #if FORMFLOW_WITH_GMSH
   if (spec.source == mesh::MeshSource::Gmsh) {
-    if (spec.dimension == 3) // slab or square-die rectangle: io/case_validation_3d.cpp
-      return mesh::gmsh_meshers().solid_channel_mesh(spec.geometry, spec.solid, spec.size, order,
-                                                     drawing);
+    if (spec.dimension == 3) { // slab or square-die rectangle: io/case_validation_3d.cpp
+      mesh::Mesh<3> mesh = mesh::gmsh_meshers().solid_channel_mesh(
+          spec.geometry, spec.solid, spec.size, order, drawing, mesh::shape_of(spec.cell));
+      if (cells.bubbles) return mesh::with_bubble_nodes(mesh);
+      return mesh;
+    }
     mesh::Mesh<2> mesh = mesh::gmsh_meshers().channel_mesh(
         spec.geometry, mesh::die_face_polyline(spec.geometry, spec.size), spec.size, order,
         mesh::shape_of(spec.cell));
     if (drawing) mesh::free_container_wall(mesh);
-    if (const mesh::CellType cells = case_cell_type(case_); cells.bubbles)
-      return mesh::with_bubble_nodes(mesh);
+    if (cells.bubbles) return mesh::with_bubble_nodes(mesh);
     return mesh;
   }
   // A file's parts are the user's map: drawing maps the wall before the die to free_entry.
@@ -201,10 +208,11 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
     check_driven_part(case_, spec, mesh);
     return mesh;
   };
-  if (spec.dimension == 3) return checked(read_mesh_file<3>(case_, spec));
-  mesh::Mesh<2> read = read_mesh_file<2>(case_, spec);
-  if (case_cell_type(case_).bubbles) read = mesh::with_bubble_nodes(read);
-  return checked(std::move(read));
+  const auto enriched = [&](auto read) {
+    return cells.bubbles ? mesh::with_bubble_nodes(read) : read;
+  };
+  if (spec.dimension == 3) return checked(enriched(read_mesh_file<3>(case_, spec)));
+  return checked(enriched(read_mesh_file<2>(case_, spec)));
 #else
   const auto found = case_.key_locations.find("mesh.source");
   const Case::KeyLocation where =

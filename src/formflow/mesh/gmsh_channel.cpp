@@ -59,7 +59,6 @@ ChannelModel add_channel_geometry(const ChannelGeometry& geometry,
   return model;
 }
 
-/// Gmsh's Frontal-Delaunay triangles of target size `size`, complete second order.
 void set_triangle_options(Real size) {
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   gmsh::option::setNumber("Mesh.Algorithm", 6);

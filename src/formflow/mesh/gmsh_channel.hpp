@@ -29,6 +29,10 @@ ChannelModel add_channel_geometry(const ChannelGeometry& geometry,
 /// setOrder(2), complete quad-9/hexa-27 elements).
 void set_recombined_quadrilateral_options(Real size);
 
+/// Gmsh's options for Frontal-Delaunay triangles (and, extruded, tetrahedra) of target size
+/// `size`, complete second order with setOrder(2).
+void set_triangle_options(Real size);
+
 /// Adds the half channel to the current model of `session` and meshes it with
 /// recombined quadrilaterals (Gmsh's Frontal-Delaunay, then blossom full-quad
 /// recombination) of target size `size`, of `order` 1 (quad-4) or 2 (quad-9).

@@ -27,11 +27,12 @@ struct GmshMeshers {
                                 const std::vector<Point<2>>& die_face, const Mesh<2>& background,
                                 const VectorX& node_sizes, int order) = nullptr;
   Mesh<3> (*solid_channel_mesh)(const ChannelGeometry& geometry, const SolidChannel& solid,
-                                Real size, int order, bool drawing) = nullptr;
+                                Real size, int order, bool drawing, CellShape shape) = nullptr;
   Mesh<2> (*read_mesh)(const std::string& path, const std::vector<PhysicalBoundary>& boundaries,
                        int order, CellShape shape) = nullptr;
   Mesh<3> (*read_solid_mesh)(const std::string& path,
-                             const std::vector<PhysicalBoundary>& boundaries, int order) = nullptr;
+                             const std::vector<PhysicalBoundary>& boundaries, int order,
+                             CellShape shape) = nullptr;
 };
 
 /// The module's entry points, loaded on the first call (thread-safe) from the path

@@ -56,14 +56,17 @@ template <int dim> FacetKey<dim> cell_facet_key(const Mesh<dim>& mesh, Index cel
                         node(static_cast<std::size_t>(n * n - 1))});
 }
 
-/// The facet as the messages name it: a plane side by its ends, a solid face by its centre.
+/// The facet as the messages name it: a plane side by its ends, a solid face by its centre
+/// (the mean of its distinct corners: a triangle's key repeats one).
 template <int dim> std::string facet_text(const Mesh<dim>& mesh, const FacetKey<dim>& key) {
   if constexpr (dim == 2) {
     const Point<2> a = mesh.nodes.col(key[0]), b = mesh.nodes.col(key[1]);
     return fmt::format("the segment ({:.6g}, {:.6g})–({:.6g}, {:.6g})", a.x(), a.y(), b.x(), b.y());
   } else {
     Point<3> centre = Point<3>::Zero();
-    for (const Index node : key) centre += mesh.nodes.col(node) / 4.0;
+    std::vector<Index> corners(key.begin(), key.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    for (const Index node : corners) centre += mesh.nodes.col(node) / Real(corners.size());
     return fmt::format("the face with centre ({:.6g}, {:.6g}, {:.6g})", centre.x(), centre.y(),
                        centre.z());
   }
@@ -101,14 +104,17 @@ std::vector<BoundaryFacet> boundary_facets(const Mesh<dim>& mesh,
 }
 
 /// The corner nodes (as mesh indices) of every element of the physical group `tag`
-/// of dimension dim − 1 (lines in the plane, quadrilaterals in a solid).
+/// of dimension dim − 1 (lines in the plane; quadrilaterals, or triangles for a mesh of
+/// tetrahedra, in a solid).
 template <int dim>
 std::vector<FacetKey<dim>> group_facets(int tag,
                                         const std::unordered_map<std::size_t, Index>& index_of,
-                                        const std::string& name) {
+                                        const std::string& name, bool simplex) {
   using W = Words<dim>;
-  constexpr int first_order = dim == 2 ? line2 : quad4;
-  constexpr int second_order = dim == 2 ? line3 : quad9;
+  const bool triangles = dim == 3 && simplex;
+  const int first_order = dim == 2 ? line2 : triangles ? triangle3 : quad4;
+  const int second_order = dim == 2 ? line3 : triangles ? triangle6 : quad9;
+  const char* sides = dim == 2 ? "lines" : triangles ? "triangles" : "quadrilaterals";
   std::vector<int> entities;
   gmsh::model::getEntitiesForPhysicalGroup(dim - 1, tag, entities);
   std::vector<FacetKey<dim>> facets;
@@ -123,9 +129,9 @@ std::vector<FacetKey<dim>> group_facets(int tag,
             fmt::format("physical {} \"{}\" has {} elements of type \"{}\": the sides of a {} "
                         "are {}",
                         W::group, name, element_tags[k].size(), element_type_name(types[k]),
-                        W::cell, dim == 2 ? "lines" : "quadrilaterals"),
+                        W::cell, sides),
             fmt::format("mesh the boundary {}s with {}", W::group,
-                        dim == 2 ? "lines" : "(recombined) quadrilaterals"));
+                        dim == 2 || triangles ? sides : "(recombined) quadrilaterals"));
       std::size_t per_element = 0;
       {
         std::string type_name;
@@ -138,7 +144,8 @@ std::vector<FacetKey<dim>> group_facets(int tag,
       // Gmsh lists an element's corners first, then its inner nodes.
       for (std::size_t first = 0; first < node_tags[k].size(); first += per_element) {
         FacetKey<dim> corners{};
-        for (std::size_t c = 0; c < corners.size(); ++c) {
+        const std::size_t n_corners = triangles ? 3 : corners.size();
+        for (std::size_t c = 0; c < n_corners; ++c) {
           const auto found = index_of.find(node_tags[k][first + c]);
           if (found == index_of.end())
             throw MeshFileError(
@@ -149,6 +156,7 @@ std::vector<FacetKey<dim>> group_facets(int tag,
                 fmt::format("map only {}s on the boundary of the meshed {}", W::group, W::domain));
           corners[c] = found->second;
         }
+        if (triangles) corners[3] = corners[0]; // as cell_facet_key keys a triangle face
         facets.push_back(sorted<dim>(corners));
       }
     }
@@ -264,7 +272,8 @@ void label_facets(const std::vector<PhysicalBoundary>& boundaries, Mesh<dim>& me
   std::vector<std::string> label_source(mesh.facets.size());
   std::vector<bool> labelled(mesh.facets.size(), false);
   for (const auto& [name, tag] : groups) {
-    const std::vector<FacetKey<dim>> keys = group_facets<dim>(tag, index_of, name);
+    const std::vector<FacetKey<dim>> keys =
+        group_facets<dim>(tag, index_of, name, mesh.is_simplex());
     const auto entry = mapped.find(name);
     if (entry == mapped.end()) {
       const auto on_boundary = std::find_if(keys.begin(), keys.end(),

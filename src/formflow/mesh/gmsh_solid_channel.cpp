@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Solid die channels from Gmsh: the plane channel or a rectangle cross-section
-// extruded into hexahedra (recombined extrusion), parts as physical surfaces.
+// extruded into hexahedra (recombined extrusion) or tetrahedra, parts as physical surfaces.
 #include "formflow/mesh/gmsh_solid_channel.hpp"
 
 #include "formflow/core/error.hpp"
@@ -32,12 +32,13 @@ int layers_over(Real length, Real size) {
 /// The plane channel extruded over the thickness: the lateral surfaces follow
 /// the base surface's curve loop (Gmsh's extrude returns top, volume, then one
 /// lateral surface per boundary curve, in order), so each keeps its curve's part.
-int add_slab(const ChannelGeometry& geometry, const SolidChannel& solid, Real size, Parts& parts) {
+int add_slab(const ChannelGeometry& geometry, const SolidChannel& solid, Real size, bool recombine,
+             Parts& parts) {
   const ChannelModel plane =
       add_channel_geometry(geometry, die_face_polyline(geometry, size), size);
   gmsh::vectorpair out;
   geo::extrude({{2, plane.surface}}, 0.0, 0.0, solid.thickness, out,
-               {extrusion_layers(solid.thickness, size)}, {}, true);
+               {extrusion_layers(solid.thickness, size)}, {}, recombine);
   std::size_t lateral = 2;
   for (const auto& [label, curves] : plane.parts)
     for (std::size_t k = 0; k < curves.size(); ++k)
@@ -62,8 +63,8 @@ int add_rectangle(int a, int b, int c, int d, std::map<std::pair<int, int>, int>
 /// The rectangle through the square die: the cross-section's four rectangles
 /// extruded together over the container, the exit's one then over the land and
 /// the exit. The parts are classified after synchronisation (classify_boundary).
-void add_rectangle_square_die(const ChannelGeometry& geometry, const SolidChannel& solid,
-                              Real size) {
+void add_rectangle_square_die(const ChannelGeometry& geometry, const SolidChannel& solid, Real size,
+                              bool recombine) {
   const Real h_in = geometry.entry_half_height, h_out = geometry.exit_half_height;
   const Real w_in = solid.entry_half_width, w_out = solid.exit_half_width;
   // (y, z) lattice of the cross-section at x = 0: y ∈ {0, H_out, H_in}, z ∈ {0, W_out, W_in}.
@@ -86,7 +87,7 @@ void add_rectangle_square_die(const ChannelGeometry& geometry, const SolidChanne
   for (const int surface : section) dim_tags.emplace_back(2, surface);
   gmsh::vectorpair container;
   geo::extrude(dim_tags, geometry.container_length, 0.0, 0.0, container,
-               {layers_over(geometry.container_length, size)}, {}, true);
+               {layers_over(geometry.container_length, size)}, {}, recombine);
   // Gmsh's extrude lists, per input surface, its top then its volume then the laterals:
   // the exit's rectangle is the first input, so its top is container[0].
   int face = container.at(0).second;
@@ -94,7 +95,7 @@ void add_rectangle_square_die(const ChannelGeometry& geometry, const SolidChanne
   for (const Real length : {geometry.land_length, geometry.exit_length}) {
     if (length <= 0) continue;
     gmsh::vectorpair out;
-    geo::extrude({{2, face}}, length, 0.0, 0.0, out, {layers_over(length, size)}, {}, true);
+    geo::extrude({{2, face}}, length, 0.0, 0.0, out, {layers_over(length, size)}, {}, recombine);
     face = out.at(0).second;
   }
 }
@@ -142,18 +143,21 @@ Parts classify_boundary(const ChannelGeometry& geometry, const SolidChannel& sol
 } // namespace
 
 Mesh<3> make_gmsh_solid_channel_mesh(const ChannelGeometry& geometry, const SolidChannel& solid,
-                                     Real size, int order, bool drawing) {
+                                     Real size, int order, bool drawing, CellShape shape) {
   FF_ASSERT(gmsh_builds_solid_channel(solid, geometry.die), "validated: a section Gmsh builds");
   FF_ASSERT(order == 1 || order == 2, "order must be 1 or 2");
+  // Extruded without recombination, Gmsh cuts each prism of a triangle layer into three
+  // tetrahedra, conforming from layer to layer.
+  const bool recombine = shape == CellShape::Cube;
   GmshSession session;
   session.call([&] {
     gmsh::model::add("solid channel");
     Parts parts;
     if (solid.section == ChannelSection::Slab) {
-      add_slab(geometry, solid, size, parts);
+      add_slab(geometry, solid, size, recombine, parts);
       geo::synchronize();
     } else {
-      add_rectangle_square_die(geometry, solid, size);
+      add_rectangle_square_die(geometry, solid, size, recombine);
       geo::synchronize();
       parts = classify_boundary(geometry, solid);
     }
@@ -165,13 +169,16 @@ Mesh<3> make_gmsh_solid_channel_mesh(const ChannelGeometry& geometry, const Soli
     std::vector<int> volume_tags;
     for (const auto& [dim, tag] : volumes) volume_tags.push_back(tag);
     gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, volume_tags), "domain");
-    set_recombined_quadrilateral_options(size);
+    if (recombine)
+      set_recombined_quadrilateral_options(size);
+    else
+      set_triangle_options(size);
     gmsh::model::mesh::generate(3);
     if (order == 2) gmsh::model::mesh::setOrder(2);
   });
   Mesh<3> mesh;
   try {
-    mesh = solid_mesh_from_gmsh_model(session, {}, order); // the groups carry the part names
+    mesh = solid_mesh_from_gmsh_model(session, {}, order, shape); // the groups name the parts
   } catch (const MeshFileError& error) {
     throw InternalError("Gmsh solid channel mesh: " + error.message); // our geometry: a bug
   }

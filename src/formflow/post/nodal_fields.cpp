@@ -3,6 +3,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/fem/lagrange.hpp"
 #include "formflow/fem/reference_element.hpp"
+#include "formflow/fem/simplex_lagrange.hpp"
 #include "formflow/physics/kinematics.hpp"
 #include "formflow/post/post_process.hpp"
 
@@ -71,12 +72,16 @@ Fields nodal_fields(const assembly::FormingProblem<dim>& problem, const VectorX&
   const int n_q = problem.discretisation().facet_rule().size();
   // Nodal contact normals put the points on the face nodes already. A triangle's edge is
   // a 1D Lagrange element with its nodes along it (mesh/cell_type.hpp), as a cube's face
-  // is a (dim − 1)-cube: the tensor Gauss extrapolation serves both.
-  FF_ASSERT(!mesh.is_simplex() || dim == 2 || problem.discretisation().contact_points_at_nodes(),
-            "Gauss-point contact fields of tetrahedra have no nodal extrapolation yet");
-  const MatrixX facet_to_nodes = problem.discretisation().contact_points_at_nodes()
-                                     ? MatrixX(MatrixX::Identity(n_q, n_q))
-                                     : fem::gauss_to_nodes<dim - 1>(mesh.order, mesh.order + 1);
+  // is a (dim − 1)-cube: the tensor Gauss extrapolation serves both. A tetrahedron's face is
+  // a triangle of the cell's order (and face bubble with P2+): the simplex fit.
+  const MatrixX facet_to_nodes = [&]() -> MatrixX {
+    if (problem.discretisation().contact_points_at_nodes()) return MatrixX::Identity(n_q, n_q);
+    if constexpr (dim == 3)
+      if (mesh.is_simplex())
+        return fem::simplex_points_to_nodes<2>(mesh.order, mesh.bubbles && mesh.order == 2,
+                                               problem.discretisation().facet_rule());
+    return fem::gauss_to_nodes<dim - 1>(mesh.order, mesh.order + 1);
+  }();
   VectorX pressure_at(n_q), friction_at(n_q);
   for (std::size_t first = 0; first < contact.size(); first += n_q) {
     const mesh::BoundaryFacet& facet = mesh.facets[contact[first].facet];

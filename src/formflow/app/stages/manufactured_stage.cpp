@@ -10,6 +10,7 @@
 #include "formflow/mesh/box_mesh.hpp"
 #include "formflow/mesh/cube_mesh.hpp"
 #include "formflow/mesh/simplex_split.hpp"
+#include "formflow/mesh/tetrahedral_split.hpp"
 #include "formflow/physics/manufactured_3d.hpp"
 #include "formflow/physics/manufactured_thermal.hpp"
 #include "formflow/post/post_process.hpp"
@@ -154,15 +155,18 @@ mesh::AnyMesh manufactured_mesh(const RunPlan& plan) {
   const int cells = mesh::cells_along(1.0, plan.mesh.size);
   FF_ASSERT(cells > 0, "the case validation guarantees that mesh.size divides 1");
   const int order = fem::element_order(plan.element);
-  if (plan.mesh.dimension == 3)
-    return mesh::make_unit_cube_mesh(cells, order, plan.mesh.distortion);
-  const mesh::Mesh<2> box = mesh::make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), cells,
-                                                cells, order, plan.mesh.distortion);
-  // Triangles: each (distorted) square cut along its diagonal (io/case_validation_simplex.cpp
-  // refuses tetrahedra).
+  // Simplices: each (distorted) square cut along its diagonal, each cube into six
+  // tetrahedra around its main diagonal.
   const mesh::CellType type =
       fem::velocity_cell_type(plan.element, plan.formulation.pressure,
                               plan.formulation.type == assembly::FormulationType::Mixed);
+  if (plan.mesh.dimension == 3) {
+    mesh::Mesh<3> cube = mesh::make_unit_cube_mesh(cells, order, plan.mesh.distortion);
+    if (type.is_simplex()) return mesh::split_into_tetrahedra(cube, type.bubbles);
+    return cube;
+  }
+  const mesh::Mesh<2> box = mesh::make_box_mesh(Point<2>(0.0, 0.0), Point<2>(1.0, 1.0), cells,
+                                                cells, order, plan.mesh.distortion);
   if (type.is_simplex()) return mesh::split_into_triangles(box, type.bubbles);
   return box;
 }

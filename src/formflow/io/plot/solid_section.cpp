@@ -14,15 +14,36 @@ namespace formflow::io::plot {
 
 namespace {
 
-/// Signed area of a plane cell's corner polygon (lexicographic lattice order).
+/// Signed area of a plane cell's corner polygon (lexicographic lattice order; a triangle's
+/// vertices are its first three nodes).
 Real corner_area(const mesh::Mesh<2>& mesh, const std::vector<Index>& cell, int n_side) {
-  const auto at = [&](int a, int b) { return Point<2>(mesh.nodes.col(cell[b * n_side + a])); };
-  const Point<2> p0 = at(0, 0), p1 = at(n_side - 1, 0), p2 = at(n_side - 1, n_side - 1),
-                 p3 = at(0, n_side - 1);
-  const auto cross = [](const Point<2>& a, const Point<2>& b) {
-    return a.x() * b.y() - a.y() * b.x();
-  };
-  return 0.5 * (cross(p0, p1) + cross(p1, p2) + cross(p2, p3) + cross(p3, p0));
+  const auto node = [&](std::size_t k) { return Point<2>(mesh.nodes.col(cell[k])); };
+  const auto at = [&](int a, int b) { return node(static_cast<std::size_t>(b * n_side + a)); };
+  const std::vector<Point<2>> ring =
+      mesh.is_simplex() ? std::vector<Point<2>>{node(0), node(1), node(2)}
+                        : std::vector<Point<2>>{at(0, 0), at(n_side - 1, 0),
+                                                at(n_side - 1, n_side - 1), at(0, n_side - 1)};
+  Real twice = 0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Point<2>& a = ring[k];
+    const Point<2>& b = ring[(k + 1) % ring.size()];
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  return 0.5 * twice;
+}
+
+/// Turns a clockwise section cell: a lattice transposed, a triangle's vertices 1 and 2 swapped
+/// (with the midpoints of edges (0,1) and (2,0)).
+void turn_counter_clockwise(const mesh::Mesh<2>& plane, std::vector<Index>& cell, int n_side) {
+  if (plane.is_simplex()) {
+    std::swap(cell[1], cell[2]);
+    if (plane.order == 2) std::swap(cell[3], cell[5]);
+    return;
+  }
+  std::vector<Index> transposed(cell.size());
+  for (int b = 0; b < n_side; ++b)
+    for (int a = 0; a < n_side; ++a) transposed[a * n_side + b] = cell[b * n_side + a];
+  cell = std::move(transposed);
 }
 
 std::vector<Index> sorted(std::vector<Index> nodes) {
@@ -38,7 +59,11 @@ PlaneSection symmetry_section(const mesh::Mesh<3>& solid, int normal_axis) {
   section.in_plane = {0, normal_axis == 2 ? 1 : 2};
   mesh::Mesh<2>& plane = section.mesh;
   plane.order = solid.order;
+  // A tetrahedron's face is a triangle of its order; a P2+ face also has its centroid node.
+  plane.shape = solid.shape;
+  plane.bubbles = solid.is_simplex() && solid.bubbles && solid.order == 2;
   const int n_side = solid.nodes_per_side();
+  const int plane_edges = mesh::faces_per_cell<2>(plane.cell_type());
   const Real extent = (solid.nodes.rowwise().maxCoeff() - solid.nodes.rowwise().minCoeff()).norm();
 
   std::unordered_map<Index, Index> plane_node;
@@ -48,7 +73,7 @@ PlaneSection symmetry_section(const mesh::Mesh<3>& solid, int normal_axis) {
     if (facet.label != mesh::BoundaryLabel::Symmetry ||
         mesh::facet_normal_axis(solid, facet) != normal_axis)
       continue;
-    const std::vector<int> locals = mesh::face_local_nodes<3>(n_side, facet.local_face);
+    const std::vector<int> locals = solid.face_nodes(facet.local_face);
     if (std::abs(solid.nodes(normal_axis, solid.cells(locals.front(), facet.cell))) >
         1e-12 * extent)
       continue; // the slab's far z face: a symmetry plane, but not the one through 0
@@ -67,34 +92,29 @@ PlaneSection symmetry_section(const mesh::Mesh<3>& solid, int normal_axis) {
   for (std::size_t n = 0; n < section.solid_node.size(); ++n)
     plane.nodes.col(n) << solid.nodes(section.in_plane[0], section.solid_node[n]),
         solid.nodes(section.in_plane[1], section.solid_node[n]);
-  // Face nodes come in the solid cell's lattice order, which may run clockwise in
-  // (u, v): transpose those cells' lattices.
+  // Face nodes come in the solid cell's order, which may run clockwise in (u, v).
   for (std::vector<Index>& cell : cells)
-    if (corner_area(plane, cell, n_side) < 0) {
-      std::vector<Index> transposed(cell.size());
-      for (int b = 0; b < n_side; ++b)
-        for (int a = 0; a < n_side; ++a) transposed[a * n_side + b] = cell[b * n_side + a];
-      cell = std::move(transposed);
-    }
-  plane.cells.resize(n_side * n_side, static_cast<Index>(cells.size()));
+    if (corner_area(plane, cell, n_side) < 0) turn_counter_clockwise(plane, cell, n_side);
+  const int per_cell = mesh::nodes_per_cell<2>(plane.cell_type());
+  plane.cells.resize(per_cell, static_cast<Index>(cells.size()));
   for (std::size_t c = 0; c < cells.size(); ++c)
-    for (int a = 0; a < n_side * n_side; ++a) plane.cells(a, c) = cells[c][a];
+    for (int a = 0; a < per_cell; ++a) plane.cells(a, c) = cells[c][a];
 
   // Boundary edges (on one section cell only), labelled by the solid facet of the
   // same solid cell that holds the whole edge (other than the section's own face).
   std::map<std::vector<Index>, int> edge_count;
   for (std::size_t c = 0; c < cells.size(); ++c)
-    for (int edge = 0; edge < 4; ++edge) {
+    for (int edge = 0; edge < plane_edges; ++edge) {
       std::vector<Index> nodes;
-      for (int local : mesh::face_local_nodes<2>(n_side, edge)) nodes.push_back(cells[c][local]);
+      for (int local : plane.face_nodes(edge)) nodes.push_back(cells[c][local]);
       ++edge_count[sorted(nodes)];
     }
   std::unordered_multimap<Index, const mesh::BoundaryFacet*> facets_of;
   for (const mesh::BoundaryFacet& facet : solid.facets) facets_of.emplace(facet.cell, &facet);
   for (std::size_t c = 0; c < cells.size(); ++c)
-    for (int edge = 0; edge < 4; ++edge) {
+    for (int edge = 0; edge < plane_edges; ++edge) {
       std::vector<Index> solid_nodes, nodes;
-      for (int local : mesh::face_local_nodes<2>(n_side, edge)) {
+      for (int local : plane.face_nodes(edge)) {
         nodes.push_back(cells[c][local]);
         solid_nodes.push_back(section.solid_node[cells[c][local]]);
       }
@@ -104,7 +124,7 @@ PlaneSection symmetry_section(const mesh::Mesh<3>& solid, int normal_axis) {
       for (auto it = first; it != last && !label; ++it) {
         const mesh::BoundaryFacet& facet = *it->second;
         std::vector<Index> face;
-        for (int local : mesh::face_local_nodes<3>(n_side, facet.local_face))
+        for (int local : solid.face_nodes(facet.local_face))
           face.push_back(solid.cells(local, facet.cell));
         std::sort(face.begin(), face.end());
         const bool holds = std::all_of(solid_nodes.begin(), solid_nodes.end(), [&](Index node) {

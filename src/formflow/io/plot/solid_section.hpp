@@ -10,7 +10,8 @@
 namespace formflow::io::plot {
 
 /// The faces of a solid mesh on one coordinate plane through the origin (a quarter
-/// model's y = 0 or z = 0 symmetry plane), as quadrilaterals of the same order.
+/// model's y = 0 or z = 0 symmetry plane), as quadrilaterals (triangles, for tetrahedra)
+/// of the same order.
 struct PlaneSection {
   mesh::Mesh<2> mesh;                ///< coordinates (u, v) = the solid's in_plane axes
   std::vector<Index> solid_node;     ///< solid node of each section node
