@@ -10,6 +10,7 @@
 #include "formflow/mesh/gmsh_mesh.hpp"
 #include "formflow/mesh/gmsh_solid_mesh.hpp"
 #include "formflow/mesh/solid_channel_mesh.hpp"
+#include "formflow/mesh/tetrahedral_split.hpp"
 #include "support/run_cli.hpp"
 
 #include <gmsh.h>
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -158,6 +160,101 @@ TEST(SolidMeshFile, AWrittenChannelGivesTheStructuredRamReaction) {
   }
 }
 
+TEST(SolidMeshFile, TetrahedraReadBackAsTheSameMesh) {
+  // The split bar written with tetra-4/tetra-10 cells and triangle boundary groups.
+  testing::ScratchDirectory scratch("formflow-tet-msh");
+  for (const int order : {1, 2})
+    for (const bool binary : {false, true}) {
+      SCOPED_TRACE(testing::quoted(std::to_string(order) + (binary ? " binary" : " ascii")));
+      const mesh::Mesh<3> written = mesh::split_into_tetrahedra(
+          mesh::make_solid_channel_mesh(bar_geometry(), bar_section(), 0.5, order, false), false);
+      const fs::path path = scratch / "t.msh";
+      {
+        mesh::GmshSession session;
+        session.call([] { gmsh::model::add("tetrahedra"); });
+        mesh::add_solid_mesh_to_gmsh_model(session, written);
+        mesh::write_gmsh_mesh(session, path.string(), binary);
+      }
+      const mesh::Mesh<3> read =
+          mesh::read_gmsh_solid_mesh(path.string(), {}, order, mesh::CellShape::Simplex);
+      EXPECT_TRUE(read.is_simplex());
+      EXPECT_EQ(read.cells, written.cells);
+      EXPECT_EQ(read.nodes, written.nodes);
+      std::map<std::pair<Index, int>, mesh::BoundaryLabel> expected, found;
+      for (const auto& f : written.facets) expected[{f.cell, f.local_face}] = f.label;
+      for (const auto& f : read.facets) found[{f.cell, f.local_face}] = f.label;
+      EXPECT_EQ(found, expected);
+    }
+}
+
+TEST(SolidMeshFile, GmshsOwnTetra10NodesAreEdgeMidpoints) {
+  // A box meshed by Gmsh itself (its own tetra-10 node order, not our writer's): read back,
+  // every P2 node is halfway along the straight edge of the two vertices ours says it is
+  // between, to round-off: Gmsh's midpoint (½ ulp), its 17 printed digits (½ ulp) and our
+  // mean (1 ulp) in each of three coordinates up to 2, well below 8 ε · 2; a node of the
+  // wrong edge is ≥ 0.1 away.
+  testing::ScratchDirectory scratch("formflow-tet-msh");
+  const fs::path path = scratch / "box.msh";
+  {
+    mesh::GmshSession session;
+    session.call([&] {
+      gmsh::model::add("box");
+      const int box = gmsh::model::occ::addBox(0, 0, 0, 1, 1, 2);
+      gmsh::model::occ::synchronize();
+      gmsh::vectorpair faces;
+      gmsh::model::getBoundary({{3, box}}, faces, false, false, false);
+      std::vector<int> tags;
+      for (const auto& [dim, tag] : faces) tags.push_back(tag);
+      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, tags), "container");
+      gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {box}), "domain");
+      gmsh::option::setNumber("Mesh.MeshSizeMax", 0.5);
+      gmsh::model::mesh::generate(3);
+      gmsh::model::mesh::setOrder(2);
+    });
+    mesh::write_gmsh_mesh(session, path.string(), false);
+  }
+  const mesh::Mesh<3> read =
+      mesh::read_gmsh_solid_mesh(path.string(), {}, 2, mesh::CellShape::Simplex);
+  ASSERT_GT(read.n_cells(), 0);
+  const Real tolerance = 8 * std::numeric_limits<Real>::epsilon() * 2.0;
+  for (Index cell = 0; cell < read.n_cells(); ++cell)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        const Point<3> mid =
+            0.5 * (read.nodes.col(read.cells(a, cell)) + read.nodes.col(read.cells(b, cell)));
+        const Point<3> node =
+            read.nodes.col(read.cells(mesh::simplex_edge_midpoint<3>(a, b), cell));
+        ASSERT_LE((node - mid).norm(), tolerance) << "cell " << cell << " edge " << a << b;
+      }
+}
+
+TEST(SolidMeshFile, WrittenTetrahedraGiveTheStructuredRamReaction) {
+  // As AWrittenChannelGivesTheStructuredRamReaction, on the bar cut into tetrahedra (P2 with
+  // its bubbles: the run adds them to the file's mesh as to the generated one).
+  testing::ScratchDirectory scratch("formflow-tet-msh");
+  const double tolerance = 1e-10; // solver.tolerance below
+  {
+    const mesh::Mesh<3> tetrahedra = mesh::split_into_tetrahedra(
+        mesh::make_solid_channel_mesh(bar_geometry(), bar_section(), 0.5, 2, false), false);
+    mesh::GmshSession session;
+    session.call([] { gmsh::model::add("bar"); });
+    mesh::add_solid_mesh_to_gmsh_model(session, tetrahedra);
+    mesh::write_gmsh_mesh(session, (scratch / "bar.msh").string(), false);
+  }
+  const std::string physics =
+      "[geometry]\ndimension = 3\nsection = \"rectangle\"\ncontainer_length = 1\n"
+      "entry_half_height = 1\nexit_half_height = 0.5\nexit_length = 1\n"
+      "entry_half_width = 1\nexit_half_width = 0.5\n\n"
+      "[friction]\nmu = 0.1\nradius = 0.3\n\n"
+      "[solver]\ntolerance = 1e-10\ncoarse_levels = 0\nload_error = \"none\"\n\n"
+      "[mesh]\ncell = \"tetrahedron\"\n";
+  const double structured = ram_reaction(scratch, "structured", physics + "size = 0.5\n");
+  const double from_file =
+      ram_reaction(scratch, "file", physics + "source = \"file\"\nfile = \"bar.msh\"\n");
+  EXPECT_GT(structured, 0.0);
+  EXPECT_NEAR(from_file, structured, 10 * tolerance * structured);
+}
+
 /// The hand-made files through the binary, as tests/gmsh/test_mesh_file_errors.cpp does in 2D.
 class SolidMeshFileCase : public ::testing::Test {
 protected:
@@ -269,9 +366,11 @@ TEST_F(SolidMeshFileCase, UnmappedSurfaceOnTheBoundary) {
                      9, "mesh.boundaries", "physical surface \"front\" lies on the boundary");
 }
 
-TEST_F(SolidMeshFileCase, Tetrahedra) {
-  expect_input_error(run_with(data_mesh("solid-tetrahedra.msh")), 6, "mesh.element",
-                     "5 elements of type \"Tetrahedron 4\": formflow needs hexahedra");
+TEST_F(SolidMeshFileCase, TetrahedraWithoutMeshCell) {
+  // mesh.cell is at its default (no line): the line of mesh.file is blamed.
+  expect_input_error(run_with(data_mesh("solid-tetrahedra.msh")), 7, "mesh.cell",
+                     "5 elements of type \"Tetrahedron 4\": mesh.cell = \"hexahedron\" needs "
+                     "hexahedra");
 }
 
 TEST_F(SolidMeshFileCase, SerendipityHexahedra) {

@@ -34,8 +34,13 @@ template <int dim> FacetKey<dim> sorted(FacetKey<dim> corners) {
   return corners;
 }
 
-/// The corners of local face `face` of `cell` (a triangle face of a tetrahedron has three:
-/// its fourth key entry repeats its first, so that every face has the same key size).
+/// The key of a triangle face: its corners with the least repeated, so that every solid face
+/// has a key of four and a triangle's does not depend on the order its corners come in.
+FacetKey<3> triangle_key(Index a, Index b, Index c) {
+  return sorted<3>({a, b, c, std::min({a, b, c})});
+}
+
+/// The corners of local face `face` of `cell` (a triangle face of a tetrahedron: triangle_key).
 template <int dim> FacetKey<dim> cell_facet_key(const Mesh<dim>& mesh, Index cell, int face) {
   const std::vector<int> local = mesh.face_nodes(face);
   const auto node = [&](std::size_t k) { return mesh.cells(local[k], cell); };
@@ -44,8 +49,8 @@ template <int dim> FacetKey<dim> cell_facet_key(const Mesh<dim>& mesh, Index cel
     if constexpr (dim == 2)
       return sorted<dim>({mesh.cells(corners[0], cell), mesh.cells(corners[1], cell)});
     else
-      return sorted<dim>({mesh.cells(corners[0], cell), mesh.cells(corners[1], cell),
-                          mesh.cells(corners[2], cell), mesh.cells(corners[0], cell)});
+      return triangle_key(mesh.cells(corners[0], cell), mesh.cells(corners[1], cell),
+                          mesh.cells(corners[2], cell));
   }
   const int n = mesh.nodes_per_side();
   if constexpr (dim == 2)
@@ -156,7 +161,11 @@ std::vector<FacetKey<dim>> group_facets(int tag,
                 fmt::format("map only {}s on the boundary of the meshed {}", W::group, W::domain));
           corners[c] = found->second;
         }
-        if (triangles) corners[3] = corners[0]; // as cell_facet_key keys a triangle face
+        if constexpr (dim == 3)
+          if (triangles) {
+            facets.push_back(triangle_key(corners[0], corners[1], corners[2]));
+            continue;
+          }
         facets.push_back(sorted<dim>(corners));
       }
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Solid die channels from Gmsh: the plane channel or a rectangle cross-section
-// extruded into hexahedra (recombined extrusion) or tetrahedra, parts as physical surfaces.
+// extruded into hexahedra (recombined extrusion; cut into tetrahedra on request), parts as
+// physical surfaces.
 #include "formflow/mesh/gmsh_solid_channel.hpp"
 
 #include "formflow/core/error.hpp"
@@ -8,6 +9,7 @@
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_session.hpp"
 #include "formflow/mesh/gmsh_solid_mesh.hpp"
+#include "formflow/mesh/tetrahedral_split.hpp"
 
 #include <gmsh.h>
 
@@ -32,13 +34,12 @@ int layers_over(Real length, Real size) {
 /// The plane channel extruded over the thickness: the lateral surfaces follow
 /// the base surface's curve loop (Gmsh's extrude returns top, volume, then one
 /// lateral surface per boundary curve, in order), so each keeps its curve's part.
-int add_slab(const ChannelGeometry& geometry, const SolidChannel& solid, Real size, bool recombine,
-             Parts& parts) {
+int add_slab(const ChannelGeometry& geometry, const SolidChannel& solid, Real size, Parts& parts) {
   const ChannelModel plane =
       add_channel_geometry(geometry, die_face_polyline(geometry, size), size);
   gmsh::vectorpair out;
   geo::extrude({{2, plane.surface}}, 0.0, 0.0, solid.thickness, out,
-               {extrusion_layers(solid.thickness, size)}, {}, recombine);
+               {extrusion_layers(solid.thickness, size)}, {}, true);
   std::size_t lateral = 2;
   for (const auto& [label, curves] : plane.parts)
     for (std::size_t k = 0; k < curves.size(); ++k)
@@ -63,8 +64,8 @@ int add_rectangle(int a, int b, int c, int d, std::map<std::pair<int, int>, int>
 /// The rectangle through the square die: the cross-section's four rectangles
 /// extruded together over the container, the exit's one then over the land and
 /// the exit. The parts are classified after synchronisation (classify_boundary).
-void add_rectangle_square_die(const ChannelGeometry& geometry, const SolidChannel& solid, Real size,
-                              bool recombine) {
+void add_rectangle_square_die(const ChannelGeometry& geometry, const SolidChannel& solid,
+                              Real size) {
   const Real h_in = geometry.entry_half_height, h_out = geometry.exit_half_height;
   const Real w_in = solid.entry_half_width, w_out = solid.exit_half_width;
   // (y, z) lattice of the cross-section at x = 0: y ∈ {0, H_out, H_in}, z ∈ {0, W_out, W_in}.
@@ -87,7 +88,7 @@ void add_rectangle_square_die(const ChannelGeometry& geometry, const SolidChanne
   for (const int surface : section) dim_tags.emplace_back(2, surface);
   gmsh::vectorpair container;
   geo::extrude(dim_tags, geometry.container_length, 0.0, 0.0, container,
-               {layers_over(geometry.container_length, size)}, {}, recombine);
+               {layers_over(geometry.container_length, size)}, {}, true);
   // Gmsh's extrude lists, per input surface, its top then its volume then the laterals:
   // the exit's rectangle is the first input, so its top is container[0].
   int face = container.at(0).second;
@@ -95,7 +96,7 @@ void add_rectangle_square_die(const ChannelGeometry& geometry, const SolidChanne
   for (const Real length : {geometry.land_length, geometry.exit_length}) {
     if (length <= 0) continue;
     gmsh::vectorpair out;
-    geo::extrude({{2, face}}, length, 0.0, 0.0, out, {layers_over(length, size)}, {}, recombine);
+    geo::extrude({{2, face}}, length, 0.0, 0.0, out, {layers_over(length, size)}, {}, true);
     face = out.at(0).second;
   }
 }
@@ -146,18 +147,15 @@ Mesh<3> make_gmsh_solid_channel_mesh(const ChannelGeometry& geometry, const Soli
                                      Real size, int order, bool drawing, CellShape shape) {
   FF_ASSERT(gmsh_builds_solid_channel(solid, geometry.die), "validated: a section Gmsh builds");
   FF_ASSERT(order == 1 || order == 2, "order must be 1 or 2");
-  // Extruded without recombination, Gmsh cuts each prism of a triangle layer into three
-  // tetrahedra, conforming from layer to layer.
-  const bool recombine = shape == CellShape::Cube;
   GmshSession session;
   session.call([&] {
     gmsh::model::add("solid channel");
     Parts parts;
     if (solid.section == ChannelSection::Slab) {
-      add_slab(geometry, solid, size, recombine, parts);
+      add_slab(geometry, solid, size, parts);
       geo::synchronize();
     } else {
-      add_rectangle_square_die(geometry, solid, size, recombine);
+      add_rectangle_square_die(geometry, solid, size);
       geo::synchronize();
       parts = classify_boundary(geometry, solid);
     }
@@ -169,22 +167,23 @@ Mesh<3> make_gmsh_solid_channel_mesh(const ChannelGeometry& geometry, const Soli
     std::vector<int> volume_tags;
     for (const auto& [dim, tag] : volumes) volume_tags.push_back(tag);
     gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, volume_tags), "domain");
-    if (recombine)
-      set_recombined_quadrilateral_options(size);
-    else
-      set_triangle_options(size);
+    set_recombined_quadrilateral_options(size);
     gmsh::model::mesh::generate(3);
     if (order == 2) gmsh::model::mesh::setOrder(2);
   });
   Mesh<3> mesh;
   try {
-    mesh = solid_mesh_from_gmsh_model(session, {}, order, shape); // the groups name the parts
+    mesh = solid_mesh_from_gmsh_model(session, {}, order); // the groups carry the part names
   } catch (const MeshFileError& error) {
     throw InternalError("Gmsh solid channel mesh: " + error.message); // our geometry: a bug
   }
   if (drawing)
     for (BoundaryFacet& facet : mesh.facets)
       if (facet.label == BoundaryLabel::Container) facet.label = BoundaryLabel::FreeEntry;
+  // Tetrahedra: the hexahedra cut conformingly (mesh/tetrahedral_split.hpp). Gmsh 4.8's own
+  // extrusion without recombination (each prism cut into three) leaves lateral surface
+  // triangles that are not faces of its tetrahedra.
+  if (shape == CellShape::Simplex) return split_into_tetrahedra(mesh, false);
   return mesh;
 }
 

@@ -34,8 +34,7 @@ inline bool gmsh_builds_solid_channel(const SolidChannel& solid, DieShape die) {
 ///   y = 0 and z = 0).
 /// `drawing`: the container wall is free (Γ2). Gmsh chooses the cross-section's
 /// cells, so the mesh is not the structured one; the x layers are round(L/size).
-/// `shape` Simplex: the same construction without recombination, in tetrahedra (tetra-4 or
-/// tetra-10): the base surface in triangles, each extruded prism cut into three.
+/// `shape` Simplex: those hexahedra cut into tetrahedra (split_into_tetrahedra, no bubbles).
 Mesh<3> make_gmsh_solid_channel_mesh(const ChannelGeometry& geometry, const SolidChannel& solid,
                                      Real size, int order, bool drawing,
                                      CellShape shape = CellShape::Cube);

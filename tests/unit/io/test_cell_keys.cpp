@@ -95,8 +95,16 @@ TEST(CellKeys, SimplicesRefuseTheVolumetricPenaltyAndTheCubesPressures) {
 
 TEST(CellKeys, WhatSimplicesDoNotRunYetIsRefusedByItsKey) {
   refusal("[mesh]\ncell = \"triangle\"\n[adapt]\ntarget_error = 0.01\n", "adapt.target_error", 4);
-  refusal("[geometry]\ndimension = 3\nsection = \"slab\"\n[mesh]\ncell = \"tetrahedron\"\n",
-          "mesh.cell", 5);
+  refusal("[geometry]\ndimension = 3\nsection = \"slab\"\n[mesh]\ncell = \"tetrahedron\"\n"
+          "[adapt]\ntarget_error = 0.01\n",
+          "adapt.target_error", 7);
+}
+
+TEST(CellKeys, TetrahedraDefaultToP2Mixed) {
+  const Case case_ =
+      loaded("[geometry]\ndimension = 3\nsection = \"slab\"\n[mesh]\ncell = \"tetrahedron\"\n");
+  EXPECT_EQ(case_.element, fem::ElementKind::P2);
+  EXPECT_EQ(case_.formulation.type, assembly::FormulationType::Mixed);
 }
 
 } // namespace

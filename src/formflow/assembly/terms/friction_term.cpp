@@ -28,6 +28,7 @@ public:
   void add_secant(const FaceState<dim>& face, MatrixX& matrix, VectorX& load) const override {
     if (face.points.empty()) return; // the constant-viscosity start: τ_f(0) = 0
     const int n_q = face.values.n_points();
+    FF_ASSERT(n_q <= max_face_points, "a face rule larger than the friction term's buffers");
     std::array<Real, max_face_points> weight{};
     for (int q = 0; q < n_q; ++q) weight[q] = face.points[q].friction_weight;
     add_friction_term<dim>(face.values, std::span<const Real>(weight.data(), n_q), matrix);
@@ -49,6 +50,7 @@ public:
 
   void add_tangent(const FaceState<dim>& face, MatrixX& matrix) const override {
     const int n_q = face.values.n_points();
+    FF_ASSERT(n_q <= max_face_points, "a face rule larger than the friction term's buffers");
     std::array<Point<dim>, max_face_points> slip, dual_slip;
     std::array<Real, max_face_points> coefficient{};
     const bool primal = face.slip_duals.empty();
@@ -125,8 +127,9 @@ public:
   bool has_loads() const override { return exact_; }
 
 private:
-  /// Q2 faces in 3D have 3×3 Gauss points (nodal rule: 9 face nodes).
-  static constexpr int max_face_points = 9;
+  /// Q2 faces in 3D have 3×3 Gauss points (nodal rule: 9 face nodes); a P2+ tetrahedron's
+  /// face rule of degree 6 has 4×4 (fem/reference_element.cpp face_rule).
+  static constexpr int max_face_points = 16;
 
   /// Adds ∫ t·φ_a e_i dΓ at face point q to a node-major local vector.
   template <class Vector>
