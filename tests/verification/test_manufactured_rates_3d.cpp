@@ -55,10 +55,9 @@ INSTANTIATE_TEST_SUITE_P(
     solid_rate_case_name);
 
 // P2+ tetrahedra (P2 with face and cell bubbles, P1disc pressure condensed with d > 0), the
-// unit cube's cells cut into six tetrahedra each: ‖u − u_h‖_V = O(h²). The finest pair here
-// (h = 1/4, 1/8, 43 539 dofs) is asymptotic in the V norm; the L2 norm's h³ still rises
-// towards 3 there (long: tests/long/test_manufactured_3d_long.cpp).
-TEST(ManufacturedTetrahedronRates, EnergyOrderIsQuadraticOnFinestPair) {
+// unit cube's cells cut into six tetrahedra each: ‖u − u_h‖_V = O(h²), ‖u − u_h‖_L2 = O(h³),
+// within 0.15 on the finest pair (h = 1/4, 1/8, 43 539 dofs).
+TEST(ManufacturedTetrahedronRates, ObservedOrdersMatchTheoremOnFinestPair) {
   const post::StudyTable table = testing::mesh_ladder({1.0 / 2, 1.0 / 4, 1.0 / 8}, [&](Real size) {
     io::Case case_ =
         testing::manufactured_case(fem::ElementKind::Q2, size, mesh::Distortion::None, false);
@@ -77,7 +76,7 @@ TEST(ManufacturedTetrahedronRates, EnergyOrderIsQuadraticOnFinestPair) {
   const post::StudyRung& finest = table.rungs.back();
   ASSERT_TRUE(finest.order_v && finest.order_l2);
   EXPECT_NEAR(*finest.order_v, 2.0, 0.15);
-  EXPECT_GT(*finest.order_l2, *finest.order_v); // the duality gain has set in
+  EXPECT_NEAR(*finest.order_l2, 3.0, 0.15);
 }
 
 } // namespace

@@ -180,9 +180,9 @@ Mesh<3> make_gmsh_solid_channel_mesh(const ChannelGeometry& geometry, const Soli
   if (drawing)
     for (BoundaryFacet& facet : mesh.facets)
       if (facet.label == BoundaryLabel::Container) facet.label = BoundaryLabel::FreeEntry;
-  // Tetrahedra: the hexahedra cut conformingly (mesh/tetrahedral_split.hpp). Gmsh 4.8's own
-  // extrusion without recombination (each prism cut into three) leaves lateral surface
-  // triangles that are not faces of its tetrahedra.
+  // Tetrahedra: the same cross-section and layers as the hexahedra, each cut conformingly
+  // (mesh/tetrahedral_split.hpp), so that a tetrahedral and a hexahedral run share their
+  // vertices.
   if (shape == CellShape::Simplex) return split_into_tetrahedra(mesh, false);
   return mesh;
 }

@@ -123,7 +123,8 @@ std::vector<CaseKey> geometry_keys() {
               "3: geometry.symmetry = \"plane\"; mesh.source = \"gmsh\" only for the slab and "
               "the square-die rectangle")
           .doc("2: the plane (or axisymmetric) channel in quadrilaterals; 3: the solid channel "
-               "of geometry.section in hexahedra (docs/3d.md), or the unit cube of "
+               "of geometry.section in hexahedra or tetrahedra (mesh.cell; docs/3d.md, "
+               "docs/simplices.md), or the unit cube of "
                "verification.solution"),
       section_key(),
       real_key(
