@@ -87,6 +87,14 @@ mesh::SolidChannel bar_section() {
   return solid;
 }
 
+/// The same boundary facets with the same labels (in whatever order the reader lists them).
+void expect_same_facets(const mesh::Mesh<3>& read, const mesh::Mesh<3>& written) {
+  std::map<std::pair<Index, int>, mesh::BoundaryLabel> expected, found;
+  for (const auto& f : written.facets) expected[{f.cell, f.local_face}] = f.label;
+  for (const auto& f : read.facets) found[{f.cell, f.local_face}] = f.label;
+  EXPECT_EQ(found, expected);
+}
+
 TEST(SolidMeshFile, AGeneratedChannelReadsBackAsTheSameMesh) {
   testing::ScratchDirectory scratch("formflow-solid-msh");
   mesh::SolidChannel slab;
@@ -105,11 +113,7 @@ TEST(SolidMeshFile, AGeneratedChannelReadsBackAsTheSameMesh) {
       ASSERT_EQ(read.n_cells(), written.n_cells());
       EXPECT_EQ(read.cells, written.cells);
       EXPECT_EQ(read.nodes, written.nodes);
-      // The same boundary facets with the same labels (in the reader's order).
-      std::map<std::pair<Index, int>, mesh::BoundaryLabel> expected, found;
-      for (const auto& f : written.facets) expected[{f.cell, f.local_face}] = f.label;
-      for (const auto& f : read.facets) found[{f.cell, f.local_face}] = f.label;
-      EXPECT_EQ(found, expected);
+      expect_same_facets(read, written);
     }
 }
 
@@ -180,10 +184,7 @@ TEST(SolidMeshFile, TetrahedraReadBackAsTheSameMesh) {
       EXPECT_TRUE(read.is_simplex());
       EXPECT_EQ(read.cells, written.cells);
       EXPECT_EQ(read.nodes, written.nodes);
-      std::map<std::pair<Index, int>, mesh::BoundaryLabel> expected, found;
-      for (const auto& f : written.facets) expected[{f.cell, f.local_face}] = f.label;
-      for (const auto& f : read.facets) found[{f.cell, f.local_face}] = f.label;
-      EXPECT_EQ(found, expected);
+      expect_same_facets(read, written);
     }
 }
 

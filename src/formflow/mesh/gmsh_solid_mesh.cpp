@@ -20,14 +20,22 @@ namespace {
 
 using Subject = MeshFileError::Subject;
 
+/// Gmsh's reference coordinates of the nodes of element type `type` (x, y, z per node).
+std::vector<double> gmsh_reference_nodes(int type, int& n_nodes) {
+  std::string name;
+  int dim = 0, element_order = 0, n_primary = 0;
+  std::vector<double> reference;
+  gmsh::model::mesh::getElementProperties(type, name, dim, element_order, n_nodes, reference,
+                                          n_primary);
+  return reference;
+}
+
 /// Gmsh node k of a hexahedron of `order` → our lexicographic node, from the
 /// reference coordinates Gmsh gives (the cube [−1, 1]³): no table to get wrong.
 std::vector<int> hex_node_map(int order) {
-  std::string name;
-  int dim = 0, element_order = 0, n_nodes = 0, n_primary = 0;
-  std::vector<double> reference;
-  gmsh::model::mesh::getElementProperties(order == 1 ? gmsh_reading::hexa8 : gmsh_reading::hexa27,
-                                          name, dim, element_order, n_nodes, reference, n_primary);
+  int n_nodes = 0;
+  const std::vector<double> reference =
+      gmsh_reference_nodes(order == 1 ? gmsh_reading::hexa8 : gmsh_reading::hexa27, n_nodes);
   const int n = order + 1;
   std::vector<int> map(static_cast<std::size_t>(n_nodes));
   std::vector<bool> taken(static_cast<std::size_t>(n * n * n), false);
@@ -67,11 +75,9 @@ SolidCellWords solid_cell_words(CellShape shape) {
 /// edge of the two vertices it lies between. (Gmsh's tetra-10 lists the edges (0,1),
 /// (1,2), (2,0), (3,0), (3,2), (3,1); ours, VTK's, end in (1,3), (2,3).)
 std::vector<int> tetra_node_map(int order) {
-  std::string name;
-  int dim = 0, element_order = 0, n_nodes = 0, n_primary = 0;
-  std::vector<double> reference;
-  gmsh::model::mesh::getElementProperties(order == 1 ? gmsh_reading::tetra4 : gmsh_reading::tetra10,
-                                          name, dim, element_order, n_nodes, reference, n_primary);
+  int n_nodes = 0;
+  const std::vector<double> reference =
+      gmsh_reference_nodes(order == 1 ? gmsh_reading::tetra4 : gmsh_reading::tetra10, n_nodes);
   const auto vertex = [](int v) {
     return v == 0 ? Point<3>(Point<3>::Zero()) : Point<3>(Point<3>::Unit(v - 1));
   };
