@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(case_file case_override msh_header study_vary)
+((${#targets[@]})) || targets=(case_file case_override msh_header msh_data study_vary petsc_options)
 
 # Fuzz-only packages: ./run and ./test never need them.
 packages=(clang libclang-rt-14-dev)

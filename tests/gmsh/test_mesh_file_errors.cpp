@@ -255,6 +255,36 @@ TEST_F(MeshFileIsData, AHeaderWithAScriptAfterItIsRefused) {
   EXPECT_FALSE(fs::exists(marker()));
 }
 
+TEST_F(MeshFileIsData, AReadableFileThatIsNotAMeshIsNotQuoted) {
+  // mesh.file may name any readable file: the error says what is wrong with it without
+  // showing a byte of it (it used to echo the first 60).
+  const std::string secret = "root:$6$FORMFLOWSECRET$hash:19000:0:99999:7:::";
+  for (const std::string& content : {secret + "\n", secret,
+                                     "\x7f"
+                                     "ELF\x02\x01" +
+                                         secret})
+    for (const std::string command : {"check", "run"}) {
+      std::ofstream(scratch_ / "meshes" / "shadow", std::ios::binary) << content;
+      expect_input_error(run_command(command, "meshes/shadow"), 4, "mesh.file",
+                         "not a Gmsh MSH file: its first line is not `$MeshFormat`");
+      EXPECT_FALSE(has_text(error_, "FORMFLOWSECRET")) << error_;
+      EXPECT_FALSE(has_text(error_, "root:")) << error_;
+      EXPECT_FALSE(has_text(error_, "ELF")) << error_;
+    }
+}
+
+TEST_F(MeshFileIsData, ANulInTheMeshPathIsRefusedByKey) {
+  // The path would end at the NUL for every file call, reading meshes/m.msh instead of
+  // the name written (case file line 4, or --set).
+  testing::write_test_mesh(testing::two_squares(), (scratch_ / "meshes" / "m.msh").string());
+  expect_input_error(run_command("check", "meshes/m.msh\\u0000.txt"), 4, "mesh.file",
+                     "contains a NUL byte (at byte 12)");
+  extra_arguments_ = " --set 'mesh.file=\"meshes/m.msh\\u0000.txt\"'";
+  EXPECT_EQ(run_with(testing::two_squares()), 2) << error_;
+  EXPECT_TRUE(has_text(error_, "--set: mesh.file: contains a NUL byte")) << error_;
+  EXPECT_FALSE(fs::exists(scratch_ / "out"));
+}
+
 TEST_F(MeshFileIsData, AnOptionFileBesideTheMeshIsNotRun) {
   // Gmsh runs `<file>.opt` as a script after opening <file>: it is given a private copy.
   testing::write_test_mesh(testing::two_squares(), (scratch_ / "meshes" / "m.msh").string());

@@ -387,6 +387,17 @@ TEST(DistributedRun, APartitionerOptionInTheCaseIsRefusedOnEveryRankAlike) {
                       scratch);
 }
 
+TEST(DistributedRun, CaseOptionsNeedNoSolverLinearOnSeveralRanks) {
+  // PETSc is the default back-end on N > 1 ranks: solver.petsc_options without
+  // solver.linear is read, not refused as options of a serial back-end.
+  testing::ScratchDirectory scratch("formflow-mpi");
+  DistributedCase c = by_default(paper_penalty);
+  c.edits.emplace_back("solver.petsc_options", "-ksp_type gmres -ksp_rtol 1e-12");
+  const MpiRun run = run_mpi(c, 2, scratch);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.summary.at("linear_algebra").at("solver"), "petsc-gmres-cholesky");
+}
+
 TEST(DistributedRun, ExactStickIsRefusedNamingTheKey) {
   testing::ScratchDirectory scratch("formflow-mpi");
   expect_refused_once(run_mpi(paper_exact_friction, 2, scratch,

@@ -95,3 +95,14 @@ def test_missing_file_is_an_input_error(tmp_path):
     with pytest.raises(formflow.InputError) as raised:
         formflow.Case.from_file(missing)
     assert str(raised.value) == cli_error("check", missing)
+
+
+def test_a_nul_in_a_path_is_refused_by_key(tmp_path):
+    # A C path ends at the NUL: "m.msh\0.txt" would read m.msh without a word.
+    with pytest.raises(formflow.InputError) as raised:
+        formflow.Case({"mesh": {"source": "file", "file": "m.msh\0.txt"}})
+    assert raised.value.key == "mesh.file"
+    assert "NUL" in raised.value.message
+    with pytest.raises(formflow.InputError) as raised:
+        formflow.Case.from_file(str(tmp_path / "case.toml") + "\0.txt")
+    assert "NUL" in raised.value.message

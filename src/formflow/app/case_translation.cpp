@@ -137,16 +137,12 @@ void check_distributed(const io::Case& case_) {
 }
 
 io::Case load_run_case(const std::string& path, std::vector<io::Override> overrides) {
-  io::Case case_ = io::load_case(path, overrides);
-  if (!distribution().distributed()) return case_;
-  bool reload = false;
-  if (case_.key_locations.count("solver.linear") == 0 &&
-      case_.solver.linear != solvers::LinearSolverKind::Petsc) {
-    // Left at its default (CHOLMOD, serial only): PETSc, as if given last on the command line.
-    overrides.emplace_back("solver.linear", "petsc");
-    reload = true;
-  }
-  if (reload) case_ = io::load_case(path, overrides);
+  if (!distribution().distributed()) return io::load_case(path, overrides);
+  // On several ranks the default back-end is PETSc, the one distributed one (CHOLMOD is
+  // serial): a default, so that the checks of the keys that need it (solver.petsc_options)
+  // see it, and a case that names another back-end is still refused by that key.
+  const std::vector<io::Override> defaults = {{"solver.linear", "petsc"}};
+  io::Case case_ = io::load_case(path, overrides, defaults);
   if (case_.key_locations.count("friction.stick") == 0 &&
       make_solve_plan(case_).shape.exact_stick) {
     // The exact law's default under Newton (exact stick on nodal points) condenses the whole
@@ -157,7 +153,7 @@ io::Case load_run_case(const std::string& path, std::vector<io::Override> overri
                "process; docs/petsc.md)\n",
                distribution().size);
     overrides.emplace_back("friction.stick", "augmented");
-    case_ = io::load_case(path, overrides);
+    case_ = io::load_case(path, overrides, defaults);
   }
   return case_;
 }

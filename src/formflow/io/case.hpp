@@ -77,7 +77,10 @@ using Override = std::pair<std::string, std::string>;
 
 /// Reads and validates `path` (empty: the embedded default case), then applies
 /// `overrides`. Throws InputError naming file, line, key and what would be valid.
-Case load_case(const std::string& path, const std::vector<Override>& overrides);
+/// `defaults` replace the key table's defaults before anything is read (a run on
+/// several ranks: solver.linear = "petsc"); a key they set still counts as not given.
+Case load_case(const std::string& path, const std::vector<Override>& overrides,
+               const std::vector<Override>& defaults = {});
 
 /// As load_case, for a case file's `text` already in memory (the fuzz targets,
 /// tests); `source` stands for its path in errors and relative mesh paths.

@@ -42,6 +42,14 @@ void CaseBuilder::set(const CaseKey& key, const toml::value& value, const std::s
           Origin{file, file == "--set" ? line : line_of(lines, entry_value), n_set_};
 }
 
+void CaseBuilder::set_default(const CaseKey& key, const toml::value& value) {
+  const std::optional<KeyValue> converted = convert_toml_value(key, value);
+  // A caller's constant, not the user's input: wrong, it is formflow's bug.
+  if (!converted || check_key_value(key, *converted))
+    throw InternalError("an invalid default for " + std::string(key.name));
+  key.set(case_, *converted);
+}
+
 void CaseBuilder::check_table_entries(const CaseKey& key, const toml::value& table,
                                       const std::string& file, TomlLines& lines) {
   for (const auto& [entry, pointer] : in_file_order(table, lines)) {

@@ -29,6 +29,10 @@ public:
   void set(const CaseKey& key, const toml::value& value, const std::string& file, int line,
            TomlLines& lines);
 
+  /// Gives `key` another default, `value`: checked as a value of `key` is, not counted
+  /// as set (io::load_case's `defaults`).
+  void set_default(const CaseKey& key, const toml::value& value);
+
   /// A bad entry of a table of strings is blamed on its own line, not on the
   /// table's header line, which may be far above it.
   static void check_table_entries(const CaseKey& key, const toml::value& table,

@@ -12,6 +12,7 @@
 #include "formflow/physics/friction.hpp"
 #include "formflow/physics/manufactured_thermal.hpp"
 #include "formflow/solvers/linear_solver.hpp"
+#include "formflow/solvers/petsc_case_options.hpp"
 #include "formflow/solvers/petsc_option_text.hpp"
 
 #include <fmt/format.h>
@@ -205,9 +206,10 @@ void CaseBuilder::check_formulation() const {
           "use penalty.d > 0 with Q1–P0, or mesh.element = \"Q2\" with \"P1disc\"");
 }
 
-/// solver.linear = "petsc" needs a PETSc build; solver.petsc_options needs petsc and
-/// PETSc's option syntax (the names themselves are checked at the first
-/// factorisation, where PETSc has read them).
+/// solver.linear = "petsc" needs a PETSc build; solver.petsc_options needs petsc,
+/// PETSc's option syntax and only the solver options a case file may carry
+/// (solvers/petsc_case_options.hpp: no viewer, monitor or file; whether PETSc reads
+/// them is checked at the first factorisation, where PETSc has read them).
 void CaseBuilder::check_linear_solver() const {
   if (!solvers::is_built(case_.solver.linear))
     blame({"solver.linear"}, "this formflow was built without PETSc (FORMFLOW_WITH_PETSC=OFF)",
@@ -222,6 +224,8 @@ void CaseBuilder::check_linear_solver() const {
   if (const auto problem = solvers::petsc_option_syntax_error(options))
     blame({"solver.petsc_options"}, *problem,
           "e.g. \"-ksp_type cg -pc_type gamg -ksp_rtol 1e-10\"");
+  if (const auto refusal = solvers::case_petsc_options_refusal(options))
+    blame({"solver.petsc_options"}, *refusal, std::string(solvers::case_petsc_options_allowed()));
 }
 
 /// Anderson acceleration mixes the secant loop's steps: Newton's loop has no such map

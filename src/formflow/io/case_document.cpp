@@ -46,6 +46,9 @@ InputError syntax_error(const std::string& path, const toml::syntax_error& error
 /// The whole file, refusing (before reading it) one larger than a case file can be.
 std::string read_bounded(const std::string& path) {
   const std::string key = "case file";
+  // std::filesystem and the C library would read the path up to its NUL: another file.
+  if (path.find('\0') != std::string::npos)
+    throw InputError(path, 0, key, "the path contains a NUL byte", "a path without NUL");
   std::error_code code;
   if (!std::filesystem::exists(path, code))
     throw InputError(path, 0, key, "no such file",

@@ -67,8 +67,14 @@ void apply_override(CaseBuilder& builder, const Override& assignment) {
 namespace {
 
 Case build_case(const toml::value* document, const std::string& path,
-                const std::vector<Override>& overrides) {
+                const std::vector<Override>& overrides,
+                const std::vector<Override>& defaults = {}) {
   CaseBuilder builder;
+  for (const auto& [name, text] : defaults) {
+    const CaseKey* key = find_case_key(name);
+    if (!key) throw InternalError("a default for an unknown key: " + name);
+    builder.set_default(*key, parse_override_value(name, text));
+  }
   if (document) apply_document(builder, *document, path);
   for (const Override& assignment : overrides) apply_override(builder, assignment);
   builder.resolve_dependent_defaults();
@@ -78,10 +84,11 @@ Case build_case(const toml::value* document, const std::string& path,
 
 } // namespace
 
-Case load_case(const std::string& path, const std::vector<Override>& overrides) {
-  if (path.empty()) return build_case(nullptr, path, overrides);
+Case load_case(const std::string& path, const std::vector<Override>& overrides,
+               const std::vector<Override>& defaults) {
+  if (path.empty()) return build_case(nullptr, path, overrides, defaults);
   const toml::value document = read_case_document(path);
-  return build_case(&document, path, overrides);
+  return build_case(&document, path, overrides, defaults);
 }
 
 Case load_case_text(const std::string& text, const std::string& source,

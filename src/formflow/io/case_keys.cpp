@@ -244,7 +244,16 @@ std::optional<KeyProblem> check_key_value(const CaseKey& key, const KeyValue& va
       if (!std::isfinite(point[0]) || !std::isfinite(point[1]))
         return KeyProblem{"a point is not finite", "give finite [x, y] pairs"};
     return std::nullopt;
-  case KeyType::Text: return std::nullopt;
+  case KeyType::Text:
+    // A path (mesh.file) or PETSc's option text ends at a NUL for every C interface it
+    // reaches: the rest would be dropped without a word.
+    if (const std::string& text = std::get<std::string>(value);
+        text.find('\0') != std::string::npos)
+      return KeyProblem{fmt::format("contains a NUL byte (at byte {}), which would silently end "
+                                    "the text there",
+                                    text.find('\0')),
+                        "a path or option text without NUL (\\u0000)"};
+    return std::nullopt;
   case KeyType::NameMap:
     for (const auto& [entry, text] : std::get<NameMap>(value))
       if (std::find(key.choices.begin(), key.choices.end(), text) == key.choices.end())

@@ -3,6 +3,7 @@
 #include "formflow/mesh/msh_file.hpp"
 
 #include "formflow/mesh/gmsh_mesh.hpp"
+#include "formflow/mesh/msh_data.hpp"
 #include "formflow/mesh/msh_header.hpp"
 
 #include <fcntl.h>
@@ -44,9 +45,14 @@ std::string read_msh_bytes(const std::string& path) {
     throw MeshFileError(Subject::File, "", "cannot read " + path, "check its permissions");
   std::string bytes = std::move(content).str();
   std::string problem;
-  if (!parse_msh_header(bytes, problem))
+  const std::optional<MshHeader> header = parse_msh_header(bytes, problem);
+  if (!header)
     throw MeshFileError(Subject::File, "", path + ": " + problem,
                         std::string(msh_header_requirement));
+  if (auto refusal = msh_data_problem(bytes, *header, path))
+    throw MeshFileError(Subject::File, "", std::move(*refusal),
+                        "a mesh as Gmsh writes it: counts the file holds, tags 1…n, finite "
+                        "coordinates within ±1e12, each node once (docs/reliability.md)");
   return bytes;
 }
 

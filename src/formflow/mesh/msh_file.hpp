@@ -15,8 +15,8 @@ inline constexpr std::uintmax_t max_msh_file_bytes = std::uintmax_t{1} << 30;
 
 /// The whole content of the mesh file `path`, read once. Throws MeshFileError
 /// (Subject::File) when it is missing, not a regular file, unreadable, or not
-/// an MSH file by parse_msh_header, or larger than max_msh_file_bytes — before
-/// any library has read it.
+/// an MSH file by parse_msh_header, its sections not data by msh_data_problem, or
+/// larger than max_msh_file_bytes — before any library has read it.
 std::string read_msh_bytes(const std::string& path);
 
 /// A copy of already checked MSH bytes in a fresh directory only this process

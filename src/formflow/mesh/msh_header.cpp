@@ -47,10 +47,11 @@ std::optional<MshHeader> parse_msh_header(std::string_view bytes, std::string& p
   std::size_t at = 0;
   std::string_view line;
   if (!take_line(bytes, at, line) || line != "$MeshFormat") {
-    const std::string_view first = bytes.substr(0, bytes.find('\n'));
+    // Nothing of the file is quoted: mesh.file may name any readable file (a key, a
+    // password file), and the error would show its first bytes to whoever reads it.
     problem = bytes.empty() ? "the file is empty"
-                            : "not a Gmsh MSH file: it starts with " + shown(first) +
-                                  " instead of `$MeshFormat`";
+                            : "not a Gmsh MSH file: its first line is not `$MeshFormat` (its "
+                              "content is not shown)";
     return std::nullopt;
   }
   if (!take_line(bytes, at, line)) {

@@ -28,7 +28,8 @@ struct MshHeader {
 /// with VERSION 2.2 or 4.1, FILE-TYPE 0 (ASCII) or 1 (binary), DATA-SIZE 8,
 /// and lines ended by "\n" or "\r\n". The binary marker may be in either byte
 /// order (Gmsh swaps). Returns the header, or sets `problem` to what is wrong
-/// (one sentence naming what was found) and returns std::nullopt. Only the
+/// (one sentence; it quotes no byte of a file whose first line is not
+/// `$MeshFormat`, which may be any readable file) and returns std::nullopt. Only the
 /// header is read: `bytes` may be the first few hundred bytes of the file.
 std::optional<MshHeader> parse_msh_header(std::string_view bytes, std::string& problem);
 

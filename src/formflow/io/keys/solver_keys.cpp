@@ -54,9 +54,11 @@ std::vector<CaseKey> solver_keys() {
                "saddle point; docs/petsc.md). Run by mpirun on several ranks, a case that "
                "leaves this key unset takes petsc, the one distributed back-end"),
       petsc_options_key()
-          .constraint("only with solver.linear = \"petsc\"; names start with '-', values follow "
-                      "their name; an option no PETSc object reads is refused before the first "
-                      "solve")
+          .constraint("only with solver.linear = \"petsc\" (the default on several MPI ranks); "
+                      "names start with '-', values follow their name; only solver and "
+                      "preconditioner options, no viewer, monitor, log, options file or path "
+                      "(docs/petsc.md); an option no PETSc object reads is refused before the "
+                      "first solve")
           .doc("PETSc options database text for solver.linear = \"petsc\", e.g. \"-ksp_type cg "
                "-pc_type gamg\"; PETSc options on the command line (-ksp_*, -pc_*, -mat_*, ...) "
                "override it; empty: direct MUMPS"),
