@@ -35,8 +35,9 @@ struct InfSupEstimate {
 /// checkerboard (+1 −1 / −1 +1) of every complete 2×2 macro-element of a
 /// uniform mesh is removed from the pressure space (the macro-element filter of
 /// Remark 4.3). Eigenvalues below 1e-10 × the largest count as null modes.
-inline InfSupEstimate inf_sup_constant(const mesh::Mesh<2>& mesh, fem::PressureSpace space,
-                                       bool macro_filter = false);
+template <int dim>
+InfSupEstimate inf_sup_constant(const mesh::Mesh<dim>& mesh, fem::PressureSpace space,
+                                bool macro_filter = false);
 
 /// Projects the local checkerboard mode out of every complete 2×2 macro-element
 /// of a uniform square mesh of side `size` (cells grouped by their centres);
@@ -53,8 +54,11 @@ struct PressureNumbering {
   Index n_dofs = 0;
 };
 
-inline PressureNumbering number_pressures(const mesh::Mesh<2>& mesh, fem::PressureSpace space) {
-  const int n_p = fem::pressure_functions_per_cell<2>(space);
+template <int dim>
+PressureNumbering number_pressures(const mesh::Mesh<dim>& mesh, fem::PressureSpace space) {
+  FF_ASSERT(dim == 2 || mesh.is_simplex() || fem::is_discontinuous(space),
+            "the continuous Q1 numbering here is the quadrilateral's");
+  const int n_p = fem::pressure_functions_per_cell<dim>(space);
   PressureNumbering numbering;
   numbering.dofs.resize(n_p, mesh.n_cells());
   std::map<Index, Index> vertex_dof;
@@ -77,16 +81,16 @@ inline PressureNumbering number_pressures(const mesh::Mesh<2>& mesh, fem::Pressu
 }
 
 /// Free (interior) velocity dof index per dof, −1 on the boundary.
-inline std::vector<Index> interior_dofs(const mesh::Mesh<2>& mesh, Index& n_free) {
+template <int dim> std::vector<Index> interior_dofs(const mesh::Mesh<dim>& mesh, Index& n_free) {
   std::vector<bool> on_boundary(mesh.n_nodes(), false);
   for (const mesh::BoundaryFacet& facet : mesh.facets)
     for (int local : mesh.face_nodes(facet.local_face))
       on_boundary[mesh.cells(local, facet.cell)] = true;
-  std::vector<Index> free(mesh.n_nodes() * 2, -1);
+  std::vector<Index> free(mesh.n_nodes() * dim, -1);
   n_free = 0;
   for (Index node = 0; node < mesh.n_nodes(); ++node)
     if (!on_boundary[node])
-      for (int i = 0; i < 2; ++i) free[fem::dof_of<2>(node, i)] = n_free++;
+      for (int i = 0; i < dim; ++i) free[fem::dof_of<dim>(node, i)] = n_free++;
   return free;
 }
 
@@ -130,17 +134,18 @@ inline MatrixX checkerboard_complement(const mesh::Mesh<2>& mesh, Real size) {
 
 using namespace inf_sup_detail;
 
-inline InfSupEstimate inf_sup_constant(const mesh::Mesh<2>& mesh, fem::PressureSpace space,
-                                       bool macro_filter) {
+template <int dim>
+InfSupEstimate inf_sup_constant(const mesh::Mesh<dim>& mesh, fem::PressureSpace space,
+                                bool macro_filter) {
   FF_ASSERT(!macro_filter || space == fem::PressureSpace::P0, "the macro filter acts on P0");
   Index n_free = 0;
   const std::vector<Index> free = interior_dofs(mesh, n_free);
   const PressureNumbering pressure = number_pressures(mesh, space);
-  const int n_p = fem::pressure_functions_per_cell<2>(space);
-  const int n_local = mesh.nodes_per_cell() * 2;
-  const fem::QuadratureRule<2> rule = fem::full_rule<2>(mesh.cell_type());
-  fem::CellValues<2> values(mesh.cell_type(), rule);
-  fem::CellValues<2>::Gradients coordinates(2, mesh.nodes_per_cell());
+  const int n_p = fem::pressure_functions_per_cell<dim>(space);
+  const int n_local = mesh.nodes_per_cell() * dim;
+  const fem::QuadratureRule<dim> rule = fem::full_rule<dim>(mesh.cell_type());
+  fem::CellValues<dim> values(mesh.cell_type(), rule);
+  typename fem::CellValues<dim>::Gradients coordinates(dim, mesh.nodes_per_cell());
 
   MatrixX laplacian = MatrixX::Zero(n_free, n_free);
   MatrixX divergence = MatrixX::Zero(pressure.n_dofs, n_free);
@@ -150,19 +155,19 @@ inline InfSupEstimate inf_sup_constant(const mesh::Mesh<2>& mesh, fem::PressureS
     for (int a = 0; a < mesh.nodes_per_cell(); ++a)
       coordinates.col(a) = mesh.nodes.col(mesh.cells(a, cell));
     values.reinit(coordinates);
-    dofs = fem::dofs_of_nodes<2>(mesh.cells.col(cell));
+    dofs = fem::dofs_of_nodes<dim>(mesh.cells.col(cell));
     for (int q = 0; q < values.n_points(); ++q) {
       const auto& grad = values.gradients(q);
       const Eigen::Map<const VectorX> divergence_row(grad.data(), n_local);
-      const VectorX psi = fem::tabulate_pressure<2>(space, rule.points[q]);
+      const VectorX psi = fem::tabulate_pressure<dim>(space, rule.points[q]);
       const MatrixX grad_grad = grad.transpose() * grad; // ∇φ_a·∇φ_b
       for (int r = 0; r < n_local; ++r) {
         const Index row = free[dofs[r]];
         if (row < 0) continue;
         for (int c = 0; c < n_local; ++c) {
           const Index column = free[dofs[c]];
-          if (column >= 0 && r % 2 == c % 2)
-            laplacian(row, column) += values.JxW(q) * grad_grad(r / 2, c / 2);
+          if (column >= 0 && r % dim == c % dim)
+            laplacian(row, column) += values.JxW(q) * grad_grad(r / dim, c / dim);
         }
         for (int i = 0; i < n_p; ++i)
           divergence(pressure.dofs(i, cell), row) += values.JxW(q) * psi[i] * divergence_row[r];
@@ -172,13 +177,15 @@ inline InfSupEstimate inf_sup_constant(const mesh::Mesh<2>& mesh, fem::PressureS
           mass(pressure.dofs(i, cell), pressure.dofs(j, cell)) += values.JxW(q) * psi[i] * psi[j];
     }
   }
-  if (macro_filter) {
-    Real size = (mesh.nodes.col(mesh.cells(mesh.nodes_per_cell() - 1, 0)) -
-                 mesh.nodes.col(mesh.cells(0, 0)))[0];
-    const MatrixX basis = checkerboard_complement(mesh, size);
-    divergence = basis.transpose() * divergence;
-    mass = basis.transpose() * mass * basis;
-  }
+  FF_ASSERT(dim == 2 || !macro_filter, "the macro filter is the square mesh's");
+  if constexpr (dim == 2)
+    if (macro_filter) {
+      Real size = (mesh.nodes.col(mesh.cells(mesh.nodes_per_cell() - 1, 0)) -
+                   mesh.nodes.col(mesh.cells(0, 0)))[0];
+      const MatrixX basis = checkerboard_complement(mesh, size);
+      divergence = basis.transpose() * divergence;
+      mass = basis.transpose() * mass * basis;
+    }
   const Eigen::LLT<MatrixX> factor(laplacian);
   const MatrixX schur = divergence * factor.solve(divergence.transpose()); // B A⁻¹ Bᵀ
   const Eigen::GeneralizedSelfAdjointEigenSolver<MatrixX> eigen(schur, mass,

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Remark 4.3 made visible: which velocity/pressure pairs keep β_h bounded.
+#include "formflow/mesh/cube_mesh.hpp"
+#include "formflow/mesh/tetrahedral_split.hpp"
 #include "inf_sup_table.hpp"
 
 #include <gtest/gtest.h>
@@ -41,6 +43,41 @@ TEST(InfSup, StablePairsStayBoundedAndUnstableOnesDoNot) {
   for (const auto& estimate : table[P2P1discWithoutBubbles]) EXPECT_GE(estimate.n_null_modes, 2);
   // The macro filter removes the checkerboard from the null space.
   for (const auto& estimate : table[Q1P0Filtered]) EXPECT_EQ(estimate.n_null_modes, 1);
+}
+
+TEST(InfSup, TetrahedralPairsStayBounded) {
+  // The unit cube in n³ cubes, each cut into six tetrahedra (no-slip on its whole
+  // boundary): β_h of the tetrahedral pairs at h = 1/2 and 1/4, with the criteria above.
+  struct TetrahedralPair {
+    const char* name;
+    int order;
+    bool bubbles;
+    fem::PressureSpace space;
+    bool stable;
+  };
+  const TetrahedralPair pairs[] = {
+      {"P2+-P1disc", 2, true, fem::PressureSpace::P1disc, true},
+      {"P2-P1 (Taylor-Hood)", 2, false, fem::PressureSpace::P1, true},
+      {"P1b-P1 (MINI)", 1, true, fem::PressureSpace::P1, true},
+      {"P2-P1disc (no bubbles)", 2, false, fem::PressureSpace::P1disc, false}};
+  for (const TetrahedralPair& pair : pairs) {
+    SCOPED_TRACE(pair.name);
+    std::vector<InfSupEstimate> row;
+    for (const int n : {2, 4}) {
+      const mesh::Mesh<3> tetrahedra =
+          mesh::split_into_tetrahedra(mesh::make_unit_cube_mesh(n, pair.order), pair.bubbles);
+      row.push_back(inf_sup_constant(tetrahedra, pair.space));
+      std::printf("| %s (tetrahedra) | h = 1/%d | %.4f (%d null) |\n", pair.name, n,
+                  row.back().beta, row.back().n_null_modes);
+    }
+    if (!pair.stable) {
+      for (const auto& estimate : row) EXPECT_GE(estimate.n_null_modes, 2);
+      continue;
+    }
+    for (const auto& estimate : row) EXPECT_EQ(estimate.n_null_modes, 1);
+    EXPECT_GT(row[1].beta, 0.9 * row[0].beta);
+    EXPECT_GT(row[1].beta, 0.05);
+  }
 }
 
 } // namespace
