@@ -74,13 +74,7 @@ TEST_P(ManufacturedTriangleRates, ObservedOrdersAreQuadraticOnFinestPair) {
   const auto [distortion, nonlinear] = GetParam();
   const post::StudyTable table =
       testing::mesh_ladder({1.0 / 8, 1.0 / 16, 1.0 / 32}, [&](Real size) {
-        io::Case case_ =
-            testing::manufactured_case(fem::ElementKind::Q2, size, distortion, nonlinear);
-        case_.mesh.cell = mesh::CellKind::Triangle;
-        case_.element = fem::ElementKind::P2;
-        case_.formulation.type = assembly::FormulationType::Mixed;
-        case_.formulation.pressure = fem::PressureSpace::P1disc;
-        return case_;
+        return testing::simplex_manufactured_case(size, 2, distortion, nonlinear);
       });
   ASSERT_TRUE(table.all_converged());
   const post::StudyRung& finest = table.rungs.back();

@@ -32,6 +32,19 @@ inline io::Case manufactured_case(fem::ElementKind element, Real size, mesh::Dis
   return case_;
 }
 
+/// manufactured_case on simplices (triangles, or tetrahedra with `dimension` 3): P2+ with the
+/// discontinuous linear pressure condensed per cell (mixed, d > 0).
+inline io::Case simplex_manufactured_case(Real size, int dimension, mesh::Distortion distortion,
+                                          bool nonlinear) {
+  io::Case case_ = manufactured_case(fem::ElementKind::Q2, size, distortion, nonlinear);
+  case_.mesh.dimension = dimension;
+  case_.mesh.cell = dimension == 2 ? mesh::CellKind::Triangle : mesh::CellKind::Tetrahedron;
+  case_.element = fem::ElementKind::P2;
+  case_.formulation.type = assembly::FormulationType::Mixed;
+  case_.formulation.pressure = fem::PressureSpace::P1disc;
+  return case_;
+}
+
 /// A study over mesh.size of `make(size)` for each size.
 template <class Make> post::StudyTable mesh_ladder(const std::vector<Real>& sizes, Make make) {
   app::StudyPlan plan;
