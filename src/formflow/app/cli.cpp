@@ -106,9 +106,19 @@ int run_case(const Options& options) {
       else if (solid.section == mesh::ChannelSection::Rectangle)
         mesh_text += fmt::format(" (3D rectangle quarter, half widths {:.6g} → {:.6g})",
                                  solid.entry_half_width, solid.exit_half_width);
+      else if (solid.section == mesh::ChannelSection::Profile)
+        mesh_text += fmt::format(
+            " (3D profile of {} edges through a flat die, {} model, bearing cells {:.6g})",
+            solid.profile.outline.size(),
+            solid.profile.symmetry == mesh::ProfileSymmetry::None ? "whole"
+            : solid.profile.symmetry == mesh::ProfileSymmetry::Y  ? "half"
+                                                                  : "quarter",
+            case_.mesh.bearing_cell());
       else
         mesh_text += " (3D round quarter)";
     }
+    if (case_.mesh.dimension == 3 && mesh::shape_of(case_.mesh.cell) == mesh::CellShape::Simplex)
+      mesh_text += ", tetrahedra";
     fmt::print("formflow {}: {} {} {}, volumetric rule {}x{}, mu = {:.6g}\n", FORMFLOW_VERSION,
                case_.source, fem::element_name(case_.element), mesh_text, case_.volumetric_points,
                case_.volumetric_points, case_.friction.mu);

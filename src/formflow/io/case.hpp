@@ -57,6 +57,9 @@ struct Case {
   physics::ManufacturedSolution manufactured = physics::ManufacturedSolution::None;
 
   std::string source; ///< the case file path, or "<default>" for the embedded benchmark
+  /// geometry.profile_file as written (relative: to the case file's directory); its
+  /// points are read into mesh.solid.profile.outline when the case is loaded.
+  std::string profile_file;
 
   /// Where a key got its value, for errors found after loading (e.g. in the mesh file).
   struct KeyLocation {

@@ -4,6 +4,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_builder.hpp"
 #include "formflow/io/case_validation_3d.hpp"
+#include "formflow/io/case_validation_profile.hpp"
 #include "formflow/io/case_validation_simplex.hpp"
 #include "formflow/io/mesh_memory.hpp"
 #include "formflow/io/problem_shape.hpp"
@@ -57,6 +58,12 @@ constexpr bool anderson_by_default_on_saddle_point_secant = true;
 /// is the element's reduced rule unless set (the complete rule locks Q1,
 /// paper Remark 5.1); an explicit complete rule with Q1 gets a warning.
 void CaseBuilder::resolve_dependent_defaults() {
+  const auto is_set = [this](const std::string& name) { return origin(name).order > 0; };
+  resolve_profile_defaults(case_, is_set);
+  if (!case_.profile_file.empty()) {
+    const Origin where = origin("geometry.profile_file");
+    read_profile_file(case_, where.file, where.line);
+  }
   resolve_cell_defaults(case_, [this](const std::string& name) { return origin(name).order > 0; });
   // Laws of an absolute temperature read the case's temperatures in its unit.
   case_.material.parameters_of<physics::SellarsTegart>().absolute_offset =
@@ -255,9 +262,11 @@ void CaseBuilder::check_cells() const {
 /// What geometry.dimension = 3 cannot run yet, and solid-channel keys set in vain
 /// (io/case_validation_3d.hpp).
 void CaseBuilder::check_solid() const {
-  const auto refusal =
-      solid_case_problem(case_, [this](const std::string& name) { return origin(name).order > 0; });
-  if (refusal) blame(refusal->keys, refusal->message, refusal->hint);
+  const auto is_set = [this](const std::string& name) { return origin(name).order > 0; };
+  if (const auto refusal = solid_case_problem(case_, is_set))
+    blame(refusal->keys, refusal->message, refusal->hint);
+  if (const auto refusal = profile_case_problem(case_, is_set))
+    blame(refusal->keys, refusal->message, refusal->hint);
 }
 
 /// mesh.file is needed by, and only by, mesh.source = "file"; so is mesh.boundaries.

@@ -238,6 +238,16 @@ std::optional<KeyProblem> check_key_value(const CaseKey& key, const KeyValue& va
     return std::nullopt;
   }
   case KeyType::StringList: return check_list(key, std::get<std::vector<std::string>>(value));
+  case KeyType::RealList: {
+    const auto& list = std::get<std::vector<Real>>(value);
+    if (auto problem = check_entry_count(key, list.size())) return problem;
+    for (std::size_t k = 0; k < list.size(); ++k)
+      if (auto problem = check_number(key, list[k], format_key_value(KeyValue{list[k]}))) {
+        if (list.size() > 1) problem->message = fmt::format("entry {}: {}", k, problem->message);
+        return problem;
+      }
+    return std::nullopt;
+  }
   case KeyType::PointList:
     if (auto problem = check_entry_count(key, std::get<KeyPoints>(value).size())) return problem;
     for (const auto& point : std::get<KeyPoints>(value))

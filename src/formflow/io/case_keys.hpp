@@ -19,7 +19,7 @@ namespace formflow::io {
 /// The value types a case key can hold. Real keys also accept TOML integers.
 /// Text is any string (a path); NameMap is a TOML table of strings whose
 /// values are among the key's choices (`[mesh.boundaries]`).
-enum class KeyType { Real, Integer, Enum, StringList, PointList, Text, NameMap };
+enum class KeyType { Real, Integer, Enum, StringList, PointList, Text, NameMap, RealList };
 
 /// Entries of a NameMap key: TOML key → string value.
 using NameMap = std::map<std::string, std::string>;
@@ -27,10 +27,10 @@ using NameMap = std::map<std::string, std::string>;
 /// A key's value as read from the case file, before it is stored in a Case:
 /// Real → double, Integer → std::int64_t, Enum and Text → std::string,
 /// StringList → std::vector<std::string>, PointList → a list of [x, y],
-/// NameMap → NameMap.
+/// NameMap → NameMap, RealList (one number or a list of them) → std::vector<Real>.
 using KeyPoints = std::vector<std::array<Real, 2>>;
-using KeyValue =
-    std::variant<Real, std::int64_t, std::string, std::vector<std::string>, KeyPoints, NameMap>;
+using KeyValue = std::variant<Real, std::int64_t, std::string, std::vector<std::string>, KeyPoints,
+                              NameMap, std::vector<Real>>;
 
 /// A closed or open numeric bound; `std::nullopt` value means unbounded.
 struct Bound {

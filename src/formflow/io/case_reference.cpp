@@ -84,6 +84,12 @@ std::string format_key_value(const KeyValue& value) {
                           format_real(point[1]));
     return list + "]";
   }
+  if (const auto* reals = std::get_if<std::vector<Real>>(&value)) {
+    if (reals->size() == 1) return format_real(reals->front()); // one value for all
+    std::string list = "[";
+    for (const Real entry : *reals) list += (list.size() > 1 ? ", " : "") + format_real(entry);
+    return list + "]";
+  }
   if (const auto* map = std::get_if<NameMap>(&value)) {
     // A TOML inline table; keys quoted, so any physical name is valid.
     std::string table = "{";
@@ -106,6 +112,7 @@ std::string_view key_type_name(KeyType type) {
   case KeyType::PointList: return "list of [x, y]";
   case KeyType::Text: return "string";
   case KeyType::NameMap: return "table of strings";
+  case KeyType::RealList: return "real or list of reals";
   }
   return "?";
 }
@@ -115,6 +122,7 @@ std::string valid_values_text(const CaseKey& key) {
   switch (key.type) {
   case KeyType::Real:
   case KeyType::Integer:
+  case KeyType::RealList:
     if (key.smallest_nonzero && key.upper.value)
       text = fmt::format("0, or {} ≤ value {} {}", *key.smallest_nonzero,
                          key.upper.inclusive ? "≤" : "<", *key.upper.value);
@@ -127,6 +135,7 @@ std::string valid_values_text(const CaseKey& key) {
       text = bound_text(key.upper, false);
     else
       text = "any finite value";
+    if (key.type == KeyType::RealList) text = "one number, or a list of numbers each " + text;
     break;
   case KeyType::Enum: text = "one of " + choices_text(key); break;
   case KeyType::StringList:

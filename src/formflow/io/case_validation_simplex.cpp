@@ -85,7 +85,9 @@ std::optional<KeyRefusal> simplex_scope_problem(const Case& case_) {
 } // namespace
 
 void resolve_cell_defaults(Case& case_, const std::function<bool(const std::string&)>& is_set) {
-  if (!is_set("mesh.cell") && case_.mesh.dimension == 3)
+  // (A profile's tetrahedra are resolved before: io/case_validation_profile.hpp.)
+  if (!is_set("mesh.cell") && case_.mesh.dimension == 3 &&
+      case_.mesh.cell == mesh::CellKind::Quadrilateral)
     case_.mesh.cell = mesh::CellKind::Hexahedron;
   if (mesh::shape_of(case_.mesh.cell) != mesh::CellShape::Simplex) return;
   if (!is_set("mesh.element")) case_.element = ElementKind::P2;

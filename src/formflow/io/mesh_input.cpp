@@ -15,6 +15,7 @@
 #include "formflow/mesh/die_face.hpp"
 #include "formflow/mesh/facet_axis.hpp"
 #include "formflow/mesh/gmsh_meshers.hpp"
+#include "formflow/mesh/gmsh_session.hpp"
 #include "formflow/mesh/gmsh_solid_channel.hpp"
 #endif
 
@@ -188,6 +189,24 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
   }
 #if FORMFLOW_WITH_GMSH
   if (spec.source == mesh::MeshSource::Gmsh) {
+    if (spec.dimension == 3 && spec.solid.section == mesh::ChannelSection::Profile) {
+      mesh::Mesh<3> mesh;
+      try {
+        mesh = mesh::gmsh_meshers().profile_die_mesh(spec.geometry, spec.solid.profile, spec.size,
+                                                     spec.bearing_cell(), order);
+      } catch (const mesh::GmshFailure& failure) {
+        // The outline passed every check: what Gmsh still cannot build is a feature
+        // finer than the cells asked of it (or OpenCASCADE's tolerance).
+        const Case::KeyLocation where = location_of(case_, "geometry.profile", "mesh.size");
+        throw InputError(
+            where.file, where.line, "geometry.profile",
+            fmt::format("Gmsh could not build or mesh the profile's die: {}", failure.what()),
+            "make mesh.size (and mesh.bearing_size) smaller than the outline's "
+            "thinnest leg, or simplify the outline");
+      }
+      if (cells.bubbles) return mesh::with_bubble_nodes(mesh);
+      return mesh;
+    }
     if (spec.dimension == 3) { // slab or square-die rectangle: io/case_validation_3d.cpp
       mesh::Mesh<3> mesh = mesh::gmsh_meshers().solid_channel_mesh(
           spec.geometry, spec.solid, spec.size, order, drawing, mesh::shape_of(spec.cell));

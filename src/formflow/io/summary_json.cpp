@@ -287,6 +287,22 @@ json summary_document(const Case& case_, const post::Results& results) {
         {"free_surface_flux", exit.free_surface_flux},
         {"wall_flux", exit.wall_flux},
         {"area", exit.area}};
+    // A profile: the mean exit speed of each outline edge's part of the section.
+    if (!exit.edges.empty()) {
+      json edges = json::array();
+      for (std::size_t e = 0; e < exit.edges.size(); ++e) {
+        const post::ExitEdge& edge = exit.edges[e];
+        edges.push_back(
+            {{"edge", e},
+             {"from", {edge.from[0], edge.from[1]}},
+             {"to", {edge.to[0], edge.to[1]}},
+             {"bearing_length", edge.bearing_length},
+             {"area", edge.area},
+             {"velocity_mean",
+              std::isfinite(edge.velocity_mean) ? json(edge.velocity_mean) : json(nullptr)}});
+      }
+      out["exit"]["edges"] = std::move(edges);
+    }
   }
   if (results.thermal.enabled) out["thermal"] = thermal_json(results.thermal);
   out["mesh"] = mesh_json(case_, results);

@@ -32,6 +32,7 @@ std::string expected_type_text(const CaseKey& key) {
   case KeyType::PointList: return "a list of [x, y] pairs";
   case KeyType::Text: return "a string";
   case KeyType::NameMap: return "a table of strings";
+  case KeyType::RealList: return "a number or a list of numbers";
   }
   return "?";
 }
@@ -83,6 +84,22 @@ std::optional<KeyValue> convert_toml_value(const CaseKey& key, const toml::value
   case KeyType::Text:
     if (value.is_string()) return KeyValue{value.as_string().str};
     return std::nullopt;
+  case KeyType::RealList: {
+    const auto number = [](const toml::value& entry) -> std::optional<Real> {
+      if (entry.is_floating()) return entry.as_floating();
+      if (entry.is_integer()) return static_cast<Real>(entry.as_integer());
+      return std::nullopt;
+    };
+    if (const auto single = number(value)) return KeyValue{std::vector<Real>{*single}};
+    if (!value.is_array() || value.as_array().empty()) return std::nullopt;
+    std::vector<Real> list;
+    for (const toml::value& entry : value.as_array()) {
+      const auto read = number(entry);
+      if (!read) return std::nullopt;
+      list.push_back(*read);
+    }
+    return KeyValue{std::move(list)};
+  }
   case KeyType::NameMap: {
     if (!value.is_table()) return std::nullopt;
     NameMap map;

@@ -28,6 +28,8 @@ struct GmshMeshers {
                                 const VectorX& node_sizes, int order) = nullptr;
   Mesh<3> (*solid_channel_mesh)(const ChannelGeometry& geometry, const SolidChannel& solid,
                                 Real size, int order, bool drawing, CellShape shape) = nullptr;
+  Mesh<3> (*profile_die_mesh)(const ChannelGeometry& geometry, const ProfileDie& die, Real size,
+                              Real bearing_size, int order) = nullptr;
   Mesh<2> (*read_mesh)(const std::string& path, const std::vector<PhysicalBoundary>& boundaries,
                        int order, CellShape shape) = nullptr;
   Mesh<3> (*read_solid_mesh)(const std::string& path,

@@ -2,6 +2,7 @@
 // The Gmsh module's one exported function (mesh/gmsh_meshers.hpp): its entry points.
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_meshers.hpp"
+#include "formflow/mesh/gmsh_profile_die.hpp"
 #include "formflow/mesh/gmsh_sized_channel.hpp"
 #include "formflow/mesh/gmsh_solid_channel.hpp"
 #include "formflow/mesh/gmsh_solid_mesh.hpp"
@@ -25,6 +26,7 @@ formflow_gmsh_meshers() {
     entries.channel_mesh = &channel_mesh;
     entries.sized_channel_mesh = &mesh::make_sized_gmsh_channel_mesh;
     entries.solid_channel_mesh = &mesh::make_gmsh_solid_channel_mesh;
+    entries.profile_die_mesh = &mesh::make_gmsh_profile_die_mesh;
     entries.read_mesh = &mesh::read_gmsh_mesh;
     entries.read_solid_mesh = &mesh::read_gmsh_solid_mesh;
     return entries;

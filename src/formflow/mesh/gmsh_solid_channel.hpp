@@ -9,12 +9,13 @@
 namespace formflow::mesh {
 
 /// Whether Gmsh builds the solid channel of `solid` with `die` (mesh.source =
-/// "gmsh"): the slab with every die, the rectangle with the square die. The
+/// "gmsh"): the slab with every die, the rectangle with the square die, the profile
+/// (mesh/gmsh_profile_die.hpp, its own builder). The
 /// rectangle's other dies and the round section are not built by Gmsh
 /// (io/case_validation_3d.cpp refuses them by key).
 /// (Inline: the case validation asks it in builds without Gmsh too.)
 inline bool gmsh_builds_solid_channel(const SolidChannel& solid, DieShape die) {
-  return solid.section == ChannelSection::Slab ||
+  return solid.section == ChannelSection::Slab || solid.section == ChannelSection::Profile ||
          (solid.section == ChannelSection::Rectangle && die == DieShape::Square);
 }
 

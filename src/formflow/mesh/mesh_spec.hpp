@@ -26,6 +26,9 @@ struct MeshSpec {
   /// mesh.size: side of the structured cells, Gmsh's target size, the box mesh's
   /// cell side (1/size cells per direction); unused for a file.
   Real size = 1.0;
+  /// mesh.bearing_size: a profile's cells along the bearing (0: size / 2); bearing_cell()
+  Real bearing_size = 0.0;
+  Real bearing_cell() const { return bearing_size > 0 ? bearing_size : 0.5 * size; }
   ChannelGeometry geometry; ///< geometry.*: the die channel (structured and gmsh)
   /// geometry.dimension: 2 (quadrilaterals of the plane channel) or 3 (hexahedra of
   /// the solid channel `solid`).

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/core/types.hpp"
+#include "formflow/mesh/profile_die.hpp"
 
 namespace formflow::mesh {
 
@@ -16,6 +17,9 @@ enum class ChannelSection {
   Rectangle,
   /// A round billet (radius = the half heights) through a square or conical die.
   Round,
+  /// A round billet through a flat die with the opening of a product's outline and its
+  /// bearing, then the free extrudate (mesh/profile_die.hpp); built by Gmsh in tetrahedra.
+  Profile,
 };
 
 /// The geometry.* keys of a solid channel beyond the plane profile (ChannelGeometry,
@@ -25,6 +29,7 @@ struct SolidChannel {
   Real thickness = 1.0;         ///< slab: extent in z
   Real entry_half_width = 10.0; ///< rectangle: half width (z) of the container
   Real exit_half_width = 5.0;   ///< rectangle, round + square die: half width (z) of the product
+  ProfileDie profile;           ///< profile: outline, symmetry, billet, bearing
 };
 
 } // namespace formflow::mesh

@@ -74,6 +74,44 @@ ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& 
   return flow;
 }
 
+std::vector<ExitEdge> profile_exit_edges(const assembly::FormingProblem<3>& problem,
+                                         const VectorX& u, const mesh::ProfileDie& die) {
+  const mesh::Mesh<3>& mesh = problem.discretisation().mesh();
+  fem::FacetValues<3> face(mesh.cell_type(), fem::face_rule<3>(mesh.cell_type()));
+  typename fem::FacetValues<3>::Gradients coordinates(3, mesh.nodes_per_cell());
+  const std::size_t n = die.outline.size();
+  std::vector<ExitEdge> edges(n);
+  std::vector<Real> axial(n, 0.0);
+  for (std::size_t e = 0; e < n; ++e) {
+    edges[e].from = die.outline[e];
+    edges[e].to = die.outline[(e + 1) % n];
+    edges[e].bearing_length = die.bearing(e);
+  }
+  for (const mesh::BoundaryFacet& facet : mesh.facets) {
+    if (facet.label != mesh::BoundaryLabel::Front) continue;
+    for (int a = 0; a < mesh.nodes_per_cell(); ++a)
+      coordinates.col(a) = mesh.nodes.col(mesh.cells(a, facet.cell));
+    face.reinit(coordinates, facet.local_face);
+    for (int q = 0; q < face.n_points(); ++q) {
+      Point<3> at = Point<3>::Zero();
+      Real velocity = 0.0;
+      for (int a = 0; a < mesh.nodes_per_cell(); ++a) {
+        at += face.shape(q)[a] * coordinates.col(a);
+        velocity += face.shape(q)[a] * u[fem::dof_of<3>(mesh.cells(a, facet.cell), 0)];
+      }
+      for (const auto& image : mesh::symmetry_images(die, {at.y(), at.z()})) {
+        const std::size_t e = mesh::nearest_edge(die, image);
+        edges[e].area += face.JxW(q);
+        axial[e] += velocity * face.JxW(q);
+      }
+    }
+  }
+  for (std::size_t e = 0; e < n; ++e)
+    edges[e].velocity_mean =
+        edges[e].area > 0 ? axial[e] / edges[e].area : std::numeric_limits<Real>::quiet_NaN();
+  return edges;
+}
+
 template ExitFlow exit_flow<2>(const assembly::FormingProblem<2>&, const VectorX&);
 template ExitFlow exit_flow<3>(const assembly::FormingProblem<3>&, const VectorX&);
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "formflow/assembly/forming_problem.hpp"
+#include "formflow/mesh/profile_die.hpp"
 #include "formflow/post/results.hpp"
 
 namespace formflow::post {
@@ -14,5 +15,13 @@ namespace formflow::post {
 /// ∫ u_x dA / ∫ dA. `present` is false when the mesh has no exit or no entry facet.
 template <int dim>
 ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& u);
+
+/// The exit section of a profile through a flat die split by nearest outline edge: each
+/// face quadrature point of the "front" facets, with its mirror images under the die's
+/// symmetry (a half or quarter model stands for the whole section), goes to the edge
+/// nearest to it; per edge the mean of u_x over its part. An edge no point is nearest to
+/// (a short one on a coarse mesh) has area 0 and velocity_mean NaN, written as null.
+std::vector<ExitEdge> profile_exit_edges(const assembly::FormingProblem<3>& problem,
+                                         const VectorX& u, const mesh::ProfileDie& die);
 
 } // namespace formflow::post

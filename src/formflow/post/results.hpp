@@ -49,6 +49,15 @@ struct ContactSample {
 /// The flow through the exit section (the "front" facets) against the entry (the "rear"
 /// facets): what extrusion engineers read (post/exit_flow.hpp). In axisymmetry the
 /// integrals are per radian, like every other one.
+/// One edge of a profile's outline at the exit: the mean axial velocity over the part of
+/// the exit section nearer to this edge than to any other (its leg, in a profile of legs).
+struct ExitEdge {
+  std::array<Real, 2> from{}, to{}; ///< the edge's ends (y, z)
+  Real bearing_length = 0.0;        ///< its bearing
+  Real area = 0.0;                  ///< the exit section nearest to it (whole section)
+  Real velocity_mean = 0.0;         ///< ∫ u_x dA / ∫ dA over that part
+};
+
 struct ExitFlow {
   bool present = false; ///< the mesh has both an exit and an entry section
   /// Axial velocity u_x over the exit: the smallest and largest at the exit's nodes, and
@@ -66,6 +75,9 @@ struct ExitFlow {
   /// Plane and axisymmetric runs: (y, u_x) at the exit's nodes, y ascending, each node
   /// once (the exit_velocity picture). Empty in 3D.
   std::vector<std::array<Real, 2>> profile;
+  /// A profile's outline edges in order (post/exit_flow.hpp profile_exit_edges); empty
+  /// for the other channels.
+  std::vector<ExitEdge> edges;
 };
 
 /// Stick and slip zones of one contact part, measured with the Γ3 quadrature weights

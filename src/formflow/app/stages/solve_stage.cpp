@@ -2,6 +2,7 @@
 // The solve stage: the forming problem on the mesh, the loop inside, the results after.
 #include "formflow/app/stages/stage.hpp"
 
+#include "formflow/post/exit_flow.hpp"
 #include "formflow/post/post_process.hpp"
 
 #include <memory>
@@ -49,6 +50,10 @@ public:
                                  : 0.0;
     post::evaluate_results(*state.problem, outcome.velocity, results, &state.multipliers,
                            stick_speed);
+    if constexpr (dim == 3)
+      if (results.exit.present && plan.mesh.solid.section == mesh::ChannelSection::Profile)
+        results.exit.edges =
+            post::profile_exit_edges(*state.problem, outcome.velocity, plan.mesh.solid.profile);
     if (results.thermal.enabled) results.fields.temperature = results.thermal.temperature;
     if (state.estimate_condition)
       state.simulation->reciprocal_condition = condition_at(*state.problem, outcome.velocity);

@@ -44,14 +44,69 @@ KeySpec section_key() {
              "geometry.section", "slab",
              {{"slab", ChannelSection::Slab},
               {"rectangle", ChannelSection::Rectangle},
-              {"round", ChannelSection::Round}},
+              {"round", ChannelSection::Round},
+              {"profile", ChannelSection::Profile}},
              [](auto& c) -> auto& { return c.mesh.solid.section; })
       .constraint("only with geometry.dimension = 3")
       .doc("solid channel (quarter model, symmetry planes y = 0 and z = 0): slab (the plane "
            "channel extruded over geometry.thickness, u_z = 0 on both z faces: plane strain in "
            "3D), rectangle (half widths in z), round (a round billet, radius = the half heights; "
            "with geometry.die = \"square\" the product is the rectangle exit_half_height × "
-           "exit_half_width)");
+           "exit_half_width), or profile (a round billet of geometry.billet_radius through a "
+           "flat die whose opening is the outline geometry.profile, with its bearing and the "
+           "free extrudate; built by Gmsh in tetrahedra; docs/profiles.md)");
+}
+
+/// An outline of a few thousand points follows any profile to well below a cell; a
+/// longer one belongs in geometry.profile_file.
+constexpr std::size_t max_profile_points = 2000;
+
+KeySpec profile_key() {
+  KeySpec spec("geometry.profile", KeyType::PointList, KeyPoints{});
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.mesh.solid.profile.outline = std::get<KeyPoints>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh.solid.profile.outline; };
+  return spec.unit("length")
+      .at_most_entries(max_profile_points)
+      .why("an outline needs few points; toml11 parses long lists slowly (use "
+           "geometry.profile_file)")
+      .constraint("geometry.section = \"profile\": a closed polygon (not repeating its first "
+                  "point) that does not cross or touch itself, inside geometry.billet_radius; "
+                  "symmetric about the planes of geometry.profile_symmetry")
+      .doc("the product's cross-section as [y, z] points, either way round; edge k runs from "
+           "point k to point k + 1 (the last edge back to point 0)");
+}
+
+KeySpec profile_file_key() {
+  KeySpec spec("geometry.profile_file", KeyType::Text, std::string());
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.profile_file = std::get<std::string>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.profile_file; };
+  return spec
+      .constraint("geometry.section = \"profile\", instead of geometry.profile; at most 100 000 "
+                  "points and 8 MB")
+      .doc("a CSV of the outline, one `y, z` per line (a header line, blank lines and `#` "
+           "comments allowed); a relative path is taken from the case file's directory");
+}
+
+KeySpec bearing_length_key() {
+  KeySpec spec("geometry.bearing_length", KeyType::RealList, std::vector<Real>{1.0});
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.mesh.solid.profile.bearing_length = std::get<std::vector<Real>>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue {
+    return case_.mesh.solid.profile.bearing_length;
+  };
+  return spec.within(1e-6, 1e6)
+      .why(length_range)
+      .at_most_entries(100000)
+      .unit("length")
+      .constraint("geometry.section = \"profile\": one value, or one per outline edge; each at "
+                  "least a bearing cell (mesh.bearing_size)")
+      .doc("the bearing: the die's wall along each outline edge, from the die face x = L_c to "
+           "L_c + its length; the free extrudate follows");
 }
 
 } // namespace
@@ -156,6 +211,28 @@ std::vector<CaseKey> geometry_keys() {
           .unit("length")
           .doc("rectangle, and round with the square die: half width (in z) of the product "
                "after the die"),
+      profile_key(),
+      profile_file_key(),
+      enum_key(
+          "geometry.profile_symmetry", "none",
+          {{"none", mesh::ProfileSymmetry::None},
+           {"y", mesh::ProfileSymmetry::Y},
+           {"yz", mesh::ProfileSymmetry::YZ}},
+          [](auto& c) -> auto& { return c.mesh.solid.profile.symmetry; })
+          .constraint("geometry.section = \"profile\"; the outline symmetric about the planes")
+          .doc("planes of symmetry of the profile: none (the whole die), y (the plane y = 0: "
+               "the half y ≥ 0 is modelled) or yz (y = 0 and z = 0: the quarter y, z ≥ 0); the "
+               "outline is given whole"),
+      real_key(
+          "geometry.billet_radius", 10.0,
+          [](auto& c) -> auto& { return c.mesh.solid.profile.billet_radius; })
+          .within(1e-6, 1e6)
+          .why(length_range)
+          .constraint("geometry.section = \"profile\"; every outline point inside it")
+          .unit("length")
+          .doc("profile: radius of the round billet (and container) x ∈ [0, L_c]; pressures are "
+               "forces over its area"),
+      bearing_length_key(),
       enum_key(
           "geometry.symmetry", "plane",
           {{"plane", physics::Symmetry::Plane}, {"axisymmetric", physics::Symmetry::Axisymmetric}},

@@ -70,6 +70,15 @@ std::vector<CaseKey> mesh_keys() {
           .unit("length")
           .doc("side of the uniform square cells (mesh I: 10/6, mesh II: 1); the target "
                "element size for mesh.source = \"gmsh\"; unused for \"file\""),
+      real_key(
+          "mesh.bearing_size", 0.0, [](auto& c) -> auto& { return c.mesh.bearing_size; })
+          .zero_or_at_least(1e-6)
+          .at_most(1e6)
+          .why(length_range)
+          .constraint("geometry.section = \"profile\"; ≤ mesh.size")
+          .unit("length")
+          .doc("profile: the cell size along the bearing walls, growing to mesh.size at "
+               "4 mesh.size from them; 0 = mesh.size / 2"),
       enum_key(
           "mesh.source", "structured",
           {{"structured", mesh::MeshSource::Structured},
@@ -78,7 +87,8 @@ std::vector<CaseKey> mesh_keys() {
           [](auto& c) -> auto& { return c.mesh.source; })
           .doc("structured: uniform square cells; gmsh: the same geometry meshed by Gmsh with "
                "recombined quadrilaterals of size mesh.size (in 3D: extruded into hexahedra); "
-               "file: the mesh in mesh.file (quadrilaterals, or hexahedra in 3D)"),
+               "file: the mesh in mesh.file (quadrilaterals, or hexahedra in 3D); "
+               "geometry.section = \"profile\" is always built by Gmsh (unset: gmsh)"),
       mesh_file_key(),
       mesh_boundaries_key(),
   };

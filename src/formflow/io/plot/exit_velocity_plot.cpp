@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // exit_velocity.png/.svg: the axial velocity across the exit section, against its mean.
+#include "formflow/io/plot/mesh_drawing.hpp"
 #include "formflow/io/plot/pictures.hpp"
 
 #include <fmt/format.h>
@@ -64,6 +65,46 @@ void draw_exit_velocity(const Canvas& canvas, const PictureData& data) {
               fmt::format("nonuniformity (max − min)/mean = {:.3g}    flux balance = {:+.3g}",
                           exit.nonuniformity, exit.flux_balance),
               Font{12.0, false, {0.15, 0.15, 0.15}}, HAlign::Left, VAlign::Bottom);
+}
+
+void draw_exit_section(const Canvas& canvas, const PictureData& data) {
+  const post::ExitFlow& exit = data.results.exit;
+  draw_title(canvas, "Axial velocity over the exit section",
+             exit.present ? fmt::format("{}; mean {:.5g}, nonuniformity {:.3g}",
+                                        run_description(data.case_, data.results),
+                                        exit.velocity_mean, exit.nonuniformity)
+                          : run_description(data.case_, data.results));
+  FieldLayout layout = field_layout(data);
+  Axis horizontal = layout.axes.x_axis();
+  horizontal.label = "y";
+  layout.axes = Axes(layout.axes.area(), horizontal, layout.axes.y_axis());
+  const VectorX* axial = data.axial_velocity;
+  if (!exit.present || data.mesh.n_cells() == 0 || !axial || axial->size() != data.mesh.n_nodes()) {
+    draw_no_data(canvas, layout.axes.area(), "no exit section (no \"front\" facets)");
+    return;
+  }
+  const double low = axial->minCoeff(), high = axial->maxCoeff();
+  // A uniform exit still gets a readable bar: one band around its speed.
+  const double spread = high > low ? 0.0 : std::max(1e-12, std::abs(high) * 1e-3);
+  const ColourScale scale =
+      ColourScale::linear(low - spread, high + spread, 10, Palette::Sequential);
+  fill_field_bands(canvas, layout.axes, data.mesh, *axial, scale);
+  draw_cell_edges(canvas, layout.axes, data.mesh, {0.5, {1, 1, 1}, 0.3});
+  draw_boundary(canvas, layout.axes, data.mesh);
+  // A profile: each outline edge's mean speed at its midpoint (the model's part of it).
+  const Rect& area = layout.axes.area();
+  const Font label{10.0, false, {0.1, 0.1, 0.1}};
+  for (const post::ExitEdge& edge : exit.edges) {
+    if (!std::isfinite(edge.velocity_mean)) continue;
+    const double y = 0.5 * (edge.from[0] + edge.to[0]), z = 0.5 * (edge.from[1] + edge.to[1]);
+    const Pixel at = layout.axes.at(y, z);
+    if (at[0] < area.x || at[0] > area.right() || at[1] < area.y || at[1] > area.bottom())
+      continue; // an edge of the mirrored part of the section
+    canvas.text(at, fmt::format("{:.4g}", edge.velocity_mean), label, HAlign::Centre,
+                VAlign::Middle);
+  }
+  layout.axes.draw_spines(canvas, 8.0);
+  draw_colour_bar(canvas, layout.colour_bar, scale, "axial velocity u_{x}");
 }
 
 } // namespace formflow::io::plot

@@ -26,6 +26,8 @@ struct PictureData {
   /// The label of the vertical axis of a field picture: "y" in the plane, "z" on a
   /// solid's y = 0 section (io/plot/solid_pictures.hpp).
   std::string vertical_axis = "y";
+  /// A solid's exit section (draw_exit_section): u_x at the section's nodes.
+  const VectorX* axial_velocity = nullptr;
 };
 
 /// A rendered picture: file stem ("strain_rate") and the PNG and SVG file contents.
@@ -56,6 +58,9 @@ void draw_contact(const Canvas& canvas, const PictureData& data);
 void draw_convergence(const Canvas& canvas, const PictureData& data);
 /// The axial velocity across the exit section against its mean (io/plot/exit_velocity_plot.cpp).
 void draw_exit_velocity(const Canvas& canvas, const PictureData& data);
+/// A solid's exit section (data.mesh in (y, z)) filled by the axial velocity
+/// data.axial_velocity, with the profile's outline and its edges' mean speeds.
+void draw_exit_section(const Canvas& canvas, const PictureData& data);
 
 /// The stems of the pictures render_pictures draws, in its order:
 /// strain_rate, velocity, pressure, contact, convergence, load_error.

@@ -27,7 +27,8 @@ Pixel unrolled(const Case& case_, const post::ContactSample& sample) {
   if (solid.section == mesh::ChannelSection::Slab) return {sample.x + (h_in - sample.y), sample.z};
   const Real theta = std::atan2(sample.z, sample.y);
   const Real distance = std::hypot(sample.y, sample.z);
-  Real wall = h_in; // the round billet's radius
+  // The round billet's radius (a profile's billet has its own key).
+  Real wall = solid.section == mesh::ChannelSection::Profile ? solid.profile.billet_radius : h_in;
   if (solid.section == mesh::ChannelSection::Rectangle) {
     // Along the ray at θ the container's outline is at min(H/cos θ, W/sin θ).
     const Real c = std::cos(theta), s = std::sin(theta);
@@ -169,9 +170,9 @@ void contact_panel(const Canvas& canvas, const Rect& area, const PictureData& da
 } // namespace
 
 std::span<const std::string> solid_picture_names() {
-  static const std::vector<std::string> names = {"strain_rate_z0",  "pressure_z0",
-                                                 "strain_rate_y0",  "pressure_y0",
-                                                 "contact_surface", "convergence"};
+  static const std::vector<std::string> names = {
+      "strain_rate_z0",  "pressure_z0", "strain_rate_y0", "pressure_y0",
+      "contact_surface", "convergence", "exit_velocity"};
   return names;
 }
 
@@ -199,16 +200,37 @@ std::vector<Picture> render_solid_pictures(const Case& case_, const mesh::Mesh<3
   const PlaneSection z0 = symmetry_section(mesh, 2), y0 = symmetry_section(mesh, 1);
   const post::Results on_z0 = section_results(results, z0), on_y0 = section_results(results, y0);
   const PictureData z0_data{case_, z0.mesh, on_z0, "y"}, y0_data{case_, y0.mesh, on_y0, "z"};
+  // The exit: the "front" facets on the plane x = x_end, in (y, z).
+  Real x_end = -INFINITY;
+  for (const mesh::BoundaryFacet& facet : mesh.facets)
+    if (facet.label == mesh::BoundaryLabel::Front)
+      for (const int local : mesh.face_nodes(facet.local_face))
+        x_end = std::max(x_end, mesh.nodes(0, mesh.cells(local, facet.cell)));
+  const PlaneSection exit = std::isfinite(x_end)
+                                ? boundary_section(mesh, mesh::BoundaryLabel::Front, 0, x_end)
+                                : PlaneSection{};
+  const post::Results on_exit = section_results(results, exit);
+  VectorX axial(static_cast<Index>(exit.solid_node.size()));
+  if (results.fields.velocity.size() == 3 * results.n_nodes)
+    for (std::size_t k = 0; k < exit.solid_node.size(); ++k)
+      axial[static_cast<Index>(k)] = results.fields.velocity[3 * exit.solid_node[k]];
+  else
+    axial.resize(0);
+  PictureData exit_data{case_, exit.mesh, on_exit, "z"};
+  exit_data.axial_velocity = &axial;
   using DrawPicture = void (*)(const Canvas&, const PictureData&);
   struct Drawing {
     DrawPicture draw;
     const PictureData* data;
     const char* note; // which plane a section shows, in the corner
   };
-  const Drawing drawings[] = {
-      {draw_strain_rate, &z0_data, "section z = 0"}, {draw_pressure, &z0_data, "section z = 0"},
-      {draw_strain_rate, &y0_data, "section y = 0"}, {draw_pressure, &y0_data, "section y = 0"},
-      {draw_contact_surface, &z0_data, ""},          {draw_convergence, &z0_data, ""}};
+  const Drawing drawings[] = {{draw_strain_rate, &z0_data, "section z = 0"},
+                              {draw_pressure, &z0_data, "section z = 0"},
+                              {draw_strain_rate, &y0_data, "section y = 0"},
+                              {draw_pressure, &y0_data, "section y = 0"},
+                              {draw_contact_surface, &z0_data, ""},
+                              {draw_convergence, &z0_data, ""},
+                              {draw_exit_section, &exit_data, ""}};
   const std::span<const std::string> names = solid_picture_names();
   FF_ASSERT(names.size() == std::size(drawings), "one name per picture");
   std::vector<PictureJob> jobs;

@@ -55,8 +55,15 @@ std::vector<Index> sorted(std::vector<Index> nodes) {
 
 PlaneSection symmetry_section(const mesh::Mesh<3>& solid, int normal_axis) {
   FF_ASSERT(normal_axis == 1 || normal_axis == 2, "a symmetry plane y = 0 or z = 0");
+  return boundary_section(solid, mesh::BoundaryLabel::Symmetry, normal_axis, 0.0);
+}
+
+PlaneSection boundary_section(const mesh::Mesh<3>& solid, mesh::BoundaryLabel part, int normal_axis,
+                              Real plane_at) {
   PlaneSection section;
-  section.in_plane = {0, normal_axis == 2 ? 1 : 2};
+  section.in_plane = normal_axis == 0   ? std::array<int, 2>{1, 2}
+                     : normal_axis == 1 ? std::array<int, 2>{0, 2}
+                                        : std::array<int, 2>{0, 1};
   mesh::Mesh<2>& plane = section.mesh;
   plane.order = solid.order;
   // A tetrahedron's face is a triangle of its order; a P2+ face also has its centroid node.
@@ -70,13 +77,11 @@ PlaneSection symmetry_section(const mesh::Mesh<3>& solid, int normal_axis) {
   std::vector<std::vector<Index>> cells; // plane node numbers
   std::vector<Index> solid_cell;
   for (const mesh::BoundaryFacet& facet : solid.facets) {
-    if (facet.label != mesh::BoundaryLabel::Symmetry ||
-        mesh::facet_normal_axis(solid, facet) != normal_axis)
-      continue;
+    if (facet.label != part || mesh::facet_normal_axis(solid, facet) != normal_axis) continue;
     const std::vector<int> locals = solid.face_nodes(facet.local_face);
-    if (std::abs(solid.nodes(normal_axis, solid.cells(locals.front(), facet.cell))) >
+    if (std::abs(solid.nodes(normal_axis, solid.cells(locals.front(), facet.cell)) - plane_at) >
         1e-12 * extent)
-      continue; // the slab's far z face: a symmetry plane, but not the one through 0
+      continue; // e.g. the slab's far z face: a symmetry plane, but not the one asked
     std::vector<Index> cell;
     for (int local : locals) {
       const Index node = solid.cells(local, facet.cell);
@@ -130,8 +135,8 @@ PlaneSection symmetry_section(const mesh::Mesh<3>& solid, int normal_axis) {
         const bool holds = std::all_of(solid_nodes.begin(), solid_nodes.end(), [&](Index node) {
           return std::binary_search(face.begin(), face.end(), node);
         });
-        const bool own_face = facet.label == mesh::BoundaryLabel::Symmetry &&
-                              mesh::facet_normal_axis(solid, facet) == normal_axis;
+        const bool own_face =
+            facet.label == part && mesh::facet_normal_axis(solid, facet) == normal_axis;
         if (holds && !own_face) label = facet.label;
       }
       plane.facets.push_back(

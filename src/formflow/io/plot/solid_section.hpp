@@ -25,6 +25,11 @@ struct PlaneSection {
 /// lies on that plane.
 PlaneSection symmetry_section(const mesh::Mesh<3>& solid, int normal_axis);
 
+/// The same for the facets of `part` on the plane {x_normal_axis = plane_at} (e.g. the
+/// exit: "front" on x = x_end, drawn in (y, z)); in_plane is the other two axes in order.
+PlaneSection boundary_section(const mesh::Mesh<3>& solid, mesh::BoundaryLabel part, int normal_axis,
+                              Real plane_at);
+
 /// `results` with its nodal fields restricted to the section's nodes: velocity the
 /// two in-plane components, cell fields dropped (they belong to solid cells).
 post::Results section_results(const post::Results& results, const PlaneSection& section);
