@@ -87,10 +87,18 @@ coarse_start(const RunPlan& plan, const assembly::Discretisation<dim>& fine, Pha
   if (plan.mesh.source == mesh::MeshSource::File) return std::nullopt;
   // As many of the asked levels as the geometry admits (2^L h must divide its lengths).
   int levels = 0;
-  while (levels < plan.solver.coarse_levels &&
-         (plan.mesh.source != mesh::MeshSource::Structured ||
-          size_fits(plan.mesh, plan.mesh.size * std::ldexp(1.0, levels + 1))))
-    ++levels;
+  // A profile's coarse level must still tell each bearing's end: its bearing cells, as
+  // coarse as its cells, no longer than the shortest bearing (the case's own rule).
+  const bool profile =
+      plan.mesh.dimension == 3 && plan.mesh.solid.section == mesh::ChannelSection::Profile;
+  const auto level_fits = [&](int level) {
+    const Real factor = std::ldexp(1.0, level);
+    if (profile)
+      return factor * plan.mesh.bearing_cell() <= plan.mesh.solid.profile.shortest_bearing();
+    return plan.mesh.source != mesh::MeshSource::Structured ||
+           size_fits(plan.mesh, plan.mesh.size * factor);
+  };
+  while (levels < plan.solver.coarse_levels && level_fits(levels + 1)) ++levels;
   if (levels == 0) return std::nullopt;
   CoarseStart start;
   const SolvePlan& solve = plan.solve;
@@ -110,6 +118,7 @@ coarse_start(const RunPlan& plan, const assembly::Discretisation<dim>& fine, Pha
   for (int level = levels; level >= 1; --level) {
     mesh::MeshSpec spec = plan.mesh;
     spec.size = plan.mesh.size * std::ldexp(1.0, level);
+    spec.bearing_size = plan.mesh.bearing_size * std::ldexp(1.0, level); // 0 stays size / 2
     mesh::Mesh<dim> mesh;
     std::unique_ptr<assembly::FormingProblem<dim>> problem;
     std::unique_ptr<assembly::ConstraintMultipliers<dim>> mixed_pressure;

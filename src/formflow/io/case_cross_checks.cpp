@@ -272,16 +272,36 @@ void CaseBuilder::check_solid() const {
 /// mesh.file is needed by, and only by, mesh.source = "file"; so is mesh.boundaries.
 void CaseBuilder::check_mesh_source() const {
   const bool from_file = case_.mesh.source == mesh::MeshSource::File;
+  const bool from_cad = case_.mesh.source == mesh::MeshSource::Cad;
   if (from_file && case_.mesh.file.empty()) {
     const Origin where = origin("mesh.source");
     throw InputError(where.file, where.line, "mesh.source",
                      "value \"file\" needs mesh.file, which is not set",
                      "e.g. file = \"meshes/die.msh\" in [mesh]");
   }
-  for (const std::string name : {"mesh.file", "mesh.boundaries"}) {
-    const bool set =
-        name == "mesh.file" ? !case_.mesh.file.empty() : !case_.mesh.boundaries.empty();
-    if (from_file || !set) continue;
+  // (An empty mesh.boundaries is left for the reading, whose message lists the solid's
+  // boundary surfaces by tag and centre: how a user finds them.)
+  if (from_cad && case_.mesh.cad_file.empty()) {
+    const Origin where = origin("mesh.source");
+    throw InputError(where.file, where.line, "mesh.source",
+                     "value \"cad\" needs mesh.cad_file, which is not set",
+                     "e.g. cad_file = \"die.step\" in [mesh]");
+  }
+  if (from_cad && case_.mesh.dimension != 3)
+    blame({"mesh.source", "geometry.dimension"}, "a CAD solid is three-dimensional",
+          "set geometry.dimension = 3");
+  if (from_cad && case_.mesh.cell != mesh::CellKind::Tetrahedron)
+    blame({"mesh.cell", "mesh.source"},
+          "Gmsh meshes a CAD solid in tetrahedra (no hexahedral mesher serves any solid)",
+          "leave mesh.cell out (or set it to \"tetrahedron\")");
+  for (const std::string name : {"mesh.file", "mesh.boundaries", "mesh.cad_file"}) {
+    const bool set = name == "mesh.file"       ? !case_.mesh.file.empty()
+                     : name == "mesh.cad_file" ? !case_.mesh.cad_file.empty()
+                                               : !case_.mesh.boundaries.empty();
+    const bool read = name == "mesh.file"       ? from_file
+                      : name == "mesh.cad_file" ? from_cad
+                                                : from_file || from_cad;
+    if (read || !set) continue;
     const Origin where = origin(name);
     throw InputError(where.file, where.line, name,
                      fmt::format("is set but mesh.source = {} does not read a file",

@@ -12,6 +12,7 @@
 #include "formflow/mesh/solid_channel_mesh.hpp"
 #include "formflow/mesh/tetrahedral_split.hpp"
 #if FORMFLOW_WITH_GMSH
+#include "formflow/mesh/cad_file.hpp"
 #include "formflow/mesh/die_face.hpp"
 #include "formflow/mesh/facet_axis.hpp"
 #include "formflow/mesh/gmsh_meshers.hpp"
@@ -38,10 +39,12 @@ Case::KeyLocation location_of(const Case& case_, const std::string& name,
   return {case_.source, 0};
 }
 
-/// mesh.file as Gmsh should open it: relative paths start at the case file's directory.
-std::string resolved_mesh_path(const Case& case_, const mesh::MeshSpec& spec) {
-  const std::filesystem::path path(spec.file);
-  const std::string set_in = location_of(case_, "mesh.file").file;
+/// mesh.file (or `key`'s path) as Gmsh should open it: relative paths start at the case
+/// file's directory.
+std::string resolved_mesh_path(const Case& case_, const mesh::MeshSpec& spec,
+                               const std::string& key = "mesh.file") {
+  const std::filesystem::path path(key == "mesh.file" ? spec.file : spec.cad_file);
+  const std::string set_in = location_of(case_, key).file;
   if (path.is_absolute() || set_in == "--set" || set_in == "<default>") return path.string();
   return (std::filesystem::path(set_in).parent_path() / path).string();
 }
@@ -94,6 +97,35 @@ std::vector<mesh::PhysicalBoundary> boundary_map(const mesh::MeshSpec& spec) {
   for (const auto& [name, part] : spec.boundaries)
     map.push_back({name, *mesh::label_from_name(part)}); // validated by the key table
   return map;
+}
+
+/// The tetrahedra of mesh.cad_file's solid: the file checked as data first, then read by
+/// OpenCASCADE and meshed by Gmsh; what is wrong with it blames the key to change.
+mesh::Mesh<3> read_cad_solid(const Case& case_, const mesh::MeshSpec& spec) {
+  using Subject = mesh::MeshFileError::Subject;
+  const std::string path = resolved_mesh_path(case_, spec, "mesh.cad_file");
+  const Case::KeyLocation file_at = location_of(case_, "mesh.cad_file");
+  const mesh::CadFileCheck check = mesh::check_cad_file(path);
+  if (!check.format)
+    throw InputError(file_at.file, file_at.line, "mesh.cad_file", check.problem, check.hint);
+  try {
+    return mesh::gmsh_meshers().cad_mesh(path, *check.format, boundary_map(spec), spec.size,
+                                         fem::element_order(case_.element));
+  } catch (const mesh::MeshFileError& error) {
+    std::string key = "mesh.cad_file";
+    if (error.subject == Subject::Boundaries) key = "mesh.boundaries";
+    if (error.subject == Subject::Group) key = "mesh.boundaries." + error.group;
+    const Case::KeyLocation where =
+        location_of(case_, key, key == "mesh.cad_file" ? "mesh.cad_file" : "mesh.boundaries");
+    throw InputError(where.file, where.line, key,
+                     fmt::format("{}: {}", spec.cad_file, error.message), error.hint);
+  } catch (const mesh::GmshFailure& failure) {
+    throw InputError(file_at.file, file_at.line, "mesh.cad_file",
+                     fmt::format("{}: OpenCASCADE or Gmsh could not read or mesh it: {}",
+                                 spec.cad_file, failure.what()),
+                     "check the solid is closed and valid in the CAD program; a smaller "
+                     "mesh.size resolves thin features");
+  }
 }
 
 /// The file's cells: quadrilaterals for geometry.dimension = 2, hexahedra for 3.
@@ -230,6 +262,7 @@ mesh::AnyMesh load_mesh(const Case& case_, const mesh::MeshSpec& spec) {
   const auto enriched = [&](auto read) {
     return cells.bubbles ? mesh::with_bubble_nodes(read) : read;
   };
+  if (spec.source == mesh::MeshSource::Cad) return checked(enriched(read_cad_solid(case_, spec)));
   if (spec.dimension == 3) return checked(enriched(read_mesh_file<3>(case_, spec)));
   return checked(enriched(read_mesh_file<2>(case_, spec)));
 #else

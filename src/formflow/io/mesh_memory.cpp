@@ -84,7 +84,8 @@ std::optional<MeshMemoryEstimate> estimate_mesh_memory(const Case& case_, Real s
   Real cells = 0.0;
   if (is_manufactured(case_))
     cells = std::pow(1.0 / size, case_.mesh.dimension); // the unit square or cube
-  else if (case_.mesh.source == mesh::MeshSource::File)
+  else if (case_.mesh.source == mesh::MeshSource::File ||
+           case_.mesh.source == mesh::MeshSource::Cad) // Gmsh decides the cells of a CAD solid
     return std::nullopt;
   else
     cells = case_.mesh.dimension == 3

@@ -2,9 +2,11 @@
 // Gmsh's meshers, loaded on first use from formflow's Gmsh module.
 #pragma once
 
+#include "formflow/mesh/cad_file.hpp"
 #include "formflow/mesh/channel_mesh.hpp"
 #include "formflow/mesh/gmsh_mesh.hpp"
 #include "formflow/mesh/mesh.hpp"
+#include "formflow/mesh/profile_die.hpp"
 #include "formflow/mesh/solid_channel.hpp"
 
 #include <cstddef>
@@ -30,6 +32,9 @@ struct GmshMeshers {
                                 Real size, int order, bool drawing, CellShape shape) = nullptr;
   Mesh<3> (*profile_die_mesh)(const ChannelGeometry& geometry, const ProfileDie& die, Real size,
                               Real bearing_size, int order) = nullptr;
+  Mesh<3> (*cad_mesh)(const std::string& path, CadFormat format,
+                      const std::vector<PhysicalBoundary>& boundaries, Real size,
+                      int order) = nullptr;
   Mesh<2> (*read_mesh)(const std::string& path, const std::vector<PhysicalBoundary>& boundaries,
                        int order, CellShape shape) = nullptr;
   Mesh<3> (*read_solid_mesh)(const std::string& path,

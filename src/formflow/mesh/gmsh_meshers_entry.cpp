@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The Gmsh module's one exported function (mesh/gmsh_meshers.hpp): its entry points.
+#include "formflow/mesh/gmsh_cad_die.hpp"
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_meshers.hpp"
 #include "formflow/mesh/gmsh_profile_die.hpp"
@@ -27,6 +28,7 @@ formflow_gmsh_meshers() {
     entries.sized_channel_mesh = &mesh::make_sized_gmsh_channel_mesh;
     entries.solid_channel_mesh = &mesh::make_gmsh_solid_channel_mesh;
     entries.profile_die_mesh = &mesh::make_gmsh_profile_die_mesh;
+    entries.cad_mesh = &mesh::make_gmsh_cad_mesh;
     entries.read_mesh = &mesh::read_gmsh_mesh;
     entries.read_solid_mesh = &mesh::read_gmsh_solid_mesh;
     return entries;

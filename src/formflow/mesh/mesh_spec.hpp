@@ -33,8 +33,9 @@ struct MeshSpec {
   /// geometry.dimension: 2 (quadrilaterals of the plane channel) or 3 (hexahedra of
   /// the solid channel `solid`).
   int dimension = 2;
-  SolidChannel solid; ///< geometry.section, .thickness, .*_half_width: used when dimension = 3
-  std::string file;   ///< mesh.file: .msh path as written (relative: to the case file's directory)
+  SolidChannel solid;   ///< geometry.section, .thickness, .*_half_width: used when dimension = 3
+  std::string cad_file; ///< mesh.cad_file: STEP/BREP path as written (relative: to the case's)
+  std::string file; ///< mesh.file: .msh path as written (relative: to the case file's directory)
   /// mesh.boundaries: physical group name in `file` → boundary part name
   /// (mesh::label_name); empty: the physical names are the part names themselves.
   std::map<std::string, std::string> boundaries;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -73,13 +74,25 @@ std::size_t nearest_edge(const ProfileDie& die, const Point2& point) {
     const Point2& b = die.outline[(e + 1) % n];
     return std::abs(cross(a, b, point)) / std::hypot(b[0] - a[0], b[1] - a[1]);
   };
+  // On the bisector of a corner even the lines tie; the edge more nearly along y then wins
+  // (|Δy| is the same for an edge and its mirror in y = 0 or z = 0).
+  const auto along_y = [&](std::size_t e) {
+    const Point2& a = die.outline[e];
+    const Point2& b = die.outline[(e + 1) % n];
+    return std::abs(b[0] - a[0]) / std::hypot(b[0] - a[0], b[1] - a[1]);
+  };
   std::size_t best = 0;
   Real best_distance = std::numeric_limits<Real>::infinity();
   const Real tie = 1e-12 * std::max(die.billet_radius, std::hypot(point[0], point[1]));
   for (std::size_t e = 0; e < n; ++e) {
     const Real distance = distance_to_edge(die, e, point);
-    if (distance < best_distance - tie ||
-        (distance <= best_distance + tie && line_distance(e) > line_distance(best) + tie)) {
+    bool better = distance < best_distance - tie;
+    if (!better && distance <= best_distance + tie) {
+      const Real line = line_distance(e), best_line = line_distance(best);
+      better =
+          line > best_line + tie || (line >= best_line - tie && along_y(e) > along_y(best) + 1e-12);
+    }
+    if (better) {
       best = e;
       best_distance = std::min(distance, best_distance);
     }
@@ -206,7 +219,9 @@ ProfileFileRead read_profile_csv(const std::string& text, std::size_t max_points
     std::string rest;
     const bool numbers = static_cast<bool>(fields >> point[0] >> point[1]);
     if (!numbers || (fields >> rest)) {
-      if (header_allowed && !numbers) {
+      // A header names its columns: it starts with a letter (a number never does).
+      const std::size_t first = line.find_first_not_of(" \t");
+      if (header_allowed && !numbers && std::isalpha(static_cast<unsigned char>(line[first]))) {
         header_allowed = false;
         continue;
       }

@@ -324,6 +324,15 @@ TEST_F(CaseFile, JsonRoundTripsEveryKey) {
       {"geometry.thickness", "1.0"},
       {"geometry.entry_half_width", "10.0"},
       {"geometry.exit_half_width", "5.0"},
+      // The profile's keys at their defaults too (a profile is 3D; its keys' checks:
+      // tests/gmsh/test_profile_die_cli.cpp); bearing_length is a list in JSON.
+      {"geometry.profile", "[]"},
+      {"geometry.profile_file", "\"\""},
+      {"geometry.profile_symmetry", "\"none\""},
+      {"geometry.billet_radius", "10.0"},
+      {"geometry.bearing_length", "[1.0]"},
+      {"mesh.bearing_size", "0.0"},
+      {"mesh.cad_file", "\"\""},
       {"mesh.cell", "\"quadrilateral\""},
       {"mesh.element", "\"Q1\""},
       {"mesh.size", "0.5"},

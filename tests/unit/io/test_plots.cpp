@@ -12,6 +12,8 @@
 // header finds its siblings relative to itself.
 #include <cairo/cairo.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <unistd.h>
 
 #include <cstdint>
@@ -272,6 +274,16 @@ TEST(PlotTicks, NiceNumbersAndLabels) {
   EXPECT_EQ(plot::log_tick_label(0.01, true), "10⁻²");
   EXPECT_TRUE(plot::log_labels_as_powers(1e-5, 1.0));
   EXPECT_FALSE(plot::log_labels_as_powers(1e-3, 1e4));
+}
+
+TEST(PlotColours, AFieldConstantToRoundOffGetsOneBand) {
+  // A rigid translation's u_x: 1 and its neighbour double. Its span is below the values'
+  // resolution, where a step of a tenth of it would never advance past the first level.
+  const double one = 1.0, next = std::nextafter(1.0, 2.0);
+  const auto scale = plot::ColourScale::linear(one, next, 10, plot::Palette::Sequential);
+  EXPECT_LE(scale.n_bands(), 12u);
+  EXPECT_LE(scale.boundaries().front(), one);
+  EXPECT_GE(scale.boundaries().back(), next);
 }
 
 TEST(PlotColours, ScalesAndMaps) {

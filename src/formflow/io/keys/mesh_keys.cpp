@@ -19,6 +19,19 @@ KeySpec mesh_file_key() {
            "relative path is taken from the case file's directory");
 }
 
+KeySpec cad_file_key() {
+  KeySpec spec("mesh.cad_file", KeyType::Text, std::string());
+  spec.key.set = [](Case& case_, const KeyValue& value) {
+    case_.mesh.cad_file = std::get<std::string>(value);
+  };
+  spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh.cad_file; };
+  return spec.constraint("required when mesh.source = \"cad\"; only then")
+      .doc("the die channel's material region as a closed solid, STEP (.step, .stp) or BREP "
+           "(.brep), read by OpenCASCADE only; its boundary surfaces are mapped to parts by "
+           "tag in mesh.boundaries; a relative path is taken from the case file's directory "
+           "(docs/cad.md)");
+}
+
 KeySpec mesh_boundaries_key() {
   KeySpec spec("mesh.boundaries", KeyType::NameMap, NameMap{});
   for (int k = 0; k < mesh::n_boundary_labels; ++k)
@@ -27,11 +40,12 @@ KeySpec mesh_boundaries_key() {
     case_.mesh.boundaries = std::get<NameMap>(value);
   };
   spec.key.get = [](const Case& case_) -> KeyValue { return case_.mesh.boundaries; };
-  return spec.constraint("only with mesh.source = \"file\"")
+  return spec.constraint("only with mesh.source = \"file\" or \"cad\" (required there)")
       .doc("physical curve (3D: surface) name in mesh.file → boundary part, as a table "
            "`[mesh.boundaries]` "
            "with lines `ram = \"rear\"`; several names may share a part; every boundary "
-           "facet needs one; {} = the physical names are the part names");
+           "facet needs one; {} = the physical names are the part names; with mesh.cad_file "
+           "the keys are surface tags (`\"3\" = \"die\"`)");
 }
 
 } // namespace
@@ -83,13 +97,16 @@ std::vector<CaseKey> mesh_keys() {
           "mesh.source", "structured",
           {{"structured", mesh::MeshSource::Structured},
            {"gmsh", mesh::MeshSource::Gmsh},
-           {"file", mesh::MeshSource::File}},
+           {"file", mesh::MeshSource::File},
+           {"cad", mesh::MeshSource::Cad}},
           [](auto& c) -> auto& { return c.mesh.source; })
           .doc("structured: uniform square cells; gmsh: the same geometry meshed by Gmsh with "
                "recombined quadrilaterals of size mesh.size (in 3D: extruded into hexahedra); "
                "file: the mesh in mesh.file (quadrilaterals, or hexahedra in 3D); "
-               "geometry.section = \"profile\" is always built by Gmsh (unset: gmsh)"),
+               "geometry.section = \"profile\" is always built by Gmsh (unset: gmsh); cad: "
+               "the solid of mesh.cad_file meshed by Gmsh in tetrahedra (3D)"),
       mesh_file_key(),
+      cad_file_key(),
       mesh_boundaries_key(),
   };
 }

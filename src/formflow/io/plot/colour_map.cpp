@@ -71,8 +71,9 @@ ColourScale ColourScale::logarithmic(double lo, double hi) {
 ColourScale ColourScale::linear(double lo, double hi, int target_bands, Palette palette) {
   if (!(std::isfinite(lo) && std::isfinite(hi)))
     throw InternalError("plot: linear colour scale needs a finite range");
-  if (!(hi > lo)) {
-    // A constant field still gets one visible band around its value.
+  // A constant field (or one constant to round-off: a step below the values' resolution
+  // would never advance the loop below) still gets one visible band around its value.
+  if (!(hi - lo > 1e-9 * std::max(std::abs(lo), std::abs(hi)))) {
     const double half = std::max(std::abs(lo) * 0.05, 1e-12);
     lo -= half;
     hi += half;

@@ -84,8 +84,11 @@ void draw_exit_section(const Canvas& canvas, const PictureData& data) {
     return;
   }
   const double low = axial->minCoeff(), high = axial->maxCoeff();
-  // A uniform exit still gets a readable bar: one band around its speed.
-  const double spread = high > low ? 0.0 : std::max(1e-12, std::abs(high) * 1e-3);
+  // A uniform exit (a rigid translation: equal to round-off) still gets a readable bar,
+  // one band around its speed; bands narrower than a millionth of it would be round-off
+  // drawn in colour (and ColourScale's steps would fall below the numbers' resolution).
+  const double scale_of = std::max({std::abs(low), std::abs(high), 1e-300});
+  const double spread = high - low > 1e-6 * scale_of ? 0.0 : 1e-3 * scale_of;
   const ColourScale scale =
       ColourScale::linear(low - spread, high + spread, 10, Palette::Sequential);
   fill_field_bands(canvas, layout.axes, data.mesh, *axial, scale);
