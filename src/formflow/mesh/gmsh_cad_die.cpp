@@ -4,6 +4,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/mesh/gmsh_session.hpp"
+#include "formflow/mesh/gmsh_solid_groups.hpp"
 #include "formflow/mesh/gmsh_solid_mesh.hpp"
 
 #include <fmt/format.h>
@@ -57,14 +58,7 @@ Mesh<3> make_gmsh_cad_mesh(const std::string& path, CadFormat format,
                     map);
     }
     occ::synchronize();
-    std::vector<int> boundary;
-    gmsh::vectorpair surfaces;
-    gmsh::model::getEntities(surfaces, 2);
-    for (const auto& [dim, tag] : surfaces) {
-      std::vector<int> up, down;
-      gmsh::model::getAdjacencies(dim, tag, up, down);
-      if (up.size() == 1) boundary.push_back(tag);
-    }
+    const std::vector<int> boundary = boundary_surfaces();
     std::map<BoundaryLabel, std::vector<int>> parts;
     std::set<int> mapped;
     for (const PhysicalBoundary& entry : boundaries) {
@@ -93,14 +87,7 @@ Mesh<3> make_gmsh_cad_mesh(const std::string& path, CadFormat format,
                                       unmapped.size() > 1 ? "have" : "has"),
                           "map every boundary surface in [mesh.boundaries], e.g. \"" +
                               std::to_string(unmapped.front()) + "\" = \"die\"");
-    for (const auto& [label, tags] : parts)
-      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, tags),
-                                   std::string(label_name(label)));
-    gmsh::vectorpair volumes;
-    gmsh::model::getEntities(volumes, 3);
-    std::vector<int> volume_tags;
-    for (const auto& [dim, tag] : volumes) volume_tags.push_back(tag);
-    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, volume_tags), "domain");
+    add_solid_groups(parts);
     gmsh::option::setNumber("Mesh.MeshSizeMax", size);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::option::setNumber("Mesh.SecondOrderLinear", 1); // straight edges: no folded cell

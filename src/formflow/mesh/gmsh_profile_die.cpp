@@ -4,6 +4,7 @@
 
 #include "formflow/core/error.hpp"
 #include "formflow/mesh/gmsh_session.hpp"
+#include "formflow/mesh/gmsh_solid_groups.hpp"
 #include "formflow/mesh/gmsh_solid_mesh.hpp"
 
 #include <gmsh.h>
@@ -186,22 +187,9 @@ Mesh<3> make_gmsh_profile_die_mesh(const ChannelGeometry& geometry, const Profil
     // OpenCASCADE's bounding boxes are widened by its shape tolerance (1e-7).
     const Real tolerance = 1e-6 * std::max(1.0, extent);
     Parts parts;
-    gmsh::vectorpair surfaces;
-    gmsh::model::getEntities(surfaces, 2);
-    for (const auto& [dim, tag] : surfaces) {
-      std::vector<int> up, down;
-      gmsh::model::getAdjacencies(dim, tag, up, down);
-      if (up.size() != 1) continue; // between two volumes: inside
+    for (const int tag : boundary_surfaces())
       parts[profile_part(geometry, die, tag, tolerance)].push_back(tag);
-    }
-    for (const auto& [label, tags] : parts)
-      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, tags),
-                                   std::string(label_name(label)));
-    gmsh::vectorpair solids;
-    gmsh::model::getEntities(solids, 3);
-    std::vector<int> solid_tags;
-    for (const auto& [dim, tag] : solids) solid_tags.push_back(tag);
-    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, solid_tags), "domain");
+    add_solid_groups(parts);
     set_bearing_field(bearing_walls(parts, geometry.container_length, tolerance), size,
                       bearing_size);
     gmsh::option::setNumber("Mesh.SecondOrderLinear", 1); // straight edges: no folded cell

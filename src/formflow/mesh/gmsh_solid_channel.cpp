@@ -8,6 +8,7 @@
 #include "formflow/mesh/extruded_mesh.hpp"
 #include "formflow/mesh/gmsh_channel.hpp"
 #include "formflow/mesh/gmsh_session.hpp"
+#include "formflow/mesh/gmsh_solid_groups.hpp"
 #include "formflow/mesh/gmsh_solid_mesh.hpp"
 #include "formflow/mesh/tetrahedral_split.hpp"
 
@@ -128,14 +129,9 @@ BoundaryLabel rectangle_part(const ChannelGeometry& geometry, const SolidChannel
 /// Surfaces on the boundary (one adjacent volume) of the rectangle, by part.
 Parts classify_boundary(const ChannelGeometry& geometry, const SolidChannel& solid) {
   Parts parts;
-  gmsh::vectorpair surfaces;
-  gmsh::model::getEntities(surfaces, 2);
-  for (const auto& [dim, tag] : surfaces) {
-    std::vector<int> up, down;
-    gmsh::model::getAdjacencies(dim, tag, up, down);
-    if (up.size() != 1) continue; // between two volumes: inside
+  for (const int tag : boundary_surfaces()) {
     std::array<double, 6> box{};
-    gmsh::model::getBoundingBox(dim, tag, box[0], box[1], box[2], box[3], box[4], box[5]);
+    gmsh::model::getBoundingBox(2, tag, box[0], box[1], box[2], box[3], box[4], box[5]);
     parts[rectangle_part(geometry, solid, box)].push_back(tag);
   }
   return parts;
@@ -159,14 +155,7 @@ Mesh<3> make_gmsh_solid_channel_mesh(const ChannelGeometry& geometry, const Soli
       geo::synchronize();
       parts = classify_boundary(geometry, solid);
     }
-    for (const auto& [label, surfaces] : parts)
-      gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, surfaces),
-                                   std::string(label_name(label)));
-    gmsh::vectorpair volumes;
-    gmsh::model::getEntities(volumes, 3);
-    std::vector<int> volume_tags;
-    for (const auto& [dim, tag] : volumes) volume_tags.push_back(tag);
-    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, volume_tags), "domain");
+    add_solid_groups(parts);
     set_recombined_quadrilateral_options(size);
     gmsh::model::mesh::generate(3);
     if (order == 2) gmsh::model::mesh::setOrder(2);
