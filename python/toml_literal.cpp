@@ -2,6 +2,8 @@
 // Python values → TOML literals, and case dicts → the overrides the loader validates.
 #include "toml_literal.hpp"
 
+#include "formflow/core/error.hpp"
+
 #include <fmt/format.h>
 
 #include <iterator>
@@ -29,6 +31,11 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
+/// The deepest case value is a list of [x, y] points: two levels. Eight leave room and
+/// keep the recursion far from the stack's end (a 10⁵-deep or self-referencing list
+/// overflowed it: a segfault).
+constexpr int max_value_depth = 8;
+
 std::string key_name(const std::string& key, py::handle name) {
   if (!py::isinstance<py::str>(name))
     throw py::type_error(fmt::format("{}: a case table's keys are strings, got {}", key,
@@ -39,6 +46,17 @@ std::string key_name(const std::string& key, py::handle name) {
 } // namespace
 
 std::string toml_literal(const std::string& key, py::handle value) {
+  return toml_literal_at(key, value, 0);
+}
+
+std::string toml_literal_at(const std::string& key, py::handle value, int depth) {
+  if (depth > max_value_depth)
+    throw InputError("case", 0, key,
+                     fmt::format("the value nests lists or dicts more than {} deep (or contains "
+                                 "itself)",
+                                 max_value_depth),
+                     "a case value is a number, a string, a list of them or of [x, y] pairs, "
+                     "or a table of strings");
   // bool before int: Python's True is an int too.
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
   if (py::isinstance<py::str>(value)) return quoted(value.cast<std::string>());
@@ -53,7 +71,7 @@ std::string toml_literal(const std::string& key, py::handle value) {
     std::string out = "[";
     for (const py::handle entry : value) {
       if (out.size() > 1) out += ", ";
-      out += toml_literal(key, entry);
+      out += toml_literal_at(key, entry, depth + 1);
     }
     return out + "]";
   }
@@ -61,7 +79,7 @@ std::string toml_literal(const std::string& key, py::handle value) {
     std::string out = "{";
     for (const auto& [name, entry] : value.cast<py::dict>()) {
       if (out.size() > 1) out += ",";
-      out += " " + quoted(key_name(key, name)) + " = " + toml_literal(key, entry);
+      out += " " + quoted(key_name(key, name)) + " = " + toml_literal_at(key, entry, depth + 1);
     }
     return out + " }";
   }

@@ -18,6 +18,9 @@ namespace formflow::python {
 /// list/tuple → an array, dict → an inline table. Throws TypeError naming `key`
 /// for anything else (None, objects). Nothing is validated here: the loader does that.
 std::string toml_literal(const std::string& key, pybind11::handle value);
+/// The same at nesting `depth` (0 for the key's own value); deeper than a case value can
+/// be, or a value that contains itself, throws InputError naming `key`.
+std::string toml_literal_at(const std::string& key, pybind11::handle value, int depth);
 
 /// The entries of a case dict as --set overrides, in the dict's order: dotted
 /// keys ("friction.mu": 0.1) as they are; a nested table under a name without a

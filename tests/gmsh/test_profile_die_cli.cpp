@@ -69,6 +69,13 @@ TEST(ProfileDieCli, TheThinLegLagsAndALongerThickBearingEvensTheExit) {
     // Edges 0–2 bound the thin leg, 3–5 the thick one.
     if (thick == 1.0) EXPECT_LT(leg_speed(run.summary, 0, 2), leg_speed(run.summary, 3, 5));
     nonuniformity.push_back(run.summary.at("exit").at("nonuniformity").get<double>());
+    // The faceted billet wall takes nodal contact normals unless the case says otherwise.
+    EXPECT_EQ(run.summary.at("case").at("contact").at("normals"), "nodes");
+    // The ram's work is the power dissipated by the field the loop stopped at: apart by
+    // the residual's work, which the stop rule keeps below δ·p (δ = solver.tolerance).
+    const double p = run.summary.at("pressure").at("ram_reaction").get<double>();
+    const double delta = run.summary.at("case").at("solver").at("tolerance").get<double>();
+    EXPECT_NEAR(run.summary.at("pressure").at("total_power").get<double>(), p, delta * p);
     // The exit's mean speed carries the billet's flux through the section's area.
     const nlohmann::json& exit = run.summary.at("exit");
     EXPECT_NEAR(exit.at("velocity").at("mean").get<double>() * exit.at("area").get<double>(),

@@ -106,3 +106,23 @@ def test_a_nul_in_a_path_is_refused_by_key(tmp_path):
     with pytest.raises(formflow.InputError) as raised:
         formflow.Case.from_file(str(tmp_path / "case.toml") + "\0.txt")
     assert "NUL" in raised.value.message
+
+
+def test_a_value_nested_too_deep_or_containing_itself_is_refused():
+    deep = []
+    for _ in range(100000):  # once a segfault: the conversion recursed to the stack's end
+        deep = [deep]
+    looped = []
+    looped.append(looped)
+    table = {}
+    table["again"] = table
+    for value in (deep, looped, table):
+        with pytest.raises(formflow.InputError) as raised:
+            formflow.Case({"geometry.profile": value})
+        assert raised.value.key == "geometry.profile"
+        assert "deep" in str(raised.value)
+    # The deepest real value still passes: [x, y] points.
+    points = [[-1, -1], [1, -1], [1, 1], [-1, 1]]
+    case = formflow.Case({"geometry.dimension": 3, "geometry.section": "profile",
+                          "geometry.profile": points})
+    assert case.get("geometry.profile") == points
