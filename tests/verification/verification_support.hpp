@@ -5,6 +5,7 @@
 #include "formflow/app/study.hpp"
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
@@ -30,6 +31,17 @@ inline io::Case manufactured_case(fem::ElementKind element, Real size, mesh::Dis
   case_.solver.tolerance = 1e-8;
   case_.solver.max_iterations = 1000;
   return case_;
+}
+
+/// Every rung of a refinement ladder converged, and both error norms fall with each
+/// refinement (call through ASSERT_NO_FATAL_FAILURE: a rung that did not converge stops
+/// the test).
+inline void expect_converged_errors_fall(const post::StudyTable& table) {
+  ASSERT_TRUE(table.all_converged());
+  for (std::size_t k = 1; k < table.rungs.size(); ++k) {
+    EXPECT_LT(table.rungs[k].error->v_norm, table.rungs[k - 1].error->v_norm);
+    EXPECT_LT(table.rungs[k].error->l2, table.rungs[k - 1].error->l2);
+  }
 }
 
 /// manufactured_case on simplices (triangles, or tetrahedra with `dimension` 3): P2+ with the

@@ -4,6 +4,7 @@
 #include "formflow/core/error.hpp"
 #include "formflow/io/case_builder.hpp"
 #include "formflow/io/case_validation_3d.hpp"
+#include "formflow/io/case_validation_mesh_source.hpp"
 #include "formflow/io/case_validation_profile.hpp"
 #include "formflow/io/case_validation_simplex.hpp"
 #include "formflow/io/mesh_memory.hpp"
@@ -59,6 +60,7 @@ constexpr bool anderson_by_default_on_saddle_point_secant = true;
 /// paper Remark 5.1); an explicit complete rule with Q1 gets a warning.
 void CaseBuilder::resolve_dependent_defaults() {
   const auto is_set = [this](const std::string& name) { return origin(name).order > 0; };
+  resolve_cad_defaults(case_, is_set);
   resolve_profile_defaults(case_, is_set);
   if (!case_.profile_file.empty()) {
     const Origin where = origin("geometry.profile_file");
@@ -269,45 +271,10 @@ void CaseBuilder::check_solid() const {
     blame(refusal->keys, refusal->message, refusal->hint);
 }
 
-/// mesh.file is needed by, and only by, mesh.source = "file"; so is mesh.boundaries.
+/// What each mesh source needs and reads (io/case_validation_mesh_source.hpp).
 void CaseBuilder::check_mesh_source() const {
-  const bool from_file = case_.mesh.source == mesh::MeshSource::File;
-  const bool from_cad = case_.mesh.source == mesh::MeshSource::Cad;
-  if (from_file && case_.mesh.file.empty()) {
-    const Origin where = origin("mesh.source");
-    throw InputError(where.file, where.line, "mesh.source",
-                     "value \"file\" needs mesh.file, which is not set",
-                     "e.g. file = \"meshes/die.msh\" in [mesh]");
-  }
-  // (An empty mesh.boundaries is left for the reading, whose message lists the solid's
-  // boundary surfaces by tag and centre: how a user finds them.)
-  if (from_cad && case_.mesh.cad_file.empty()) {
-    const Origin where = origin("mesh.source");
-    throw InputError(where.file, where.line, "mesh.source",
-                     "value \"cad\" needs mesh.cad_file, which is not set",
-                     "e.g. cad_file = \"die.step\" in [mesh]");
-  }
-  if (from_cad && case_.mesh.dimension != 3)
-    blame({"mesh.source", "geometry.dimension"}, "a CAD solid is three-dimensional",
-          "set geometry.dimension = 3");
-  if (from_cad && case_.mesh.cell != mesh::CellKind::Tetrahedron)
-    blame({"mesh.cell", "mesh.source"},
-          "Gmsh meshes a CAD solid in tetrahedra (no hexahedral mesher serves any solid)",
-          "leave mesh.cell out (or set it to \"tetrahedron\")");
-  for (const std::string name : {"mesh.file", "mesh.boundaries", "mesh.cad_file"}) {
-    const bool set = name == "mesh.file"       ? !case_.mesh.file.empty()
-                     : name == "mesh.cad_file" ? !case_.mesh.cad_file.empty()
-                                               : !case_.mesh.boundaries.empty();
-    const bool read = name == "mesh.file"       ? from_file
-                      : name == "mesh.cad_file" ? from_cad
-                                                : from_file || from_cad;
-    if (read || !set) continue;
-    const Origin where = origin(name);
-    throw InputError(where.file, where.line, name,
-                     fmt::format("is set but mesh.source = {} does not read a file",
-                                 format_key_value(find_case_key("mesh.source")->get(case_))),
-                     "set mesh.source = \"file\" to use it");
-  }
+  if (const auto refusal = mesh_source_problem(case_))
+    blame(refusal->keys, refusal->message, refusal->hint);
 }
 
 /// A manufactured solution lives on the unit square; the smooth map must stay one-to-one.

@@ -30,26 +30,13 @@ constexpr std::size_t max_profile_file_points = 100000;
 
 } // namespace
 
-void resolve_cad_defaults(Case& case_, const std::function<bool(const std::string&)>& is_set);
-
 void resolve_profile_defaults(Case& case_, const std::function<bool(const std::string&)>& is_set) {
-  resolve_cad_defaults(case_, is_set);
   if (!is_profile(case_)) return;
   if (!is_set("mesh.source")) case_.mesh.source = mesh::MeshSource::Gmsh;
   if (!is_set("mesh.cell")) case_.mesh.cell = mesh::CellKind::Tetrahedron;
-  // The billet's wall is faceted (resolve_cad_defaults says why face normals pin it): the
-  // half T at h = 2, frictionless, reads 27.02 with face normals, 70 % of it the contact
+  // The billet's wall is faceted (io/case_validation_cad.cpp says why face normals pin it):
+  // the half T at h = 2, frictionless, reads 27.02 with face normals, 70 % of it the contact
   // penalty's power, and 8.023 with nodal ones, where that power is 2e-5 of the total.
-  if (!is_set("contact.normals")) case_.contact.normals = assembly::ContactNormals::Nodes;
-}
-
-void resolve_cad_defaults(Case& case_, const std::function<bool(const std::string&)>& is_set) {
-  if (case_.mesh.source != mesh::MeshSource::Cad || case_.mesh.dimension != 3) return;
-  if (!is_set("mesh.cell")) case_.mesh.cell = mesh::CellKind::Tetrahedron;
-  // A CAD die is curved and its tetrahedra's faces are flat: each face's own normal
-  // penalised at its Gauss points pins the nodes the facets share (on a cone, in every
-  // direction: the conical die's load at h = 0.5 is 134 with face normals, 3.35 with
-  // nodal ones); one mean normal per node lets the metal slide along the wall.
   if (!is_set("contact.normals")) case_.contact.normals = assembly::ContactNormals::Nodes;
 }
 

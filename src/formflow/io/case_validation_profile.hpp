@@ -8,8 +8,8 @@
 namespace formflow::io {
 
 /// A profile is built by Gmsh in tetrahedra: an unset mesh.source becomes "gmsh" and an
-/// unset mesh.cell "tetrahedron" (before resolve_cell_defaults picks the element); so
-/// does a CAD solid's (mesh.source = "cad") unset mesh.cell.
+/// unset mesh.cell "tetrahedron" (before resolve_cell_defaults picks the element), an
+/// unset contact.normals "nodes" (the billet's wall is faceted).
 void resolve_profile_defaults(Case& case_, const std::function<bool(const std::string&)>& is_set);
 
 /// Reads geometry.profile_file (set at `file`:`line`; a relative path from that file's

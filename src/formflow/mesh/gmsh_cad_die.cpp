@@ -11,6 +11,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -27,6 +28,11 @@ std::string surface_list(const std::vector<int>& surfaces) {
   for (std::size_t k = 0; k < surfaces.size() && k < 8; ++k) {
     double x = 0, y = 0, z = 0;
     occ::getCenterOfMass(2, surfaces[k], x, y, z);
+    // OpenCASCADE's centres carry round-off (7e-18 for 0): shown as 0 below 1e-12 of the
+    // largest coordinate, so that the list reads like the geometry.
+    const double scale = 1e-12 * std::max({std::abs(x), std::abs(y), std::abs(z), 1e-300});
+    for (double* coordinate : {&x, &y, &z})
+      if (std::abs(*coordinate) < scale) *coordinate = 0.0;
     text +=
         fmt::format("{}{} (centre {:.6g}, {:.6g}, {:.6g})", k ? ", " : "", surfaces[k], x, y, z);
   }

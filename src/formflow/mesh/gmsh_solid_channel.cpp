@@ -142,6 +142,7 @@ Parts classify_boundary(const ChannelGeometry& geometry, const SolidChannel& sol
 Mesh<3> make_gmsh_solid_channel_mesh(const ChannelGeometry& geometry, const SolidChannel& solid,
                                      Real size, int order, bool drawing, CellShape shape) {
   FF_ASSERT(gmsh_builds_solid_channel(solid, geometry.die), "validated: a section Gmsh builds");
+  FF_ASSERT(solid.section != ChannelSection::Profile, "a profile has its own builder");
   FF_ASSERT(order == 1 || order == 2, "order must be 1 or 2");
   GmshSession session;
   session.call([&] {
