@@ -280,7 +280,7 @@ json summary_document(const Case& case_, const post::Results& results) {
     out["exit"] = {
         {"velocity",
          {{"min", exit.velocity_min}, {"mean", exit.velocity_mean}, {"max", exit.velocity_max}}},
-        {"nonuniformity", exit.nonuniformity},
+        {"nonuniformity", exit.nonuniformity ? json(*exit.nonuniformity) : json(nullptr)},
         {"flux_balance", exit.flux_balance},
         {"exit_flux", exit.exit_flux},
         {"entry_flux", exit.entry_flux},

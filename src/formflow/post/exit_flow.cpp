@@ -64,7 +64,8 @@ ExitFlow exit_flow(const assembly::FormingProblem<dim>& problem, const VectorX& 
   flow.present = flow.area > 0 && entry_area > 0 && flow.entry_flux > 0;
   if (!flow.present) return ExitFlow{};
   flow.velocity_mean = axial_integral / flow.area;
-  flow.nonuniformity = (flow.velocity_max - flow.velocity_min) / flow.velocity_mean;
+  if (flow.velocity_mean > 0)
+    flow.nonuniformity = (flow.velocity_max - flow.velocity_min) / flow.velocity_mean;
   flow.flux_balance = flow.exit_flux / flow.entry_flux - 1.0;
   std::sort(exit_nodes.begin(), exit_nodes.end());
   exit_nodes.erase(std::unique(exit_nodes.begin(), exit_nodes.end()), exit_nodes.end());

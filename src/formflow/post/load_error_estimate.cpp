@@ -17,6 +17,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <span>
 
 namespace formflow::post {
 
@@ -85,7 +86,16 @@ weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const Ve
   VectorX force;
   fine.assemble_newton(fine_velocity, thresholds, assembly::NewtonDuals<dim>{}, force, &tangent,
                        &coupling);
-  if (coupling.has_friction && fine.multipliers())
+  // Whether any rank's cells hold a coupling (and friction in it): the branches below
+  // are taken alike on every rank. A rank whose own cells hold none (a rigid part) must
+  // still join the others' GMRES, whose every product is collective (the paper case at
+  // h = 0.5 on 5 ranks waited for ever with one rank in a direct solve).
+  std::array<Real, 2> anywhere = {coupling.empty() ? 0.0 : 1.0, coupling.has_friction ? 1.0 : 0.0};
+  if (const assembly::Distribution& distribution = fine.discretisation().distribution();
+      distribution.distributed())
+    distribution.sum_over_ranks(std::span<Real>(anywhere));
+  const bool uncoupled = anywhere[0] == 0;
+  if (anywhere[1] > 0 && fine.multipliers())
     return unavailable("a pressure-dependent friction threshold with constraint multipliers "
                        "(the mixed formulation) couples the tangent through a contact pressure "
                        "whose transpose is not implemented");
@@ -111,7 +121,7 @@ weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const Ve
   }
   // `exact`: the factor is of T(ũ) itself, not of a nearby tangent.
   const auto solve_adjoint = [&](solvers::LinearSolver& factorized, bool exact, VectorX& adjoint) {
-    if (coupling.empty() && exact)
+    if (uncoupled && exact)
       return factorized.solve_whole(gradient, adjoint) && factorized.finite(adjoint);
     const solvers::KrylovOutcome krylov = solvers::solve_coupled_tangent(
         tangent.matrix, transposed, factorized, gradient, adjoint, adjoint_tolerance,
@@ -142,8 +152,8 @@ weighted_residual_estimate(const assembly::FormingProblem<dim>& coarse, const Ve
     if (!solver->factorize(tangent.matrix))
       return unavailable("the tangent on the refined mesh is not positive definite");
     if (!solve_adjoint(*solver, true, adjoint))
-      return unavailable(coupling.empty() ? "the adjoint solve on the refined mesh failed"
-                                          : "GMRES on the transposed tangent did not converge");
+      return unavailable(uncoupled ? "the adjoint solve on the refined mesh failed"
+                                   : "GMRES on the transposed tangent did not converge");
   }
   owned.replicate(adjoint);
   if (!adjoint.allFinite()) return unavailable("the adjoint is not finite");

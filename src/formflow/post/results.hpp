@@ -63,11 +63,13 @@ struct ExitFlow {
   /// Axial velocity u_x over the exit: the smallest and largest at the exit's nodes, and
   /// the mean ∫ u_x dA / ∫ dA.
   Real velocity_min = 0.0, velocity_mean = 0.0, velocity_max = 0.0;
-  Real nonuniformity = 0.0; ///< (max − min) / mean
-  Real area = 0.0;          ///< ∫ dA of the exit section
-  Real exit_flux = 0.0;     ///< ∫ u·n dA over the exit (outflow > 0)
-  Real entry_flux = 0.0;    ///< −∫ u·n dA over the entry (inflow > 0)
-  Real flux_balance = 0.0;  ///< exit_flux / entry_flux − 1
+  /// (max − min) / mean; none where the mean speed is not positive (a field that moves no
+  /// metal out, e.g. the prescribed values alone after a failed first solve).
+  std::optional<Real> nonuniformity;
+  Real area = 0.0;         ///< ∫ dA of the exit section
+  Real exit_flux = 0.0;    ///< ∫ u·n dA over the exit (outflow > 0)
+  Real entry_flux = 0.0;   ///< −∫ u·n dA over the entry (inflow > 0)
+  Real flux_balance = 0.0; ///< exit_flux / entry_flux − 1
   /// ∫ u·n dA (outward) through the free surfaces and through the contact walls: with
   /// the exit and entry fluxes they add up to ∫ div u dV, which the penalty makes
   /// d ∫ σ_H dV (the material's compressibility), so flux_balance is that and the leaks.

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 namespace formflow::io::plot {
@@ -25,6 +26,11 @@ Axis velocity_axis(const post::ExitFlow& exit) {
               false,
               {},
               "axial velocity u_{x} [length/time]"};
+}
+
+/// The nonuniformity to 3 digits, or "undefined" where no metal leaves.
+std::string nonuniformity_text(const post::ExitFlow& exit) {
+  return exit.nonuniformity ? fmt::format("{:.3g}", *exit.nonuniformity) : "undefined";
 }
 
 } // namespace
@@ -62,17 +68,17 @@ void draw_exit_velocity(const Canvas& canvas, const PictureData& data) {
        {1.6, mean_colour, 1.0, 9.0}}};
   draw_legend(canvas, {area.right() - 10, area.y + 10}, legend);
   canvas.text({area.x + 8, area.bottom() - 8},
-              fmt::format("nonuniformity (max − min)/mean = {:.3g}    flux balance = {:+.3g}",
-                          exit.nonuniformity, exit.flux_balance),
+              fmt::format("nonuniformity (max − min)/mean = {}    flux balance = {:+.3g}",
+                          nonuniformity_text(exit), exit.flux_balance),
               Font{12.0, false, {0.15, 0.15, 0.15}}, HAlign::Left, VAlign::Bottom);
 }
 
 void draw_exit_section(const Canvas& canvas, const PictureData& data) {
   const post::ExitFlow& exit = data.results.exit;
   draw_title(canvas, "Axial velocity over the exit section",
-             exit.present ? fmt::format("{}; mean {:.5g}, nonuniformity {:.3g}",
+             exit.present ? fmt::format("{}; mean {:.5g}, nonuniformity {}",
                                         run_description(data.case_, data.results),
-                                        exit.velocity_mean, exit.nonuniformity)
+                                        exit.velocity_mean, nonuniformity_text(exit))
                           : run_description(data.case_, data.results));
   FieldLayout layout = field_layout(data);
   Axis horizontal = layout.axes.x_axis();

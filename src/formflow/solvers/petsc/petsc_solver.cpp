@@ -7,6 +7,7 @@
 #include "formflow/solvers/petsc/distributed_saddle_point.hpp"
 #include "formflow/solvers/petsc/distributed_system.hpp"
 #include "formflow/solvers/petsc/krylov_start.hpp"
+#include "formflow/solvers/petsc/mumps_workspace.hpp"
 #include "formflow/solvers/petsc/node_block_layout.hpp"
 #include "formflow/solvers/petsc/petsc_saddle_point.hpp"
 #include "formflow/solvers/petsc/petsc_session.hpp"
@@ -29,6 +30,8 @@ namespace formflow::solvers {
 namespace {
 
 constexpr const char* options_key = "solver.petsc_options";
+/// Four doublings take MUMPS' work space margin from 20 % to 320 %.
+constexpr int max_workspace_retries = 4;
 
 class PetscSolver final : public LinearSolver {
 public:
@@ -56,17 +59,30 @@ public:
     if (!agreed(matrix_ != nullptr)) return false;
     petsc::ErrorCapture capture;
     if (!ksp_ && !make_ksp(capture)) return false;
-    // The KSP sees new values on the same pattern: the factorisation (or the AMG
-    // hierarchy) is recomputed at KSPSetUp.
-    if (KSPSetOperators(ksp_, matrix_, matrix_) != 0) return false;
-    const PetscErrorCode setup = KSPSetUp(ksp_);
-    if (setup != 0) {
-      // A type that does not exist is the user's; anything else is numerical
-      // (a zero pivot, a failed factorisation): a stop reason, not an error.
-      if (setup == PETSC_ERR_ARG_UNKNOWN_TYPE || setup == PETSC_ERR_ARG_WRONG)
-        refuse(capture.message(), "give a type PETSc 3.18 has (see -help output of the "
-                                  "option's family) or leave the key unset for direct MUMPS");
-      return false;
+    // MUMPS short of work space (the paper case at h = 0.5 on 3 ranks) factorises again
+    // with more room, in a new factor (mumps_workspace.hpp), a few times.
+    std::optional<petsc::ScopedPetscOption> more_room;
+    for (int retry = 0;; ++retry) {
+      // The KSP sees new values on the same pattern: the factorisation (or the AMG
+      // hierarchy) is recomputed at KSPSetUp.
+      if (KSPSetOperators(ksp_, matrix_, matrix_) != 0) return false;
+      const PetscErrorCode setup = KSPSetUp(ksp_);
+      if (setup != 0) {
+        // A type that does not exist is the user's; anything else is numerical
+        // (a zero pivot, a failed factorisation): a stop reason, not an error.
+        if (setup == PETSC_ERR_ARG_UNKNOWN_TYPE || setup == PETSC_ERR_ARG_WRONG)
+          refuse(capture.message(), "give a type PETSc 3.18 has (see -help output of the "
+                                    "option's family) or leave the key unset for direct MUMPS");
+        return false;
+      }
+      const std::optional<PetscInt> relaxation =
+          retry < max_workspace_retries ? petsc::enlarged_mumps_relaxation(ksp_) : std::nullopt;
+      if (!relaxation) break;
+      // The factor takes MUMPS' controls from the options database at its analysis.
+      more_room.reset();
+      more_room.emplace("-" + options_prefix_ + "mat_mumps_icntl_14", std::to_string(*relaxation));
+      KSPDestroy(&ksp_);
+      if (!make_ksp(capture)) return false;
     }
     // The splits' own set-up (the velocity AMG hierarchy) here, not at the first
     // application inside the solve: on the saddle point's nest the outer set-up leaves
