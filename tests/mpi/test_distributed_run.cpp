@@ -373,6 +373,46 @@ TEST(DistributedRun, ABadValueIsOneMessageAndExitTwo) {
   expect_refused_once(run_mpi(bad, 2, scratch), "friction.mu", scratch);
 }
 
+/// `mpirun` of one rank with `first` and one with `second` (each: arguments after
+/// `formflow run -q -o DIR`), as two hosts that see different files would start them;
+/// its exit code and stderr, within a timeout so that a hang fails the test.
+MpiRun run_two_cases(const std::string& first, const std::string& second,
+                     const testing::ScratchDirectory& scratch) {
+  const std::string rank =
+      quoted(FORMFLOW_BINARY) + " run -q -o " + quoted((scratch / "results").string()) + " ";
+  const std::string command =
+      "OMPI_MCA_mpi_yield_when_idle=1 "
+      "OMPI_MCA_btl_vader_single_copy_mechanism=none timeout 120 " +
+      quoted(FORMFLOW_MPIEXEC) + " --oversubscribe --allow-run-as-root -n 1 " + rank + first +
+      " : -n 1 " + rank + second + " > " + quoted((scratch / "out.txt").string()) + " 2> " +
+      quoted((scratch / "err.txt").string());
+  const int status = std::system(command.c_str());
+  MpiRun run;
+  if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
+  run.out = testing::read_text(scratch / "out.txt");
+  run.err = testing::read_text(scratch / "err.txt");
+  return run;
+}
+
+TEST(DistributedRun, RanksThatReadDifferentCasesAreRefusedBeforeTheSolve) {
+  // Both cases are valid; the ranks would split different meshes and wait for each
+  // other in the first collective call. Refused at once (timeout: 124), nothing written.
+  testing::ScratchDirectory scratch("formflow-mpi");
+  const MpiRun run =
+      run_two_cases("--set mesh.size=2.5", "--set mesh.size=2.5 --set friction.mu=0.1", scratch);
+  expect_refused_once(run, "1 of the 2 MPI ranks read a case that differs from rank 0's", scratch);
+}
+
+TEST(DistributedRun, AnInputErrorOfAnotherRankIsItsMessageOnceAndExitTwo) {
+  // A case file missing on the second rank's host: rank 0 (which read its case) says
+  // the other rank's error, once, and every rank exits 2 at once.
+  testing::ScratchDirectory scratch("formflow-mpi");
+  const std::string missing = (scratch / "missing.toml").string();
+  const MpiRun run = run_two_cases("--set mesh.size=2.5", quoted(missing), scratch);
+  expect_refused_once(run, "case file: (MPI rank 1) no such file", scratch);
+  EXPECT_NE(run.err.find(missing), std::string::npos) << run.err;
+}
+
 TEST(DistributedRun, ASerialOnlySolverIsRefusedNamingTheKey) {
   testing::ScratchDirectory scratch("formflow-mpi");
   // The later --set wins: CHOLMOD has no distributed matrix.

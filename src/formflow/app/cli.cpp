@@ -2,6 +2,7 @@
 // Command-line parsing (CLI11) and the run/check subcommands.
 #include "formflow/app/cli.hpp"
 #include "formflow/app/distributed_run.hpp"
+#include "formflow/app/rank_agreement.hpp"
 
 #include "formflow/app/monitor.hpp"
 #include "formflow/app/simulation.hpp"
@@ -81,13 +82,21 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc, char**
 
 int run_case(const Options& options) {
   // On several MPI ranks solver.linear defaults to PETSc (app/distributed_run.hpp).
-  const io::Case case_ = load_run_case(options.case_path, parse_assignments(options.assignments));
+  // On several ranks they agree that each read the same case and none refused its input
+  // before anything collective (app/rank_agreement.hpp).
+  io::Case case_;
+  agree_on_case(
+      [&options] {
+        io::Case read = load_run_case(options.case_path, parse_assignments(options.assignments));
+        check_distributed(read); // several ranks: what they cannot serve yet, before output
+        // Before the solve: a -o that cannot take the results costs nothing (exit 2).
+        // A distributed run writes once, from rank 0 (the others' output is muted by main).
+        if (is_output_rank())
+          io::check_output_directory(options.output_directory, io::result_file_names());
+        return read;
+      },
+      case_);
   print_warnings(case_);
-  check_distributed(case_); // several MPI ranks: what they cannot serve yet, before any output
-  // Before the solve: a -o that cannot take the results costs nothing (exit 2).
-  // A distributed run writes once, from rank 0 (the other ranks' output is muted by main).
-  if (is_output_rank())
-    io::check_output_directory(options.output_directory, io::result_file_names());
   Monitor monitor(stdout, case_.solver.tolerance, case_.solver.max_iterations,
                   case_.solver.linear == solvers::LinearSolverKind::Petsc);
   const bool show = !options.quiet && !options.json;
