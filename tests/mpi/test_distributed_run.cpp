@@ -62,6 +62,19 @@ struct MpiRun {
   std::string out, err;
 };
 
+/// Runs a launcher's `command` with its output in the scratch directory: exit code,
+/// stdout and stderr (no summary).
+MpiRun run_launcher(const std::string& command, const testing::ScratchDirectory& scratch) {
+  const int status = std::system((command + " > " + quoted((scratch / "out.txt").string()) +
+                                  " 2> " + quoted((scratch / "err.txt").string()))
+                                     .c_str());
+  MpiRun run;
+  if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
+  run.out = testing::read_text(scratch / "out.txt");
+  run.err = testing::read_text(scratch / "err.txt");
+  return run;
+}
+
 MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirectory& scratch,
                const std::string& extra = {}, bool quiet = true) {
   // OpenMPI's ranks wait for each other by spinning unless told to yield: on a machine
@@ -80,13 +93,7 @@ MpiRun run_mpi(const DistributedCase& c, int ranks, const testing::ScratchDirect
   for (const auto& [key, value] : all_edits(c)) command += " --set " + quoted(key + "=" + value);
   if (!c.petsc_by_default) command += " --set solver.linear=petsc";
   if (!c.partitioner.empty()) command += " -mat_partitioning_type " + c.partitioner;
-  command += " " + extra + " > " + quoted((scratch / "out.txt").string()) + " 2> " +
-             quoted((scratch / "err.txt").string());
-  const int status = std::system(command.c_str());
-  MpiRun run;
-  if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
-  run.out = testing::read_text(scratch / "out.txt");
-  run.err = testing::read_text(scratch / "err.txt");
+  MpiRun run = run_launcher(command + " " + extra, scratch);
   const auto summary = scratch / "results" / "summary.json";
   if (std::filesystem::exists(summary))
     run.summary = nlohmann::json::parse(testing::read_text(summary));
@@ -380,18 +387,11 @@ MpiRun run_two_cases(const std::string& first, const std::string& second,
                      const testing::ScratchDirectory& scratch) {
   const std::string rank =
       quoted(FORMFLOW_BINARY) + " run -q -o " + quoted((scratch / "results").string()) + " ";
-  const std::string command =
-      "OMPI_MCA_mpi_yield_when_idle=1 "
-      "OMPI_MCA_btl_vader_single_copy_mechanism=none timeout 120 " +
-      quoted(FORMFLOW_MPIEXEC) + " --oversubscribe --allow-run-as-root -n 1 " + rank + first +
-      " : -n 1 " + rank + second + " > " + quoted((scratch / "out.txt").string()) + " 2> " +
-      quoted((scratch / "err.txt").string());
-  const int status = std::system(command.c_str());
-  MpiRun run;
-  if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
-  run.out = testing::read_text(scratch / "out.txt");
-  run.err = testing::read_text(scratch / "err.txt");
-  return run;
+  return run_launcher("OMPI_MCA_mpi_yield_when_idle=1 "
+                      "OMPI_MCA_btl_vader_single_copy_mechanism=none timeout 120 " +
+                          quoted(FORMFLOW_MPIEXEC) + " --oversubscribe --allow-run-as-root -n 1 " +
+                          rank + first + " : -n 1 " + rank + second,
+                      scratch);
 }
 
 TEST(DistributedRun, RanksThatReadDifferentCasesAreRefusedBeforeTheSolve) {

@@ -10,6 +10,7 @@
 #include "formflow/app/study.hpp"
 #include "formflow/core/error.hpp"
 #include "formflow/core/printable_text.hpp"
+#include "formflow/io/case_json.hpp"
 #include "formflow/io/case_keys.hpp"
 #include "formflow/io/mesh_input.hpp"
 #include "formflow/io/output_directory.hpp"
@@ -85,17 +86,16 @@ int run_case(const Options& options) {
   // On several ranks they agree that each read the same case and none refused its input
   // before anything collective (app/rank_agreement.hpp).
   io::Case case_;
-  agree_on_case(
-      [&options] {
-        io::Case read = load_run_case(options.case_path, parse_assignments(options.assignments));
-        check_distributed(read); // several ranks: what they cannot serve yet, before output
-        // Before the solve: a -o that cannot take the results costs nothing (exit 2).
-        // A distributed run writes once, from rank 0 (the others' output is muted by main).
-        if (is_output_rank())
-          io::check_output_directory(options.output_directory, io::result_file_names());
-        return read;
-      },
-      case_);
+  agree_on_input([&options, &case_] {
+    case_ = load_run_case(options.case_path, parse_assignments(options.assignments));
+    check_distributed(case_); // several ranks: what they cannot serve yet, before output
+    // Before the solve: a -o that cannot take the results costs nothing (exit 2).
+    // A distributed run writes once, from rank 0 (the others' output is muted by main).
+    if (is_output_rank())
+      io::check_output_directory(options.output_directory, io::result_file_names());
+    // The ranks compare the resolved keys (summary.json's "case").
+    return ReadInput{case_.source, io::case_to_json(case_).dump()};
+  });
   print_warnings(case_);
   Monitor monitor(stdout, case_.solver.tolerance, case_.solver.max_iterations,
                   case_.solver.linear == solvers::LinearSolverKind::Petsc);

@@ -3,7 +3,6 @@
 
 #include "formflow/app/distributed_run.hpp"
 #include "formflow/core/error.hpp"
-#include "formflow/io/case_json.hpp"
 
 #include <fmt/format.h>
 
@@ -64,15 +63,16 @@ int ranks_differing_from_rank_zero(std::uint64_t value) {
   return static_cast<int>(std::lround(differing));
 }
 
-void agree_on_case(const std::function<io::Case()>& read, io::Case& case_) {
+void agree_on_input(const std::function<ReadInput()>& read) {
   const assembly::Distribution& run = distribution();
   if (!run.distributed()) {
-    case_ = read();
+    read();
     return;
   }
   std::optional<InputError> refused;
+  ReadInput input;
   try {
-    case_ = read();
+    input = read();
   } catch (const InputError& error) {
     refused = error;
   }
@@ -102,10 +102,9 @@ void agree_on_case(const std::function<io::Case()>& read, io::Case& case_) {
     throw InputError(part[0], static_cast<int>(text[max_message_bytes]), part[1], where + part[2],
                      part[3]);
   }
-  const int differing =
-      ranks_differing_from_rank_zero(text_fingerprint(io::case_to_json(case_).dump()));
+  const int differing = ranks_differing_from_rank_zero(text_fingerprint(input.resolved));
   if (differing > 0)
-    throw InputError(case_.source.empty() ? "command line" : case_.source, 0, "mpirun",
+    throw InputError(input.source.empty() ? "command line" : input.source, 0, "mpirun",
                      fmt::format("{} of the {} MPI ranks read a case that differs from rank 0's "
                                  "(its resolved keys): they would take different branches and "
                                  "wait for each other",
